@@ -1,0 +1,133 @@
+#include "Radiosity/ProbeEvaluator.h"
+
+#include "Radiosity/FormFactor.h"
+#include "Radiosity/Visibility.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+namespace radiosity
+{
+namespace
+{
+Scene AsScene(const SolutionMesh& solution)
+{
+  Scene s;
+  s.Points = solution.Points;
+  s.Triangles = solution.Triangles;
+  s.Materials.resize(solution.Triangles.size());
+  s.ObjectIds.assign(solution.Triangles.size(), 0);
+  return s;
+}
+
+/// Barycentric coordinates of the projection of p on triangle abc.
+bool Barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double& u,
+  double& v, double& w)
+{
+  const Vec3 e0 = b - a, e1 = c - a, d = p - a;
+  const double d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
+  const double d20 = glm::dot(d, e0), d21 = glm::dot(d, e1);
+  const double den = d00 * d11 - d01 * d01;
+  if (!(den > 0))
+  {
+    return false;
+  }
+  v = (d11 * d20 - d01 * d21) / den;
+  w = (d00 * d21 - d01 * d20) / den;
+  u = 1.0 - v - w;
+  return true;
+}
+}
+
+ProbeEvaluator::ProbeEvaluator(const SolutionMesh& solution, const Scene& scene)
+  : Solution(solution)
+  , SourceScene(scene)
+{
+  const Scene geometry = AsScene(solution);
+  this->Rays = std::make_unique<Visibility>(geometry, Visibility::AllTriangles(geometry));
+  this->Tolerance = 1e-6 * std::max(geometry.Diagonal(), 1e-300);
+}
+
+ProbeEvaluator::~ProbeEvaluator() = default;
+
+std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes) const
+{
+  std::vector<RGB> values(probes.size(), RGB(0.0));
+  std::atomic<std::size_t> gathered{ 0 };
+  const double edgeTolerance = 1e-6;
+  tbb::parallel_for(std::size_t(0), probes.size(),
+    [&](std::size_t i)
+    {
+      const Probe& probe = probes[i];
+      const Vec3 n = glm::normalize(probe.Normal);
+      double best = std::numeric_limits<double>::infinity();
+      RGB value(0.0);
+      for (std::size_t t = 0; t < this->Solution.Triangles.size(); ++t)
+      {
+        const Vec3& nt = this->Solution.Normals[t];
+        if (glm::dot(nt, n) < 0.9)
+        {
+          continue;
+        }
+        const auto& tri = this->Solution.Triangles[t];
+        const Vec3& a = this->Solution.Points[tri.V[0]];
+        const double dist = std::fabs(glm::dot(probe.Position - a, nt));
+        if (dist > this->Tolerance || dist >= best)
+        {
+          continue;
+        }
+        double u, v, w;
+        if (!Barycentric(probe.Position, a, this->Solution.Points[tri.V[1]],
+              this->Solution.Points[tri.V[2]], u, v, w) ||
+          u < -edgeTolerance || v < -edgeTolerance || w < -edgeTolerance)
+        {
+          continue;
+        }
+        best = dist;
+        value = InterpolateSamples(this->Solution.Samples[t], u, v, w);
+      }
+      if (best == std::numeric_limits<double>::infinity())
+      {
+        value = this->Gather(Probe{ probe.Position, n });
+        ++gathered;
+      }
+      values[i] = value;
+    });
+  this->Gathered = gathered;
+  return values;
+}
+
+RGB ProbeEvaluator::Gather(const Probe& probe) const
+{
+  RGB h(0.0);
+  const Vec3 origin = probe.Position + this->Rays->Offset() * probe.Normal;
+  for (std::size_t t = 0; t < this->Solution.Triangles.size(); ++t)
+  {
+    const RGB& b = this->Solution.CellRadiosity[t];
+    if (MaxComponent(b) <= 0)
+    {
+      continue;
+    }
+    const auto& tri = this->Solution.Triangles[t];
+    const Vec3 poly[3] = { this->Solution.Points[tri.V[0]], this->Solution.Points[tri.V[1]],
+      this->Solution.Points[tri.V[2]] };
+    const double f = PointToPolygonFormFactor(probe.Position, probe.Normal, poly, 3);
+    if (f <= 0)
+    {
+      continue;
+    }
+    const Vec3 centre = (poly[0] + poly[1] + poly[2]) / 3.0;
+    unsigned char visible = 1;
+    this->Rays->TestSegments(&origin, &centre, 1, &visible);
+    if (visible)
+    {
+      h += f * b;
+    }
+  }
+  return h;
+}
+} // namespace radiosity

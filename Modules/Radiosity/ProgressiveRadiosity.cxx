@@ -1,0 +1,463 @@
+#include "Radiosity/ProgressiveRadiosity.h"
+
+#include "Radiosity/FormFactor.h"
+#include "Radiosity/ShooterSamples.h"
+#include "Radiosity/Visibility.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+namespace radiosity
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+double Mean(const RGB& c)
+{
+  return SumComponents(c) / 3.0;
+}
+
+struct Selection
+{
+  std::uint32_t Best = 0;
+  double BestPower = -1.0;
+  double AbsPower = 0.0;   ///< sum |unshot| * area, mean over RGB
+  RGB SignedPower{ 0.0 };  ///< sum unshot * area, per channel
+};
+}
+
+struct ProgressiveRadiosity::ShotResult
+{
+  ElementSamples Delta;
+  ElementSamples History; ///< for new children: everything received before this shot
+  double ShooterSideFormFactor = 0.0; ///< F from the shooter's centroid to this element
+  std::uint32_t Analytic = 0, Disc = 0;
+  bool FacingAway = false;
+  bool Split = false;
+};
+
+ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene, const ProgressiveOptions& options)
+  : SourceScene(scene)
+  , Settings(options)
+{
+  this->SceneInfo = AnalyzeScene(scene);
+  this->Rays = std::make_unique<Visibility>(scene, this->SceneInfo.CanOcclude);
+  const double diag = this->SceneInfo.Diagonal;
+  const double initialEdge = std::max(options.InitialElementSize, 1e-6) * diag;
+  const double shooterEdge = std::max(options.ShooterElementSize, options.InitialElementSize) * diag;
+  this->Elements = std::make_unique<ElementMesh>(scene, shooterEdge, initialEdge, 12);
+  this->MaxLevel.assign(scene.Triangles.size(), 0);
+  for (const Element& e : this->Elements->Elements())
+  {
+    this->MaxLevel[e.Source] = std::max<std::uint16_t>(this->MaxLevel[e.Source], e.Level);
+  }
+  for (auto& level : this->MaxLevel)
+  {
+    level = static_cast<std::uint16_t>(level + std::max(0, options.MaxSubdivisionLevels));
+  }
+  const auto& shooters = this->Elements->Shooters();
+  this->ShooterSlot.assign(this->Elements->Elements().size(), 0);
+  this->ShotTotal.assign(shooters.size(), RGB(0.0));
+  for (std::size_t i = 0; i < shooters.size(); ++i)
+  {
+    const std::uint32_t n = shooters[i];
+    this->ShooterSlot[n] = static_cast<std::uint32_t>(i);
+    const bool emitter = MaxComponent(this->Elements->MaterialOf(n).Emission) > 0;
+    this->Targets.push_back(ShooterSamplePoints(this->Elements->Corner(n, 0),
+      this->Elements->Corner(n, 1), this->Elements->Corner(n, 2),
+      emitter ? options.VisibilitySamples : options.IndirectVisibilitySamples));
+  }
+}
+
+ProgressiveRadiosity::~ProgressiveRadiosity() = default;
+
+struct ProgressiveRadiosity::TransferScratch
+{
+  std::vector<Vec3> From, To;
+  std::vector<unsigned char> Visible;
+};
+
+bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shooter,
+  TransferScratch& scratch, std::array<double, 4>& factors, ShotResult& counts) const
+{
+  const ElementMesh& mesh = *this->Elements;
+  const Element& r = mesh[receiver];
+  const Element& s = mesh[shooter];
+  const Vec3 corners[3] = { mesh.Corner(receiver, 0), mesh.Corner(receiver, 1),
+    mesh.Corner(receiver, 2) };
+  const Vec3 shooterPoly[3] = { mesh.Corner(shooter, 0), mesh.Corner(shooter, 1),
+    mesh.Corner(shooter, 2) };
+  // Leave out pairs with no transfer: receiver wholly behind the shooter's
+  // plane, or shooter wholly behind the receiver's.
+  bool anyFront = false, anyAbove = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    anyFront = anyFront || glm::dot(corners[k] - shooterPoly[0], s.Normal) > 0;
+    anyAbove = anyAbove || glm::dot(shooterPoly[k] - corners[0], r.Normal) > 0;
+  }
+  if (!anyFront || !anyAbove)
+  {
+    factors = { 0, 0, 0, 0 };
+    return false;
+  }
+  // Corner samples are the limits from inside the element: a corner on
+  // another surface's plane (a room's edge, a contact) would otherwise see
+  // that surface edge-on and miss its half of the hemisphere.
+  constexpr double inset = 1e-6;
+  const Vec3 samples[4] = { corners[0] + inset * (r.Centroid - corners[0]),
+    corners[1] + inset * (r.Centroid - corners[1]), corners[2] + inset * (r.Centroid - corners[2]),
+    r.Centroid };
+  double vis[4] = { 1, 1, 1, 1 };
+  if (!this->Rays->Empty())
+  {
+    const std::vector<Vec3>& targets = this->Targets[this->ShooterSlot[shooter]];
+    const std::size_t nv = targets.size();
+    const double eps = this->Rays->Offset();
+    scratch.From.clear();
+    scratch.To.clear();
+    for (const Vec3& p : samples)
+    {
+      // Start inside the element and off its plane.
+      const Vec3 origin = p + 1e-3 * (r.Centroid - p) + eps * r.Normal;
+      for (const Vec3& q : targets)
+      {
+        scratch.From.push_back(origin);
+        scratch.To.push_back(q);
+      }
+    }
+    scratch.Visible.resize(scratch.From.size());
+    this->Rays->TestSegments(
+      scratch.From.data(), scratch.To.data(), scratch.From.size(), scratch.Visible.data());
+    for (int k = 0; k < 4; ++k)
+    {
+      int count = 0;
+      for (std::size_t j = 0; j < nv; ++j)
+      {
+        count += scratch.Visible[k * nv + j];
+      }
+      vis[k] = static_cast<double>(count) / static_cast<double>(nv);
+    }
+  }
+  for (int k = 0; k < 4; ++k)
+  {
+    if (vis[k] <= 0.0)
+    {
+      factors[k] = 0.0;
+      continue;
+    }
+    if (ApparentSize(samples[k], s.Centroid, s.Area) < this->Settings.FormFactorTolerance)
+    {
+      factors[k] = DiscFormFactor(samples[k], r.Normal, s.Centroid, s.Normal, s.Area);
+      ++counts.Disc;
+    }
+    else
+    {
+      factors[k] = PointToPolygonFormFactor(samples[k], r.Normal, shooterPoly, 3);
+      ++counts.Analytic;
+    }
+    factors[k] *= vis[k];
+  }
+  // Shooter-side form factor for the energy balance: an independent
+  // discretisation of the same transfer, always exact (the balance of a
+  // closed room amplifies any form factor error by 1 / (1 - rho)).
+  // Integrated over the shooter with the same degree-2 rule as the receivers.
+  if (vis[3] > 0.0)
+  {
+    double f = 0.75 * PointToPolygonFormFactor(s.Centroid, s.Normal, corners, 3);
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3 q = shooterPoly[k] + inset * (s.Centroid - shooterPoly[k]);
+      f += PointToPolygonFormFactor(q, s.Normal, corners, 3) / 12.0;
+    }
+    counts.ShooterSideFormFactor = vis[3] * f;
+  }
+  return true;
+}
+
+void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverStatistics& stats)
+{
+  ElementMesh& mesh = *this->Elements;
+  const double shooterArea = mesh[shooter].Area;
+  const double threshold = this->Settings.SubdivisionThreshold;
+  const bool raysNeeded = !this->Rays->Empty();
+
+  std::vector<std::uint32_t> pending;
+  pending.reserve(mesh.NumberOfLeaves());
+  std::vector<std::uint32_t> own;
+  for (std::uint32_t e : mesh.Leaves())
+  {
+    (mesh[e].ShooterNode == shooter ? own : pending).push_back(e);
+  }
+  std::vector<unsigned char> fresh(pending.size(), 0); // children of this shot's splits
+
+  std::vector<ShotResult> results;
+  double shooterSide = 0.0; // children of split receivers join it in later passes
+  while (!pending.empty())
+  {
+    results.assign(pending.size(), ShotResult());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 16),
+      [&](const tbb::blocked_range<std::size_t>& range)
+      {
+        TransferScratch scratch;
+        std::array<double, 4> f;
+        for (std::size_t i = range.begin(); i != range.end(); ++i)
+        {
+          const std::uint32_t e = pending[i];
+          const Element& r = mesh[e];
+          ShotResult& out = results[i];
+          ElementSamples total = r.Irradiance;
+          if (fresh[i])
+          {
+            // A new child: its history is gathered exactly rather than
+            // interpolated from its parent. Every earlier shot of a node was a
+            // uniform radiosity over that node, so what the child received so
+            // far is sum_n (total shot by n) * F(sample -> n) * visibility.
+            ShotResult ignored;
+            out.History = ElementSamples();
+            for (std::uint32_t n : this->ActiveShooters)
+            {
+              if (mesh[e].ShooterNode == n || !this->Transfer(e, n, scratch, f, ignored))
+              {
+                continue;
+              }
+              const RGB& b = this->ShotTotal[this->ShooterSlot[n]];
+              for (int k = 0; k < 3; ++k)
+              {
+                out.History.Corner[k] += b * f[k];
+              }
+              out.History.Centre += b * f[3];
+            }
+            total = out.History;
+          }
+          if (!this->Transfer(e, shooter, scratch, f, out))
+          {
+            out.FacingAway = true;
+            continue;
+          }
+          for (int k = 0; k < 3; ++k)
+          {
+            out.Delta.Corner[k] = shot * f[k];
+          }
+          out.Delta.Centre = shot * f[3];
+
+          // Gradient criterion (Coombe 4.1 after Vedel & Puech 1992): a linear
+          // field's centre value is the mean of its corners, so the departure
+          // from that mean measures the change of gradient across the element.
+          // Judged on this shot's contribution against everything received so
+          // far, so that late, weak shots do not split.
+          if (r.Level < this->MaxLevel[r.Source])
+          {
+            total += out.Delta;
+            const double departure = std::fabs(Luminance(out.Delta.Centre) -
+              (Luminance(out.Delta.Corner[0]) + Luminance(out.Delta.Corner[1]) +
+                Luminance(out.Delta.Corner[2])) / 3.0);
+            if (departure > threshold * std::fabs(Luminance(total.Mean())))
+            {
+              out.Split = true;
+            }
+          }
+        }
+      });
+
+    std::vector<std::uint32_t> next;
+    for (std::size_t i = 0; i < pending.size(); ++i)
+    {
+      const ShotResult& res = results[i];
+      const std::uint32_t e = pending[i];
+      stats.AnalyticFormFactors += res.Analytic;
+      stats.DiscFormFactors += res.Disc;
+      const RGB rho = mesh.MaterialOf(e).Reflectance;
+      if (fresh[i])
+      {
+        // Replace the pushed history by the gathered one; the difference in
+        // received power joins the residual so that it is shot on.
+        Element& r = mesh[e];
+        const RGB correction = res.History.Mean() - r.Irradiance.Mean();
+        r.Irradiance = res.History;
+        r.Unshot += rho * correction;
+        this->Absorbed += Mean((RGB(1.0) - rho) * correction) * r.Area;
+      }
+      if (res.FacingAway)
+      {
+        ++stats.PairsFacingAway;
+        continue;
+      }
+      if (!raysNeeded)
+      {
+        ++stats.PairsUnoccludable;
+      }
+      if (res.Split)
+      {
+        const std::uint32_t first = mesh.Subdivide(e);
+        ++stats.Subdivisions;
+        for (std::uint32_t c = 0; c < 4; ++c)
+        {
+          next.push_back(first + c);
+        }
+        continue;
+      }
+      Element& r = mesh[e];
+      r.Irradiance += res.Delta;
+      const RGB meanDelta = res.Delta.Mean();
+      r.Unshot += rho * meanDelta;
+      this->Absorbed += Mean((RGB(1.0) - rho) * meanDelta) * r.Area;
+      shooterSide += res.ShooterSideFormFactor;
+    }
+    pending.swap(next);
+    fresh.assign(pending.size(), 1);
+  }
+  this->Escaped += Mean(shot) * shooterArea * (1.0 - shooterSide);
+  // The shooter's leaves keep what was shot in advance, as a negative residual.
+  const RGB left = mesh[shooter].Unshot;
+  for (std::uint32_t e : own)
+  {
+    mesh[e].Unshot = left;
+  }
+  RGB& total = this->ShotTotal[this->ShooterSlot[shooter]];
+  if (total == RGB(0.0))
+  {
+    this->ActiveShooters.push_back(shooter);
+  }
+  total += shot;
+}
+
+SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
+{
+  SolverStatistics stats;
+  const auto start = Clock::now();
+  std::unique_ptr<tbb::global_control> threads;
+  if (this->Settings.Threads > 0)
+  {
+    threads = std::make_unique<tbb::global_control>(
+      tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(this->Settings.Threads));
+  }
+  ElementMesh& mesh = *this->Elements;
+  stats.Occluders = this->SceneInfo.Occluders;
+  double emitted = 0.0;
+  double area = 0.0;
+  RGB rhoMean(0.0);
+  for (const Element& e : mesh.Elements())
+  {
+    if (e.IsLeaf())
+    {
+      const Material& m = this->SourceScene.Materials[e.Source];
+      emitted += Mean(m.Emission) * e.Area;
+      rhoMean += m.Reflectance * e.Area;
+      area += e.Area;
+    }
+  }
+  rhoMean /= std::max(area, 1e-300);
+  stats.EmittedPowerW = emitted;
+  stats.Elements = mesh.NumberOfLeaves();
+  if (!(emitted > 0.0))
+  {
+    stats.Stop = StopReason::NoEmitters;
+    stats.SolveSeconds = Seconds(start);
+    return stats;
+  }
+  // Cohen 1988's interreflection factor R = 1 / (1 - mean reflectance).
+  const RGB interreflection = RGB(1.0) / (RGB(1.0) - rhoMean);
+
+  std::vector<RGB> nodePower(mesh.Elements().size(), RGB(0.0));
+  stats.Stop = StopReason::IterationLimit;
+  for (long long iteration = 0;; ++iteration)
+  {
+    // Unshot power per shooter node (Coombe 3.1: the residual is mipmapped
+    // to the shooting level and the node of highest power shoots).
+    const std::vector<std::uint32_t> leaves = mesh.Leaves();
+    Selection sel;
+    for (std::uint32_t e : leaves)
+    {
+      const Element& el = mesh[e];
+      nodePower[el.ShooterNode] += el.Unshot * el.Area;
+      sel.AbsPower += Mean(glm::abs(el.Unshot)) * el.Area;
+      sel.SignedPower += el.Unshot * el.Area;
+    }
+    // Overshooting (Feda & Purgathofer 1992): each shooter also shoots, in
+    // advance, its share rho * ambient of what the unshot power will bring it
+    // (Cohen 1988's ambient term), and the shooters are ranked by that total:
+    // a shooter left with a negative residual has already shot its future.
+    const RGB ambient =
+      this->Settings.Overshooting ? interreflection * sel.SignedPower / area : RGB(0.0);
+    for (std::uint32_t n : mesh.Shooters())
+    {
+      const RGB total = nodePower[n] + mesh.MaterialOf(n).Reflectance * ambient * mesh[n].Area;
+      const double p = std::fabs(Mean(total));
+      if (p > sel.BestPower)
+      {
+        sel.BestPower = p;
+        sel.Best = n;
+      }
+    }
+    const RGB nodeUnshot = nodePower[sel.Best] / mesh[sel.Best].Area;
+    for (std::uint32_t n : mesh.Shooters())
+    {
+      nodePower[n] = RGB(0.0);
+    }
+
+    const double elapsed = Seconds(start);
+    ConvergenceRow row;
+    row.Iteration = iteration;
+    row.TimeSeconds = elapsed;
+    row.UnshotPowerW = sel.AbsPower;
+    const double signedUnshot = Mean(sel.SignedPower);
+    row.EnergyBalance = (emitted - this->Absorbed - this->Escaped - signedUnshot) / emitted;
+    const RGB overshoot = mesh.MaterialOf(sel.Best).Reflectance * ambient;
+    row.OvershootPowerW = Mean(glm::abs(overshoot)) * mesh[sel.Best].Area;
+    stats.History.Rows.push_back(row);
+    stats.Iterations = iteration;
+    stats.UnshotPowerW = sel.AbsPower;
+
+    const double relative = sel.AbsPower / emitted;
+    if (progress)
+    {
+      ProgressStatus status;
+      status.Phase = "shooting";
+      status.Iteration = iteration;
+      status.Residual = relative;
+      status.Fraction = std::clamp(
+        std::log(std::max(relative, 1e-300)) / std::log(this->Settings.Tolerance), 0.0, 1.0);
+      if (!progress(status))
+      {
+        stats.Stop = StopReason::Aborted;
+        break;
+      }
+    }
+    if (relative <= this->Settings.Tolerance)
+    {
+      stats.Stop = StopReason::Converged;
+      break;
+    }
+    if (iteration >= this->Settings.MaxIterations)
+    {
+      stats.Stop = StopReason::IterationLimit;
+      break;
+    }
+    if (this->Settings.MaxTimeSeconds > 0 && elapsed >= this->Settings.MaxTimeSeconds)
+    {
+      stats.Stop = StopReason::TimeLimit;
+      break;
+    }
+    mesh[sel.Best].Unshot = -overshoot; // handed to the shooter's leaves after the shot
+    this->Shoot(sel.Best, nodeUnshot + overshoot, stats);
+  }
+  stats.Elements = mesh.NumberOfLeaves();
+  stats.RaysCast = this->Rays->RaysCast();
+  stats.AbsorbedPowerW = this->Absorbed;
+  stats.EscapedPowerW = this->Escaped;
+  stats.SolveSeconds = Seconds(start);
+  return stats;
+}
+} // namespace radiosity

@@ -1,0 +1,81 @@
+// Progressive refinement radiosity with adaptive quadtree subdivision.
+//
+// Algorithm: Cohen, Chen, Wallace, Greenberg 1988 in the form of Coombe,
+// Harris, Lastra 2004, section 3 (shoot from the element of largest unshot
+// power; every receiver gathers the shot at its own samples, eq. 1) and
+// section 4 (texture quadtrees: a leaf is subdivided where the received
+// radiosity is not smooth, judged on its gradient as Vedel & Puech 1992
+// suggest, and the existing radiosity is pushed to the children).
+// Form factors: Coombe eq. 2 (disc approximation) where the shooter is small
+// seen from the receiver, the exact contour formula elsewhere (FormFactor.h).
+// Acceleration: overshooting with Cohen 1988's ambient estimate (Feda and
+// Purgathofer 1992), so that closed rooms with reflectance 0.999 converge.
+#ifndef Radiosity_ProgressiveRadiosity_h
+#define Radiosity_ProgressiveRadiosity_h
+
+#include "Radiosity/ElementMesh.h"
+#include "Radiosity/SceneAnalysis.h"
+#include "Radiosity/SolverTypes.h"
+
+#include <array>
+#include <memory>
+
+namespace radiosity
+{
+class Visibility;
+
+struct ProgressiveOptions
+{
+  double Tolerance = 1e-3;         ///< stop at this unshot power / emitted power
+  long long MaxIterations = 200000; ///< shots
+  double MaxTimeSeconds = 0.0;     ///< 0: no limit
+  int Threads = 0;                 ///< 0: all cores
+  bool Overshooting = true;
+  double ShooterElementSize = 0.25; ///< longest shooter edge / scene diagonal
+  double InitialElementSize = 1.0 / 16.0; ///< longest initial receiver edge / scene diagonal
+  int MaxSubdivisionLevels = 2;    ///< adaptive levels below the initial mesh
+  double SubdivisionThreshold = 0.1;  ///< allowed departure from linear, relative
+  double FormFactorTolerance = 2e-3;  ///< disc approximation when A/(pi r^2) is below
+  int VisibilitySamples = 16;      ///< rays per receiver sample from emitters: 1, 4 or 16
+  int IndirectVisibilitySamples = 1; ///< rays per receiver sample from reflectors
+};
+
+class ProgressiveRadiosity
+{
+public:
+  ProgressiveRadiosity(const Scene& scene, const ProgressiveOptions& options);
+  ~ProgressiveRadiosity();
+
+  /// Runs to a stop condition; can be called once.
+  SolverStatistics Solve(const ProgressCallback& progress = {});
+
+  const ElementMesh& Mesh() const { return *this->Elements; }
+  const SceneAnalysis& Analysis() const { return this->SceneInfo; }
+  const Visibility& GetVisibility() const { return *this->Rays; }
+  const ProgressiveOptions& Options() const { return this->Settings; }
+
+private:
+  struct ShotResult;
+  struct TransferScratch;
+  void Shoot(std::uint32_t shooter, const RGB& shot, SolverStatistics& stats);
+  /// Form factors times visibility from the receiver's four samples to the
+  /// shooter node; false when the pair faces away (no transfer).
+  bool Transfer(std::uint32_t receiver, std::uint32_t shooter, TransferScratch& scratch,
+    std::array<double, 4>& factors, ShotResult& counts) const;
+
+  const Scene& SourceScene;
+  ProgressiveOptions Settings;
+  SceneAnalysis SceneInfo;
+  std::unique_ptr<Visibility> Rays;
+  std::unique_ptr<ElementMesh> Elements;
+  std::vector<std::uint16_t> MaxLevel; ///< per input triangle
+  std::vector<std::uint32_t> ShooterSlot; ///< element -> index among the shooters
+  std::vector<std::vector<Vec3>> Targets; ///< visibility sample points per shooter
+  std::vector<RGB> ShotTotal;             ///< radiosity shot so far per shooter
+  std::vector<std::uint32_t> ActiveShooters; ///< shooters that have shot
+  double Absorbed = 0.0;
+  double Escaped = 0.0;
+};
+} // namespace radiosity
+
+#endif

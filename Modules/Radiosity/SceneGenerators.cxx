@@ -1,0 +1,141 @@
+#include "Radiosity/SceneGenerators.h"
+
+namespace radiosity
+{
+void AppendQuad(Scene& scene, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+  const Material& material, int n, const std::string& object)
+{
+  Scene quad;
+  quad.ObjectNames.push_back(object);
+  // Bilinear grid: exact for the planar parallelograms and quads used here.
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      const double s = static_cast<double>(i) / n, t = static_cast<double>(j) / n;
+      quad.Points.push_back((1 - s) * (1 - t) * a + s * (1 - t) * b + s * t * c + (1 - s) * t * d);
+    }
+  }
+  const auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      quad.Triangles.push_back({ { id(i, j), id(i + 1, j), id(i + 1, j + 1) } });
+      quad.Triangles.push_back({ { id(i, j), id(i + 1, j + 1), id(i, j + 1) } });
+    }
+  }
+  quad.Materials.assign(quad.Triangles.size(), material);
+  quad.ObjectIds.assign(quad.Triangles.size(), 0);
+  AppendScene(scene, quad);
+}
+
+namespace
+{
+Vec3 Mm(double x, double y, double z)
+{
+  return Vec3(x, y, z) * 1e-3;
+}
+
+/// Appends the quad so that its front faces `towards` (flips the order if needed).
+void AppendFacing(Scene& scene, Vec3 a, Vec3 b, Vec3 c, Vec3 d, const Vec3& towards,
+  const Material& m, const std::string& name, bool inward, int n = 1)
+{
+  const Vec3 normal = glm::cross(b - a, c - a);
+  const Vec3 centre = 0.25 * (a + b + c + d);
+  const double side = glm::dot(towards - centre, normal);
+  if ((inward && side < 0) || (!inward && side > 0))
+  {
+    std::swap(b, d);
+  }
+  AppendQuad(scene, a, b, c, d, m, n, name);
+}
+}
+
+Scene MakeCornellBox()
+{
+  Material white, red, green, light;
+  white.Reflectance = RGB(0.725, 0.71, 0.68);
+  red.Reflectance = RGB(0.63, 0.065, 0.05);
+  green.Reflectance = RGB(0.14, 0.45, 0.091);
+  light.Reflectance = RGB(0.78, 0.78, 0.78);
+  constexpr double Pi = 3.14159265358979323846;
+  light.Emission = Pi * RGB(17.0, 12.0, 4.0);
+
+  Scene s;
+  const Vec3 inside = Mm(278, 274, 280);
+  AppendFacing(s, Mm(552.8, 0, 0), Mm(0, 0, 0), Mm(0, 0, 559.2), Mm(549.6, 0, 559.2), inside,
+    white, "floor", true);
+  AppendFacing(s, Mm(556.0, 548.8, 0), Mm(556.0, 548.8, 559.2), Mm(0, 548.8, 559.2),
+    Mm(0, 548.8, 0), inside, white, "ceiling", true);
+  AppendFacing(s, Mm(549.6, 0, 559.2), Mm(0, 0, 559.2), Mm(0, 548.8, 559.2),
+    Mm(556.0, 548.8, 559.2), inside, white, "back wall", true);
+  AppendFacing(s, Mm(552.8, 0, 0), Mm(549.6, 0, 559.2), Mm(556.0, 548.8, 559.2),
+    Mm(556.0, 548.8, 0), inside, red, "red wall", true);
+  AppendFacing(s, Mm(0, 0, 559.2), Mm(0, 0, 0), Mm(0, 548.8, 0), Mm(0, 548.8, 559.2), inside,
+    green, "green wall", true);
+  AppendFacing(s, Mm(343.0, 548.7, 227.0), Mm(343.0, 548.7, 332.0), Mm(213.0, 548.7, 332.0),
+    Mm(213.0, 548.7, 227.0), Mm(278, 0, 280), light, "light", true);
+
+  const double shortBlock[5][4][3] = {
+    { { 130.0, 165.0, 65.0 }, { 82.0, 165.0, 225.0 }, { 240.0, 165.0, 272.0 }, { 290.0, 165.0, 114.0 } },
+    { { 290.0, 0.0, 114.0 }, { 290.0, 165.0, 114.0 }, { 240.0, 165.0, 272.0 }, { 240.0, 0.0, 272.0 } },
+    { { 130.0, 0.0, 65.0 }, { 130.0, 165.0, 65.0 }, { 290.0, 165.0, 114.0 }, { 290.0, 0.0, 114.0 } },
+    { { 82.0, 0.0, 225.0 }, { 82.0, 165.0, 225.0 }, { 130.0, 165.0, 65.0 }, { 130.0, 0.0, 65.0 } },
+    { { 240.0, 0.0, 272.0 }, { 240.0, 165.0, 272.0 }, { 82.0, 165.0, 225.0 }, { 82.0, 0.0, 225.0 } } };
+  const double tallBlock[5][4][3] = {
+    { { 423.0, 330.0, 247.0 }, { 265.0, 330.0, 296.0 }, { 314.0, 330.0, 456.0 }, { 472.0, 330.0, 406.0 } },
+    { { 423.0, 0.0, 247.0 }, { 423.0, 330.0, 247.0 }, { 472.0, 330.0, 406.0 }, { 472.0, 0.0, 406.0 } },
+    { { 472.0, 0.0, 406.0 }, { 472.0, 330.0, 406.0 }, { 314.0, 330.0, 456.0 }, { 314.0, 0.0, 456.0 } },
+    { { 314.0, 0.0, 456.0 }, { 314.0, 330.0, 456.0 }, { 265.0, 330.0, 296.0 }, { 265.0, 0.0, 296.0 } },
+    { { 265.0, 0.0, 296.0 }, { 265.0, 330.0, 296.0 }, { 423.0, 330.0, 247.0 }, { 423.0, 0.0, 247.0 } } };
+  const auto block = [&](const double (*q)[4][3], const Vec3& centre, const std::string& name)
+  {
+    Scene b;
+    for (int f = 0; f < 5; ++f)
+    {
+      AppendFacing(b, Mm(q[f][0][0], q[f][0][1], q[f][0][2]), Mm(q[f][1][0], q[f][1][1], q[f][1][2]),
+        Mm(q[f][2][0], q[f][2][1], q[f][2][2]), Mm(q[f][3][0], q[f][3][1], q[f][3][2]), centre,
+        white, name, false);
+    }
+    // One object per block, not per face.
+    b.ObjectIds.assign(b.Triangles.size(), 0);
+    b.ObjectNames = { name };
+    AppendScene(s, b);
+  };
+  block(shortBlock, Mm(186, 82.5, 168.5), "short block");
+  block(tallBlock, Mm(368.5, 165, 351.5), "tall block");
+  return s;
+}
+
+Scene MakeClosedCube(double size, int n, double reflectance, double emission)
+{
+  Material m;
+  m.Reflectance = RGB(reflectance);
+  m.Emission = RGB(emission);
+  Scene s;
+  const double h = size;
+  const Vec3 p[8] = { { 0, 0, 0 }, { h, 0, 0 }, { h, h, 0 }, { 0, h, 0 }, { 0, 0, h }, { h, 0, h },
+    { h, h, h }, { 0, h, h } };
+  const Vec3 centre(0.5 * h);
+  AppendFacing(s, p[0], p[3], p[2], p[1], centre, m, "z0", true, n);
+  AppendFacing(s, p[4], p[5], p[6], p[7], centre, m, "z1", true, n);
+  AppendFacing(s, p[0], p[1], p[5], p[4], centre, m, "y0", true, n);
+  AppendFacing(s, p[3], p[7], p[6], p[2], centre, m, "y1", true, n);
+  AppendFacing(s, p[0], p[4], p[7], p[3], centre, m, "x0", true, n);
+  AppendFacing(s, p[1], p[2], p[6], p[5], centre, m, "x1", true, n);
+  return s;
+}
+
+Scene MakeParallelSquares(double a, double c, int n, double reflectance, double emission)
+{
+  Material emitter, receiver;
+  emitter.Reflectance = RGB(0.0);
+  emitter.Emission = RGB(emission);
+  receiver.Reflectance = RGB(reflectance);
+  Scene s;
+  AppendQuad(s, Vec3(0, 0, 0), Vec3(a, 0, 0), Vec3(a, a, 0), Vec3(0, a, 0), emitter, n, "emitter");
+  AppendQuad(s, Vec3(0, 0, c), Vec3(0, a, c), Vec3(a, a, c), Vec3(a, 0, c), receiver, n, "receiver");
+  return s;
+}
+} // namespace radiosity

@@ -1,0 +1,73 @@
+// What every solver shares: progress reporting with abort, and the statistics
+// the report states.
+#ifndef Radiosity_SolverTypes_h
+#define Radiosity_SolverTypes_h
+
+#include "Radiosity/ConvergenceHistory.h"
+
+#include <functional>
+#include <string>
+
+namespace radiosity
+{
+struct ProgressStatus
+{
+  std::string Phase;
+  long long Iteration = 0;
+  double Residual = 0.0; ///< relative unshot power
+  double Fraction = 0.0; ///< 0..1, an estimate
+};
+
+/// Called from the solver's thread; return false to abort.
+using ProgressCallback = std::function<bool(const ProgressStatus&)>;
+
+enum class StopReason
+{
+  Converged,
+  IterationLimit,
+  TimeLimit,
+  Aborted,
+  NoEmitters
+};
+
+inline const char* ToString(StopReason r)
+{
+  switch (r)
+  {
+    case StopReason::Converged:
+      return "converged";
+    case StopReason::IterationLimit:
+      return "iteration limit";
+    case StopReason::TimeLimit:
+      return "time limit";
+    case StopReason::Aborted:
+      return "aborted";
+    case StopReason::NoEmitters:
+      return "no emitters";
+  }
+  return "unknown";
+}
+
+struct SolverStatistics
+{
+  StopReason Stop = StopReason::Converged;
+  long long Iterations = 0;
+  std::size_t Elements = 0;      ///< leaf elements at the end
+  std::size_t Subdivisions = 0;
+  std::size_t RaysCast = 0;
+  std::size_t AnalyticFormFactors = 0;
+  std::size_t DiscFormFactors = 0;
+  std::size_t PairsFacingAway = 0;   ///< element pairs skipped: no transfer possible
+  std::size_t PairsUnoccludable = 0; ///< visible pairs that needed no ray
+  std::size_t Occluders = 0;         ///< input triangles that can block a transfer
+  double EmittedPowerW = 0.0;
+  double UnshotPowerW = 0.0;
+  double AbsorbedPowerW = 0.0;
+  double EscapedPowerW = 0.0;
+  double PreprocessSeconds = 0.0;
+  double SolveSeconds = 0.0;
+  ConvergenceHistory History;
+};
+} // namespace radiosity
+
+#endif

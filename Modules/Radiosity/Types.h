@@ -1,0 +1,43 @@
+// Basic numeric types of the core. Double precision everywhere a value is
+// accumulated or compared with a reference (DESIGN.md, principles).
+#ifndef Radiosity_Types_h
+#define Radiosity_Types_h
+
+#include <glm/vec3.hpp>
+#include <glm/geometric.hpp>
+
+#include <array>
+#include <cstdint>
+
+namespace radiosity
+{
+using Vec3 = glm::dvec3;
+/// A colour triple, linear RGB. Same type as Vec3 so that glm's arithmetic applies.
+using RGB = glm::dvec3;
+
+inline double Luminance(const RGB& c)
+{
+  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
+inline double MaxComponent(const RGB& c)
+{
+  return c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b);
+}
+inline double SumComponents(const RGB& c)
+{
+  return c.r + c.g + c.b;
+}
+
+struct Triangle
+{
+  std::array<std::uint32_t, 3> V;
+};
+
+/// Area vector (normal times area) of a triangle.
+inline Vec3 AreaVector(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return 0.5 * glm::cross(b - a, c - a);
+}
+} // namespace radiosity
+
+#endif

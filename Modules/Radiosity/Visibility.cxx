@@ -1,0 +1,193 @@
+#include "Radiosity/Visibility.h"
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace radiosity
+{
+struct Visibility::Internals
+{
+  RTCDevice Device = nullptr;
+  RTCScene Scene = nullptr;
+  std::vector<unsigned> GeometryToTriangle; // Embree primitive id -> scene triangle
+  Vec3 Origin{ 0.0 }; // scene centre: float coordinates relative to it lose less
+  mutable std::atomic<std::size_t> Rays{ 0 };
+};
+
+Visibility::Visibility(const Scene& scene, const std::vector<unsigned char>& canOcclude)
+  : Impl(new Internals)
+{
+  Vec3 lo(0.0), hi(0.0);
+  if (!scene.Triangles.empty())
+  {
+    scene.BoundingBox(lo, hi);
+  }
+  const double diag = glm::length(hi - lo);
+  this->Impl->Origin = 0.5 * (lo + hi);
+  // Single precision BVH: 1e-5 of the extent is ~100 ulps of a float there.
+  this->Epsilon = 1e-5 * (diag > 0 ? diag : 1.0);
+
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    if (canOcclude[t])
+    {
+      this->Impl->GeometryToTriangle.push_back(static_cast<unsigned>(t));
+    }
+  }
+  this->NumberOfOccluders = this->Impl->GeometryToTriangle.size();
+
+  this->Impl->Device = rtcNewDevice("threads=0");
+  if (!this->Impl->Device)
+  {
+    throw std::runtime_error("Embree: cannot create a device");
+  }
+  this->Impl->Scene = rtcNewScene(this->Impl->Device);
+  rtcSetSceneFlags(this->Impl->Scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(this->Impl->Scene, RTC_BUILD_QUALITY_HIGH);
+  if (this->NumberOfOccluders > 0)
+  {
+    RTCGeometry geom = rtcNewGeometry(this->Impl->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    const std::size_t nt = this->NumberOfOccluders;
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * nt));
+    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), nt));
+    for (std::size_t i = 0; i < nt; ++i)
+    {
+      const unsigned t = this->Impl->GeometryToTriangle[i];
+      for (int k = 0; k < 3; ++k)
+      {
+        const Vec3 p = scene.Vertex(t, k) - this->Impl->Origin;
+        vb[9 * i + 3 * k + 0] = static_cast<float>(p.x);
+        vb[9 * i + 3 * k + 1] = static_cast<float>(p.y);
+        vb[9 * i + 3 * k + 2] = static_cast<float>(p.z);
+        ib[3 * i + k] = static_cast<unsigned>(3 * i + k);
+      }
+    }
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(this->Impl->Scene, geom);
+    rtcReleaseGeometry(geom);
+  }
+  rtcCommitScene(this->Impl->Scene);
+}
+
+Visibility::~Visibility()
+{
+  if (this->Impl->Scene)
+  {
+    rtcReleaseScene(this->Impl->Scene);
+  }
+  if (this->Impl->Device)
+  {
+    rtcReleaseDevice(this->Impl->Device);
+  }
+}
+
+std::size_t Visibility::RaysCast() const
+{
+  return this->Impl->Rays.load();
+}
+
+void Visibility::TestSegments(
+  const Vec3* from, const Vec3* to, std::size_t n, unsigned char* visible) const
+{
+  if (this->Empty())
+  {
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      visible[i] = 1;
+    }
+    return;
+  }
+  constexpr std::size_t Batch = 64;
+  RTCRay rays[Batch];
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  std::size_t cast = 0;
+  for (std::size_t start = 0; start < n; start += Batch)
+  {
+    const std::size_t count = std::min(Batch, n - start);
+    std::size_t k = 0;
+    unsigned char* out = visible + start;
+    std::size_t slot[Batch];
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const Vec3 o = from[start + i] - this->Impl->Origin;
+      const Vec3 d = to[start + i] - from[start + i];
+      const double len = glm::length(d);
+      if (len <= 2.0 * this->Epsilon)
+      {
+        out[i] = 1; // endpoints closer than the offset: nothing fits between
+        continue;
+      }
+      RTCRay& r = rays[k];
+      r.org_x = static_cast<float>(o.x);
+      r.org_y = static_cast<float>(o.y);
+      r.org_z = static_cast<float>(o.z);
+      r.dir_x = static_cast<float>(d.x / len);
+      r.dir_y = static_cast<float>(d.y / len);
+      r.dir_z = static_cast<float>(d.z / len);
+      r.tnear = static_cast<float>(this->Epsilon);
+      r.tfar = static_cast<float>(len - this->Epsilon);
+      r.time = 0.f;
+      r.mask = 0xFFFFFFFFu;
+      r.id = 0;
+      r.flags = 0;
+      slot[k++] = i;
+    }
+    if (k > 0)
+    {
+      rtcOccluded1M(this->Impl->Scene, &context, rays, static_cast<unsigned>(k), sizeof(RTCRay));
+      for (std::size_t j = 0; j < k; ++j)
+      {
+        // Embree marks an occluded ray by setting tfar to -inf.
+        out[slot[j]] = rays[j].tfar >= 0.f ? 1 : 0;
+      }
+      cast += k;
+    }
+  }
+  this->Impl->Rays += cast;
+}
+
+bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, double& t,
+  unsigned& triangle, double& u, double& v) const
+{
+  if (this->Empty())
+  {
+    return false;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  const Vec3 o = origin - this->Impl->Origin;
+  const Vec3 d = glm::normalize(direction);
+  rh.ray.org_x = static_cast<float>(o.x);
+  rh.ray.org_y = static_cast<float>(o.y);
+  rh.ray.org_z = static_cast<float>(o.z);
+  rh.ray.dir_x = static_cast<float>(d.x);
+  rh.ray.dir_y = static_cast<float>(d.y);
+  rh.ray.dir_z = static_cast<float>(d.z);
+  rh.ray.tnear = 0.f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.time = 0.f;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(this->Impl->Scene, &context, &rh);
+  ++this->Impl->Rays;
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  {
+    return false;
+  }
+  t = rh.ray.tfar;
+  triangle = this->Impl->GeometryToTriangle[rh.hit.primID];
+  u = rh.hit.u;
+  v = rh.hit.v;
+  return true;
+}
+} // namespace radiosity

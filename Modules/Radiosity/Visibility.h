@@ -1,0 +1,60 @@
+// Segment visibility on Embree 3: one BVH over the triangles that can occlude
+// (SceneAnalysis), occlusion rays in batches (rtcOccluded1M).
+#ifndef Radiosity_Visibility_h
+#define Radiosity_Visibility_h
+
+#include "Radiosity/Scene.h"
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace radiosity
+{
+class Visibility
+{
+public:
+  /// Builds the BVH over the triangles with `canOcclude[t]` set.
+  Visibility(const Scene& scene, const std::vector<unsigned char>& canOcclude);
+  ~Visibility();
+  Visibility(const Visibility&) = delete;
+  Visibility& operator=(const Visibility&) = delete;
+
+  /// True when nothing can occlude: every segment is visible, no rays needed.
+  bool Empty() const { return this->NumberOfOccluders == 0; }
+
+  /**
+   * The self-intersection offset: a distance that scales with the scene size
+   * (Embree works in single precision, so the offset is relative to the
+   * scene's extent, and the same test passes at 1e-4 m and at 1e4 m).
+   */
+  double Offset() const { return this->Epsilon; }
+
+  /**
+   * For each i < n: visible[i] = 1 when the open segment from[i] -> to[i],
+   * shortened by the offset at both ends, hits no occluder, else 0.
+   * Thread-safe; call it from parallel loops with batches of segments.
+   */
+  void TestSegments(const Vec3* from, const Vec3* to, std::size_t n, unsigned char* visible) const;
+
+  /// Nearest hit of a ray, for primary rays of images; returns false on a miss.
+  /// Only meaningful when built over every triangle (see `AllTriangles`).
+  bool Intersect(const Vec3& origin, const Vec3& direction, double& t, unsigned& triangle,
+    double& u, double& v) const;
+
+  static std::vector<unsigned char> AllTriangles(const Scene& scene)
+  {
+    return std::vector<unsigned char>(scene.Triangles.size(), 1);
+  }
+
+  std::size_t RaysCast() const;
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+  std::size_t NumberOfOccluders = 0;
+  double Epsilon = 0.0;
+};
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,320 @@
+#include "vtkRadiosityView.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkErrorCode.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkShaderProperty.h"
+#include "vtkToneMappingPass.h"
+#include "vtkUniforms.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkRadiosityView);
+
+namespace
+{
+// Names used in the shader replacements below.
+const char* const RadiosityAttribute = "radiosityMC";
+const char* const RadianceScaleUniform = "radianceScale";
+}
+
+//------------------------------------------------------------------------------
+vtkRadiosityView::vtkRadiosityView()
+{
+  this->SetArrayName("Radiosity");
+
+  // The plain OpenGL mapper: the radiosity values reach it as a generic vertex
+  // attribute, not as scalars, so that nothing maps them through a lookup
+  // table or clamps them to [0, 1].
+  this->Mapper = vtkSmartPointer<vtkOpenGLPolyDataMapper>::New();
+  this->Mapper->ScalarVisibilityOff();
+
+  this->Actor = vtkSmartPointer<vtkActor>::New();
+  this->Actor->SetMapper(this->Mapper);
+  // Radiosity already is the light leaving the surface: no shading on top.
+  this->Actor->GetProperty()->LightingOff();
+  this->Actor->GetProperty()->SetInterpolationToGouraud();
+
+  vtkShaderProperty* sp = this->Actor->GetShaderProperty();
+  // Vertex stage: L = B / pi * Exposure per vertex; the rasterizer then
+  // interpolates it linearly across each triangle (Gouraud on radiance).
+  sp->AddVertexShaderReplacement("//VTK::Normal::Dec", true,
+    "//VTK::Normal::Dec\n"
+    "in vec3 radiosityMC;\n"
+    "out vec3 radianceVSOutput;\n",
+    false);
+  sp->AddVertexShaderReplacement("//VTK::Normal::Impl", true,
+    "//VTK::Normal::Impl\n"
+    "  radianceVSOutput = radiosityMC * radianceScale;\n",
+    false);
+  // Fragment stage: overwrite whatever the lighting code wrote. The tone
+  // mapping pass treats its input as gamma-encoded (it applies pow(c, 2.2)
+  // before the operator and pow(c, 1/2.2) after), so the linear radiance is
+  // encoded with the inverse gamma here to reach the operator unchanged.
+  // Negative values (none in a valid solution) would give NaN in pow.
+  sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true,
+    "//VTK::Normal::Dec\n"
+    "in vec3 radianceVSOutput;\n",
+    false);
+  sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
+    "//VTK::Light::Impl\n"
+    "  gl_FragData[0] = vec4(pow(max(radianceVSOutput, vec3(0.0)), vec3(1.0 / 2.2)), 1.0);\n",
+    false);
+
+  this->Renderer = vtkSmartPointer<vtkOpenGLRenderer>::New();
+  this->Renderer->SetBackground(0.0, 0.0, 0.0);
+  this->Renderer->AddActor(this->Actor);
+
+  // The standard render steps (camera, lights, opaque, translucent, overlay)
+  // draw into the tone mapping pass's float framebuffer, which keeps HDR.
+  vtkNew<vtkRenderStepsPass> steps;
+  this->ToneMappingPass = vtkSmartPointer<vtkToneMappingPass>::New();
+  this->ToneMappingPass->SetDelegatePass(steps);
+  // Exposure is applied in the vertex shader, so that it means the same for
+  // every operator (vtkToneMappingPass uses its own only for some of them).
+  this->ToneMappingPass->SetExposure(1.0f);
+  vtkOpenGLRenderer::SafeDownCast(this->Renderer)->SetPass(this->ToneMappingPass);
+}
+
+//------------------------------------------------------------------------------
+vtkRadiosityView::~vtkRadiosityView()
+{
+  this->SetArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityView::SetInputData(vtkPolyData* input)
+{
+  if (this->Input != input)
+  {
+    this->Input = input;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkRadiosityView::GetInputData()
+{
+  return this->Input;
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityView::SetSize(int width, int height)
+{
+  width = std::min(std::max(width, 1), 16384);
+  height = std::min(std::max(height, 1), 16384);
+  if (this->Size[0] != width || this->Size[1] != height)
+  {
+    this->Size[0] = width;
+    this->Size[1] = height;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityView::SetCamera(
+  const double position[3], const double focalPoint[3], const double viewUp[3], double viewAngle)
+{
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  camera->SetPosition(position);
+  camera->SetFocalPoint(focalPoint);
+  camera->SetViewUp(viewUp);
+  camera->SetViewAngle(std::min(std::max(viewAngle, 0.01), 179.0));
+  camera->OrthogonalizeViewUp();
+  this->CameraSet = true;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityView::ResetCamera()
+{
+  this->CameraSet = false;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkRenderer* vtkRadiosityView::GetRenderer()
+{
+  return this->Renderer;
+}
+
+//------------------------------------------------------------------------------
+vtkRenderWindow* vtkRadiosityView::GetRenderWindow()
+{
+  if (!this->RenderWindow)
+  {
+    vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetOffScreenRendering(this->OffScreen ? 1 : 0);
+    // Multisampling would blend HDR samples before tone mapping and makes
+    // images depend on the driver: keep one sample per pixel.
+    window->SetMultiSamples(0);
+    window->SetSize(this->Size);
+    this->SetRenderWindow(window);
+  }
+  return this->RenderWindow;
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityView::SetRenderWindow(vtkRenderWindow* window)
+{
+  if (this->RenderWindow == window)
+  {
+    return;
+  }
+  if (this->RenderWindow)
+  {
+    this->RenderWindow->RemoveRenderer(this->Renderer);
+  }
+  this->RenderWindow = window;
+  if (window)
+  {
+    window->AddRenderer(this->Renderer);
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkRadiosityView::CheckInput()
+{
+  const char* name = this->ArrayName ? this->ArrayName : "";
+  if (!this->Input)
+  {
+    vtkErrorMacro("No input polydata: call SetInputData first.");
+    return false;
+  }
+  if (!*name)
+  {
+    vtkErrorMacro("No array name set: call SetArrayName (default \"Radiosity\").");
+    return false;
+  }
+  if (this->Input->GetNumberOfPoints() == 0 || this->Input->GetNumberOfPolys() == 0)
+  {
+    vtkErrorMacro("Input has no polygons to draw (" << this->Input->GetNumberOfPoints()
+                                                    << " points, "
+                                                    << this->Input->GetNumberOfPolys()
+                                                    << " polygons).");
+    return false;
+  }
+  vtkPointData* pd = this->Input->GetPointData();
+  vtkDataArray* array = pd->GetArray(name);
+  if (!array)
+  {
+    if (pd->GetAbstractArray(name))
+    {
+      vtkErrorMacro("Point array '" << name << "' is not numeric.");
+    }
+    else if (this->Input->GetCellData()->GetArray(name))
+    {
+      vtkErrorMacro("No point array '" << name
+                                       << "' (there is a cell array of that name: "
+                                          "interpolate it to the points first).");
+    }
+    else
+    {
+      vtkErrorMacro("No point array '" << name << "' on the input.");
+    }
+    return false;
+  }
+  if (array->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("Point array '" << name << "' has " << array->GetNumberOfComponents()
+                                  << " components, 3 (RGB, W/m^2) expected.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityView::UpdatePipeline()
+{
+  this->Mapper->SetInputData(this->Input);
+  // Remapped at every render: the array name may have changed, and the
+  // mapping is cheap; the mapper rebuilds its buffers only when needed.
+  this->Mapper->RemoveAllVertexAttributeMappings();
+  this->Mapper->MapDataArrayToVertexAttribute(
+    RadiosityAttribute, this->ArrayName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  // Lambertian surfaces: radiance L = B / pi.
+  this->Actor->GetShaderProperty()->GetVertexCustomUniforms()->SetUniformf(
+    RadianceScaleUniform, static_cast<float>(this->Exposure / vtkMath::Pi()));
+  this->ToneMappingPass->SetToneMappingType(this->ToneMappingType);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRadiosityView::Render()
+{
+  if (!this->CheckInput())
+  {
+    return false;
+  }
+  this->UpdatePipeline();
+  vtkRenderWindow* window = this->GetRenderWindow();
+  window->SetSize(this->Size);
+  if (!this->CameraSet)
+  {
+    // Frame the input once; later changes to the camera are the caller's.
+    this->Renderer->ResetCamera(this->Input->GetBounds());
+    this->CameraSet = true;
+  }
+  window->Render();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRadiosityView::WritePNG(const char* fileName)
+{
+  if (!fileName || !*fileName)
+  {
+    vtkErrorMacro("No file name given for the PNG image.");
+    return false;
+  }
+  if (!this->Render())
+  {
+    return false;
+  }
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(this->GetRenderWindow());
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(fileName);
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  if (writer->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    vtkErrorMacro("Could not write PNG image '"
+      << fileName << "': " << vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()));
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Input: " << this->Input.GetPointer() << "\n";
+  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "ToneMappingType: " << this->ToneMappingType << "\n";
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "OffScreen: " << (this->OffScreen ? "On" : "Off") << "\n";
+  os << indent << "CameraSet: " << (this->CameraSet ? "true" : "false") << "\n";
+  os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
+  os << indent << "RenderWindow: " << this->RenderWindow.GetPointer() << "\n";
+  os << indent << "ToneMappingPass: " << this->ToneMappingPass.GetPointer() << "\n";
+}

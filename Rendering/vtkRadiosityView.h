@@ -1,0 +1,180 @@
+/**
+ * @class   vtkRadiosityView
+ * @brief   Draws a radiosity solution as tone-mapped HDR radiance.
+ *
+ * The display "for now": VTK's own polydata mapper draws the point array
+ * `Radiosity` (3 components, radiant exitance B in W/m^2, see SPEC.md) as the
+ * per-vertex radiance L = B / pi times Exposure, linearly interpolated across
+ * each triangle. The array reaches the shaders as a float vertex attribute
+ * (MapDataArrayToVertexAttribute) and a shader replacement writes it to the
+ * fragment colour with no lighting and no clamping. The renderer draws into the
+ * float framebuffer of a vtkToneMappingPass, which maps the HDR values to the
+ * displayable range (Reinhard by default). The background is black.
+ *
+ * Typical use:
+ * @code
+ * vtkNew<vtkRadiosityView> view;
+ * view->SetInputData(solvedPolyData);
+ * view->SetSize(800, 600);
+ * view->SetExposure(2.0);
+ * view->WritePNG("image.png");
+ * @endcode
+ *
+ * Without SetCamera the camera is reset to frame the input at the first render.
+ * Invalid input (no point array of that name, wrong component count) is
+ * refused with an error naming the array: Render() and WritePNG() return false.
+ */
+
+#ifndef vtkRadiosityView_h
+#define vtkRadiosityView_h
+
+#include "RadiosityRenderingModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For members
+
+class vtkActor;
+class vtkPolyData;
+class vtkPolyDataMapper;
+class vtkRenderWindow;
+class vtkRenderer;
+class vtkToneMappingPass;
+
+class RADIOSITYRENDERING_EXPORT vtkRadiosityView : public vtkObject
+{
+public:
+  static vtkRadiosityView* New();
+  vtkTypeMacro(vtkRadiosityView, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Tone mapping operators, the values of vtkToneMappingPass.
+  enum ToneMappingTypes
+  {
+    Clamp = 0,
+    Reinhard = 1,
+    Exponential = 2,
+    GenericFilmic = 3
+  };
+
+  ///@{
+  /**
+   * The polydata to draw. It must carry the point array ArrayName with 3
+   * components (RGB radiant exitance, W/m^2).
+   */
+  void SetInputData(vtkPolyData* input);
+  vtkPolyData* GetInputData();
+  ///@}
+
+  ///@{
+  /**
+   * Name of the point array drawn (default "Radiosity").
+   */
+  vtkSetStringMacro(ArrayName);
+  vtkGetStringMacro(ArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Scale applied to the radiance B/pi before tone mapping (default 1).
+   * Clamped to [0, 1e12].
+   */
+  vtkSetClampMacro(Exposure, double, 0.0, 1e12);
+  vtkGetMacro(Exposure, double);
+  ///@}
+
+  ///@{
+  /**
+   * Tone mapping operator, one of ToneMappingTypes (default Reinhard).
+   */
+  vtkSetClampMacro(ToneMappingType, int, Clamp, GenericFilmic);
+  vtkGetMacro(ToneMappingType, int);
+  void SetToneMappingTypeToClamp() { this->SetToneMappingType(Clamp); }
+  void SetToneMappingTypeToReinhard() { this->SetToneMappingType(Reinhard); }
+  void SetToneMappingTypeToExponential() { this->SetToneMappingType(Exponential); }
+  void SetToneMappingTypeToGenericFilmic() { this->SetToneMappingType(GenericFilmic); }
+  ///@}
+
+  ///@{
+  /**
+   * Image size in pixels (default 640 x 480), each clamped to [1, 16384].
+   */
+  void SetSize(int width, int height);
+  void SetSize(const int size[2]) { this->SetSize(size[0], size[1]); }
+  vtkGetVector2Macro(Size, int);
+  ///@}
+
+  ///@{
+  /**
+   * Whether a window created by this view renders offscreen (default on).
+   * Has no effect on a window given with SetRenderWindow.
+   */
+  vtkSetMacro(OffScreen, bool);
+  vtkGetMacro(OffScreen, bool);
+  vtkBooleanMacro(OffScreen, bool);
+  ///@}
+
+  /**
+   * Places the camera; without a call the camera frames the input at the
+   * first render. viewAngle is the vertical view angle in degrees.
+   */
+  void SetCamera(const double position[3], const double focalPoint[3], const double viewUp[3],
+    double viewAngle);
+
+  /**
+   * Frames the input again at the next render (undoes SetCamera).
+   */
+  void ResetCamera();
+
+  /**
+   * The renderer, whose active camera may be set directly.
+   */
+  vtkRenderer* GetRenderer();
+
+  ///@{
+  /**
+   * The render window. Unless one is set, GetRenderWindow creates one
+   * (offscreen when OffScreen is on). Setting a window adds the renderer to it.
+   */
+  vtkRenderWindow* GetRenderWindow();
+  void SetRenderWindow(vtkRenderWindow* window);
+  ///@}
+
+  /**
+   * Renders the input. Returns false (with an error) on invalid input.
+   */
+  bool Render();
+
+  /**
+   * Renders and writes the image as PNG. Returns false (with an error) on
+   * invalid input or when the file cannot be written.
+   */
+  bool WritePNG(const char* fileName);
+
+protected:
+  vtkRadiosityView();
+  ~vtkRadiosityView() override;
+
+  /// Checks the input and its array; reports an error naming the array.
+  bool CheckInput();
+  /// (Re)configures mapper, shaders and passes from the current properties.
+  void UpdatePipeline();
+
+  char* ArrayName = nullptr;
+  double Exposure = 1.0;
+  int ToneMappingType = Reinhard;
+  int Size[2] = { 640, 480 };
+  bool OffScreen = true;
+  bool CameraSet = false;
+
+  vtkSmartPointer<vtkPolyData> Input;
+  vtkSmartPointer<vtkPolyDataMapper> Mapper;
+  vtkSmartPointer<vtkActor> Actor;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkRenderWindow> RenderWindow;
+  vtkSmartPointer<vtkToneMappingPass> ToneMappingPass;
+
+private:
+  vtkRadiosityView(const vtkRadiosityView&) = delete;
+  void operator=(const vtkRadiosityView&) = delete;
+};
+
+#endif
