@@ -1,0 +1,35 @@
+// Sensor files of the command-line program (SPEC: --probes, --probe-output).
+#ifndef vtkradiosity_ProbeIO_h
+#define vtkradiosity_ProbeIO_h
+
+#include "Radiosity/ProbeEvaluator.h"
+#include "Radiosity/Types.h"
+
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+namespace cli
+{
+/**
+ * Reads a sensor CSV: the header `x,y,z,nx,ny,nz` (spaces around fields, a
+ * UTF-8 byte order mark and CRLF line ends tolerated), then one row of 6 finite
+ * numbers per sensor; blank lines are skipped. Normals are returned
+ * normalized; a zero normal is an error. On failure returns false, `probes` is
+ * left empty and `error` names the file, the line and its text.
+ */
+bool ReadProbes(const std::string& csv, std::vector<Probe>& probes, std::string& error);
+
+/**
+ * Writes `x,y,z,E_r,E_g,E_b`, one row per probe in input order, with 17
+ * significant digits (doubles round-trip exactly). Refuses mismatched sizes and
+ * non-finite values; written to a temporary file in the same directory and
+ * renamed, so no half-written file is ever left.
+ */
+bool WriteProbeValues(const std::string& csv, const std::vector<Probe>& probes,
+  const std::vector<RGB>& values, std::string& error);
+} // namespace cli
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,84 @@
+#include "Report.h"
+
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace radiosity
+{
+namespace cli
+{
+bool WriteFileAtomically(const std::string& file, const std::string& text, std::string& error)
+{
+  const std::string temporary = file + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out)
+    {
+      std::remove(temporary.c_str());
+      error = "cannot write " + file;
+      return false;
+    }
+  }
+  if (std::rename(temporary.c_str(), file.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    error = "cannot write " + file;
+    return false;
+  }
+  return true;
+}
+
+std::string HistoryCsv(const ConvergenceHistory& history)
+{
+  std::ostringstream s;
+  s.precision(10);
+  const auto names = ConvergenceHistory::ColumnNames();
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    s << (i ? "," : "") << names[i];
+  }
+  s << "\n";
+  for (const ConvergenceRow& r : history.Rows)
+  {
+    s << r.Iteration << "," << r.TimeSeconds << "," << r.UnshotPowerW << "," << r.EnergyBalance
+      << "," << r.RmsError << "," << r.MaxRelError << "," << r.OvershootPowerW << "\n";
+  }
+  return s.str();
+}
+
+nlohmann::json HistoryJson(const ConvergenceHistory& history)
+{
+  // JSON has no NaN: unknown error figures are null.
+  const auto value = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  nlohmann::json columns;
+  for (const auto& name : ConvergenceHistory::ColumnNames())
+  {
+    columns[name] = nlohmann::json::array();
+  }
+  for (const ConvergenceRow& r : history.Rows)
+  {
+    columns["iteration"].push_back(r.Iteration);
+    columns["time_s"].push_back(r.TimeSeconds);
+    columns["unshot_power_W"].push_back(value(r.UnshotPowerW));
+    columns["energy_balance"].push_back(value(r.EnergyBalance));
+    columns["rms_error"].push_back(value(r.RmsError));
+    columns["max_rel_error"].push_back(value(r.MaxRelError));
+    columns["overshoot_power_W"].push_back(value(r.OvershootPowerW));
+  }
+  return columns;
+}
+
+double PeakMemoryBytes()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) * 1024.0; // Linux reports kilobytes
+}
+}
+}

@@ -1,0 +1,98 @@
+#include "SceneLoader.h"
+
+#include "ObjMtlReader.h"
+
+#include "vtkCornellBoxSource.h"
+#include "vtkDataSetReader.h"
+#include "vtkExecutive.h"
+#include "vtkNew.h"
+#include "vtkPLYReader.h"
+#include "vtkPolyData.h"
+#include "vtkSTLReader.h"
+#include "vtkXMLGenericDataObjectReader.h"
+
+#include <algorithm>
+#include <fstream>
+
+namespace radiosity
+{
+namespace cli
+{
+namespace
+{
+std::string Extension(const std::string& file)
+{
+  const auto dot = file.rfind('.');
+  std::string ext = dot == std::string::npos ? "" : file.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+/// Runs a reader; VTK readers report failures through error codes and output.
+vtkSmartPointer<vtkDataObject> Run(vtkAlgorithm* reader, const std::string& file, std::string& error)
+{
+  reader->Update();
+  vtkDataObject* out = reader->GetOutputDataObject(0);
+  if (reader->GetErrorCode() != 0 || !out)
+  {
+    error = "cannot read scene file " + file;
+    return nullptr;
+  }
+  vtkSmartPointer<vtkDataObject> copy;
+  copy.TakeReference(out->NewInstance());
+  copy->ShallowCopy(out);
+  return copy;
+}
+}
+
+vtkSmartPointer<vtkDataObject> LoadScene(
+  const std::string& scene, std::string& error, std::vector<std::string>& warnings)
+{
+  if (scene == "cornell")
+  {
+    vtkNew<vtkCornellBoxSource> box;
+    box->Update();
+    vtkSmartPointer<vtkDataObject> out = box->GetOutput();
+    return out;
+  }
+  if (!std::ifstream(scene).good())
+  {
+    error = "scene file " + scene + " does not exist or cannot be opened";
+    return nullptr;
+  }
+  const std::string ext = Extension(scene);
+  if (ext == "obj")
+  {
+    vtkSmartPointer<vtkPolyData> pd = ReadObjWithMaterials(scene, error, warnings);
+    return pd;
+  }
+  if (ext == "vtp" || ext == "vtm" || ext == "vtu" || ext == "vtpc" || ext == "vtpd")
+  {
+    vtkNew<vtkXMLGenericDataObjectReader> reader;
+    reader->SetFileName(scene.c_str());
+    return Run(reader, scene, error);
+  }
+  if (ext == "vtk")
+  {
+    vtkNew<vtkDataSetReader> reader;
+    reader->SetFileName(scene.c_str());
+    return Run(reader, scene, error);
+  }
+  if (ext == "ply")
+  {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(scene.c_str());
+    return Run(reader, scene, error);
+  }
+  if (ext == "stl")
+  {
+    vtkNew<vtkSTLReader> reader;
+    reader->SetFileName(scene.c_str());
+    return Run(reader, scene, error);
+  }
+  error = "unknown scene file type '." + ext + "' (" + scene +
+    "): use .vtp, .vtm, .vtk, .ply, .stl or .obj";
+  return nullptr;
+}
+}
+}

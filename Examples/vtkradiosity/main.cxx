@@ -1,0 +1,367 @@
+// vtkradiosity: the command-line program of SPEC.md.
+//   vtkradiosity solve SCENE [options]   solve, write the result, image, probes, report
+//   vtkradiosity demo [--output-dir DIR] the built-in Cornell box, everything into DIR (out/)
+// Exit status: 0 success, 2 bad input (nothing written), 1 internal failure.
+#include "ExrWriter.h"
+#include "ProbeIO.h"
+#include "ProgressBar.h"
+#include "Report.h"
+#include "SceneLoader.h"
+
+#include "vtkCamera.h"
+#include "vtkCornellBoxSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityConvergenceChart.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiosityView.h"
+#include "vtkRenderer.h"
+#include "vtkTable.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include "Radiosity/ProbeEvaluator.h"
+#include "Radiosity/RadianceImage.h"
+#include "Radiosity/SolutionMesh.h"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+#include <sys/stat.h>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+using namespace radiosity;
+
+/// Bad input: exit status 2, message on stderr, nothing written.
+struct BadInput : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct SolveArguments
+{
+  std::string Scene;
+  std::string Method = "auto";
+  double Tolerance = 1e-3;
+  long long MaxIterations = 200000;
+  double MaxTime = 0.0;
+  int Threads = 0;
+  std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
+  int Width = 800, Height = 800;
+  bool NoOvershooting = false;
+};
+
+double Since(Clock::time_point t)
+{
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+vtkSmartPointer<vtkTable> HistoryTable(const ConvergenceHistory& history)
+{
+  auto table = vtkSmartPointer<vtkTable>::New();
+  const auto names = ConvergenceHistory::ColumnNames();
+  std::vector<vtkSmartPointer<vtkDoubleArray>> columns;
+  for (const auto& name : names)
+  {
+    auto c = vtkSmartPointer<vtkDoubleArray>::New();
+    c->SetName(name.c_str());
+    c->SetNumberOfTuples(static_cast<vtkIdType>(history.Rows.size()));
+    columns.push_back(c);
+    table->AddColumn(c);
+  }
+  for (std::size_t i = 0; i < history.Rows.size(); ++i)
+  {
+    const ConvergenceRow& r = history.Rows[i];
+    const double row[7] = { static_cast<double>(r.Iteration), r.TimeSeconds, r.UnshotPowerW,
+      r.EnergyBalance, r.RmsError, r.MaxRelError, r.OvershootPowerW };
+    for (std::size_t c = 0; c < columns.size(); ++c)
+    {
+      columns[c]->SetValue(static_cast<vtkIdType>(i), row[c]);
+    }
+  }
+  return table;
+}
+
+void Check(bool ok, const std::string& error)
+{
+  if (!ok)
+  {
+    throw std::runtime_error(error);
+  }
+}
+
+int RunSolve(const SolveArguments& args)
+{
+  const auto start = Clock::now();
+  if (args.Method != "auto" && args.Method != "progressive")
+  {
+    throw BadInput("--method " + args.Method +
+      ": not available in this version (available: progressive, auto)");
+  }
+  if (!args.ProbeOutput.empty() && args.Probes.empty())
+  {
+    throw BadInput("--probe-output needs --probes");
+  }
+  // Everything that can be refused is read and checked before anything is written.
+  std::vector<Probe> probes;
+  std::string error;
+  if (!args.Probes.empty() && !cli::ReadProbes(args.Probes, probes, error))
+  {
+    throw BadInput(error);
+  }
+  std::vector<std::string> loadWarnings;
+  vtkSmartPointer<vtkDataObject> input = cli::LoadScene(args.Scene, error, loadWarnings);
+  if (!input)
+  {
+    throw BadInput(error);
+  }
+  for (const auto& w : loadWarnings)
+  {
+    std::cerr << "warning: " << w << "\n";
+  }
+  const double loadSeconds = Since(start);
+
+  vtkNew<vtkRadiosityFilter> filter;
+  filter->SetInputData(input);
+  filter->SetMethod(vtkRadiosityFilter::Progressive);
+  filter->SetTolerance(args.Tolerance);
+  filter->SetMaxIterations(args.MaxIterations);
+  filter->SetMaxTime(args.MaxTime);
+  filter->SetNumberOfThreads(args.Threads);
+  filter->SetOvershooting(!args.NoOvershooting);
+  filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
+  cli::ProgressBar bar;
+  filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
+  filter->Update();
+  filter->GlobalWarningDisplayOn();
+  if (!filter->GetLastError().empty())
+  {
+    throw BadInput(filter->GetLastError());
+  }
+  for (const auto& w : filter->GetWarnings())
+  {
+    std::cerr << "warning: " << w << "\n";
+  }
+  const SolverStatistics& stats = filter->GetStatistics();
+  ProgressStatus done;
+  done.Phase = "solved";
+  done.Iteration = stats.Iterations;
+  done.Residual = stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0;
+  done.Fraction = 1.0;
+  bar.Update(done);
+  bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
+
+  vtkPolyData* solved = filter->GetOutput();
+  const SolutionMesh& solution = *filter->GetSolution();
+  nlohmann::json phases;
+  phases["load_s"] = loadSeconds;
+  phases["preprocessing_s"] = filter->GetPreprocessSeconds();
+  phases["solve_s"] = stats.SolveSeconds;
+
+  if (!args.Output.empty())
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    const std::string temporary = args.Output + ".partial.vtp";
+    writer->SetFileName(temporary.c_str());
+    writer->SetInputData(solved);
+    writer->SetDataModeToAppended();
+    Check(writer->Write() == 1 && std::rename(temporary.c_str(), args.Output.c_str()) == 0,
+      "cannot write " + args.Output);
+  }
+  const auto renderStart = Clock::now();
+  if (!args.Image.empty() || !args.Exr.empty())
+  {
+    vtkNew<vtkRadiosityView> view;
+    view->SetInputData(solved);
+    view->SetSize(args.Width, args.Height);
+    if (args.Scene == "cornell")
+    {
+      double position[3], focal[3], up[3], angle;
+      vtkCornellBoxSource::GetCamera(position, focal, up, angle);
+      view->SetCamera(position, focal, up, angle);
+    }
+    Check(view->Render(), "cannot render the solution");
+    if (!args.Image.empty())
+    {
+      const std::string temporary = args.Image + ".partial.png";
+      Check(view->WritePNG(temporary.c_str()) &&
+          std::rename(temporary.c_str(), args.Image.c_str()) == 0,
+        "cannot write " + args.Image);
+    }
+    if (!args.Exr.empty())
+    {
+      // Same camera as the PNG, linear radiance by ray casting the solution.
+      vtkCamera* camera = view->GetRenderer()->GetActiveCamera();
+      PinholeCamera pinhole;
+      double v[3];
+      camera->GetPosition(v);
+      pinhole.Position = Vec3(v[0], v[1], v[2]);
+      camera->GetFocalPoint(v);
+      pinhole.FocalPoint = Vec3(v[0], v[1], v[2]);
+      camera->GetViewUp(v);
+      pinhole.ViewUp = Vec3(v[0], v[1], v[2]);
+      pinhole.ViewAngleDegrees = camera->GetViewAngle();
+      const RadianceImage radiance = RenderRadiance(solution, pinhole, args.Width, args.Height);
+      Check(cli::WriteExrHalf(args.Exr, radiance, error), error);
+    }
+  }
+  phases["render_s"] = Since(renderStart);
+
+  std::size_t gathered = 0;
+  if (!args.ProbeOutput.empty())
+  {
+    ProbeEvaluator evaluator(solution, filter->GetScene());
+    const std::vector<RGB> values = evaluator.Evaluate(probes);
+    gathered = evaluator.GatheredCount();
+    Check(cli::WriteProbeValues(args.ProbeOutput, probes, values, error), error);
+  }
+  if (!args.HistoryCsv.empty())
+  {
+    Check(cli::WriteFileAtomically(args.HistoryCsv, cli::HistoryCsv(stats.History), error), error);
+  }
+  if (!args.HistoryPng.empty())
+  {
+    vtkNew<vtkRadiosityConvergenceChart> chart;
+    chart->SetInputData(HistoryTable(stats.History));
+    chart->SetTitle(("Convergence: " + args.Scene + ", progressive refinement").c_str());
+    chart->RemoveAllColumns();
+    chart->AddColumn("unshot_power_W", "unshot power (W)");
+    chart->AddColumn("overshoot_power_W", "power shot in advance by overshooting (W)");
+    chart->AddColumn("energy_balance", "|energy balance| (relative)");
+    chart->AddColumn("rms_error", "RMS irradiance error");
+    const std::string temporary = args.HistoryPng + ".partial.png";
+    Check(chart->WritePNG(temporary.c_str(), 900, 500) &&
+        std::rename(temporary.c_str(), args.HistoryPng.c_str()) == 0,
+      "cannot write " + args.HistoryPng);
+  }
+
+  if (!args.Report.empty())
+  {
+    const Scene& scene = filter->GetScene();
+    nlohmann::json report;
+    report["method"] = "progressive";
+    report["parameters"] = { { "tolerance", filter->GetTolerance() },
+      { "max_iterations", filter->GetMaxIterations() }, { "max_time_s", filter->GetMaxTime() },
+      { "threads", filter->GetNumberOfThreads() }, { "overshooting", filter->GetOvershooting() },
+      { "shooter_element_size", filter->GetShooterElementSize() },
+      { "initial_element_size", filter->GetInitialElementSize() },
+      { "max_subdivision_levels", filter->GetMaxSubdivisionLevels() },
+      { "subdivision_threshold", filter->GetSubdivisionThreshold() },
+      { "form_factor_tolerance", filter->GetFormFactorTolerance() },
+      { "visibility_samples", filter->GetVisibilitySamples() },
+      { "indirect_visibility_samples", filter->GetIndirectVisibilitySamples() } };
+    std::size_t emitters = 0;
+    for (const auto& m : scene.Materials)
+    {
+      emitters += MaxComponent(m.Emission) > 0 ? 1 : 0;
+    }
+    report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
+      { "objects", scene.ObjectNames.size() }, { "emitters", emitters },
+      { "emitted_power_W", stats.EmittedPowerW }, { "warnings", filter->GetWarnings() },
+      { "left_out",
+        { { "degenerate_triangles_dropped", filter->GetCleanupReport().DegenerateTrianglesDropped },
+          { "triangles_that_cannot_occlude", scene.Triangles.size() - stats.Occluders },
+          { "element_pairs_facing_away", stats.PairsFacingAway },
+          { "element_pairs_needing_no_ray", stats.PairsUnoccludable },
+          { "solve_skipped_no_emitters", stats.Stop == StopReason::NoEmitters } } } };
+    report["solution"] = { { "stop", ToString(stats.Stop) }, { "iterations", stats.Iterations },
+      { "elements", stats.Elements }, { "subdivisions", stats.Subdivisions },
+      { "rays", stats.RaysCast },
+      { "rays_per_second", stats.SolveSeconds > 0 ? stats.RaysCast / stats.SolveSeconds : 0.0 },
+      { "form_factors", { { "analytic", stats.AnalyticFormFactors }, { "disc", stats.DiscFormFactors } } },
+      { "relative_unshot_power",
+        stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0 },
+      { "absorbed_power_W", stats.AbsorbedPowerW }, { "escaped_power_W", stats.EscapedPowerW },
+      { "probes", probes.size() }, { "probes_gathered_off_surface", gathered } };
+    report["time"] = phases;
+    report["time"]["total_s"] = Since(start);
+    report["peak_memory_bytes"] = cli::PeakMemoryBytes();
+    report["convergence_history"] = cli::HistoryJson(stats.History);
+    report["error"] = nullptr; // no reference known
+    Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
+  }
+  std::cerr << "solved " << args.Scene << ": " << stats.Elements << " elements, "
+            << stats.Iterations << " iterations, " << stats.SolveSeconds << " s\n";
+  return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  CLI::App app{ "vtkradiosity: global illumination by radiosity (see SPEC.md)" };
+  app.require_subcommand(1);
+  SolveArguments solve;
+  CLI::App* solveCommand = app.add_subcommand("solve", "solve a scene");
+  solveCommand->add_option("SCENE", solve.Scene, "scene file or 'cornell'")->required();
+  solveCommand->add_option("--method", solve.Method, "progressive|hierarchical|facecluster|meshless|auto");
+  solveCommand->add_option("--tolerance", solve.Tolerance, "relative unshot power to stop at")
+    ->check(CLI::Range(1e-12, 1.0));
+  solveCommand->add_option("--max-iterations", solve.MaxIterations)->check(CLI::NonNegativeNumber);
+  solveCommand->add_option("--max-time", solve.MaxTime, "seconds")->check(CLI::NonNegativeNumber);
+  solveCommand->add_option("--threads", solve.Threads)->check(CLI::Range(0, 4096));
+  solveCommand->add_option("--output", solve.Output, "result polydata (.vtp)");
+  solveCommand->add_option("--image", solve.Image, "tone-mapped PNG");
+  solveCommand->add_option("--exr", solve.Exr, "linear radiance OpenEXR (half float)");
+  solveCommand->add_option("--probes", solve.Probes, "sensor CSV x,y,z,nx,ny,nz");
+  solveCommand->add_option("--probe-output", solve.ProbeOutput, "irradiance at the sensors");
+  solveCommand->add_option("--report", solve.Report, "JSON report");
+  solveCommand->add_option("--history", solve.HistoryCsv, "convergence history CSV");
+  solveCommand->add_option("--history-plot", solve.HistoryPng, "convergence plot PNG");
+  solveCommand->add_option("--size", solve.Width, "image width and height in pixels")
+    ->check(CLI::Range(16, 8192));
+  solveCommand->add_flag("--no-overshooting", solve.NoOvershooting);
+
+  std::string outputDir = "out";
+  CLI::App* demo = app.add_subcommand("demo", "solve, render and report the built-in Cornell box");
+  demo->add_option("--output-dir", outputDir, "where the files go (default out/)");
+
+  try
+  {
+    app.parse(argc, argv);
+  }
+  catch (const CLI::ParseError& e)
+  {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try
+  {
+    if (*demo)
+    {
+      mkdir(outputDir.c_str(), 0755);
+      SolveArguments d;
+      d.Scene = "cornell";
+      d.Output = outputDir + "/cornell.vtp";
+      d.Image = outputDir + "/cornell.png";
+      d.Exr = outputDir + "/cornell.exr";
+      d.Report = outputDir + "/report.json";
+      d.HistoryCsv = outputDir + "/convergence.csv";
+      d.HistoryPng = outputDir + "/convergence.png";
+      const int status = RunSolve(d);
+      if (status == 0)
+      {
+        std::cout << "wrote " << d.Output << ", " << d.Image << ", " << d.Exr << ", " << d.Report
+                  << ", " << d.HistoryCsv << ", " << d.HistoryPng << "\n";
+      }
+      return status;
+    }
+    solve.Height = solve.Width;
+    return RunSolve(solve);
+  }
+  catch (const BadInput& e)
+  {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,167 @@
+#include "vtkRadiosityFilter.h"
+
+#include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkRadiositySceneConverter.h"
+#include "vtkVersion.h"
+
+#include "Radiosity/ProgressiveRadiosity.h"
+#include "Radiosity/SolutionMesh.h"
+
+#include <chrono>
+
+vtkStandardNewMacro(vtkRadiosityFilter);
+
+vtkRadiosityFilter::vtkRadiosityFilter() = default;
+vtkRadiosityFilter::~vtkRadiosityFilter() = default;
+
+const char* vtkRadiosityFilter::GetMethodName(int method)
+{
+  switch (method)
+  {
+    case Auto:
+      return "auto";
+    case Progressive:
+      return "progressive";
+    default:
+      return "unknown";
+  }
+}
+
+int vtkRadiosityFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  // Composite data arrive whole: each block is one object of the scene.
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  return 1;
+}
+
+bool vtkRadiosityFilter::Fail(const std::string& message)
+{
+  this->LastError = message;
+  vtkErrorMacro(<< message);
+  return false;
+}
+
+int vtkRadiosityFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  this->LastError.clear();
+  this->Warnings.clear();
+  this->Solution.reset();
+  this->Statistics = radiosity::SolverStatistics();
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+
+  radiosity::Scene scene;
+  std::string error;
+  if (!vtkRadiositySceneConverter::ToScene(input, scene, error, this->Warnings))
+  {
+    this->Fail("bad input: " + error);
+    return 1;
+  }
+  for (const std::string& w : this->Warnings)
+  {
+    vtkWarningMacro(<< w);
+  }
+  try
+  {
+    radiosity::ValidateScene(scene);
+  }
+  catch (const radiosity::SceneError& e)
+  {
+    this->Fail(std::string("bad input: ") + e.what());
+    return 1;
+  }
+  this->Cleanup = radiosity::DropDegenerateTriangles(scene);
+  if (this->Cleanup.DegenerateTrianglesDropped > 0)
+  {
+    const std::string w = "dropped " + std::to_string(this->Cleanup.DegenerateTrianglesDropped) +
+      " degenerate (zero-area) triangles";
+    this->Warnings.push_back(w);
+    vtkWarningMacro(<< w);
+  }
+  if (scene.Triangles.empty())
+  {
+    this->Fail("bad input: the scene has no triangle of non-zero area");
+    return 1;
+  }
+  if (!scene.HasEmitters())
+  {
+    const std::string w = "the scene has no emitter: the solution is zero";
+    this->Warnings.push_back(w);
+    vtkWarningMacro(<< w);
+  }
+  this->LastScene = scene;
+
+  radiosity::ProgressiveOptions options;
+  options.Tolerance = this->Tolerance;
+  options.MaxIterations = this->MaxIterations;
+  options.MaxTimeSeconds = this->MaxTime;
+  options.Threads = this->NumberOfThreads;
+  options.Overshooting = this->Overshooting;
+  options.ShooterElementSize = this->ShooterElementSize;
+  options.InitialElementSize = this->InitialElementSize;
+  options.MaxSubdivisionLevels = this->MaxSubdivisionLevels;
+  options.SubdivisionThreshold = this->SubdivisionThreshold;
+  options.FormFactorTolerance = this->FormFactorTolerance;
+  options.VisibilitySamples = this->VisibilitySamples;
+  options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
+  radiosity::ProgressiveRadiosity solver(this->LastScene, options);
+  this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+  auto last = Clock::now();
+  this->Statistics = solver.Solve(
+    [this, &last](const radiosity::ProgressStatus& status)
+    {
+      const auto now = Clock::now();
+      if (std::chrono::duration<double>(now - last).count() > 0.05)
+      {
+        last = now;
+        this->UpdateProgress(status.Fraction);
+      }
+      if (this->StatusCallback && !this->StatusCallback(status))
+      {
+        return false;
+      }
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+      return !this->CheckAbort();
+#else
+      return !this->GetAbortExecute();
+#endif
+    });
+  this->UpdateProgress(1.0);
+  if (this->Statistics.Stop == radiosity::StopReason::Aborted)
+  {
+    vtkWarningMacro(<< "aborted: the output holds the solution so far");
+  }
+  this->Solution = std::make_unique<radiosity::SolutionMesh>(radiosity::ExtractSolution(solver.Mesh()));
+  output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(*this->Solution, this->LastScene));
+  output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
+  return 1;
+}
+
+void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << GetMethodName(this->Method) << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "MaxIterations: " << this->MaxIterations << "\n";
+  os << indent << "MaxTime: " << this->MaxTime << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "Overshooting: " << (this->Overshooting ? "On" : "Off") << "\n";
+  os << indent << "ShooterElementSize: " << this->ShooterElementSize << "\n";
+  os << indent << "InitialElementSize: " << this->InitialElementSize << "\n";
+  os << indent << "MaxSubdivisionLevels: " << this->MaxSubdivisionLevels << "\n";
+  os << indent << "SubdivisionThreshold: " << this->SubdivisionThreshold << "\n";
+  os << indent << "FormFactorTolerance: " << this->FormFactorTolerance << "\n";
+  os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
+  os << indent << "IndirectVisibilitySamples: " << this->IndirectVisibilitySamples << "\n";
+  os << indent << "LastError: " << this->LastError << "\n";
+}

@@ -1,0 +1,184 @@
+/**
+ * @class   vtkRadiosityFilter
+ * @brief   global illumination of a diffuse surface scene by radiosity
+ *
+ * Input: vtkPolyData or a composite dataset (each block one object) with the
+ * SPEC.md material cell arrays. Output: the solution's elements as polydata
+ * with `Irradiance` and `Radiosity` on points and cells, `ElementId` and
+ * `Level` on cells, and the field data array `ConvergenceHistory`.
+ *
+ * Methods: Progressive (progressive refinement radiosity with adaptive
+ * quadtrees, Coombe et al. 2004 on the CPU); Auto picks the best available.
+ * Bad input gives an error naming the array, cell or point and an empty
+ * output (GetLastError() keeps the message). Progress events during the solve;
+ * AbortExecute stops it with the solution so far.
+ */
+#ifndef vtkRadiosityFilter_h
+#define vtkRadiosityFilter_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "RadiosityFiltersModule.h" // for export macro
+
+#include "Radiosity/Scene.h"       // for radiosity::SceneCleanupReport
+#include "Radiosity/SolverTypes.h" // for radiosity::SolverStatistics
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+namespace radiosity
+{
+struct SolutionMesh;
+struct SceneAnalysis;
+}
+
+class RADIOSITYFILTERS_EXPORT vtkRadiosityFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkRadiosityFilter* New();
+  vtkTypeMacro(vtkRadiosityFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Methods
+  {
+    Auto = 0,
+    Progressive = 1
+  };
+
+  ///@{
+  /// The solution method. Default Auto (progressive, the only one so far).
+  vtkSetClampMacro(Method, int, Auto, Progressive);
+  vtkGetMacro(Method, int);
+  void SetMethodToAuto() { this->SetMethod(Auto); }
+  void SetMethodToProgressive() { this->SetMethod(Progressive); }
+  static const char* GetMethodName(int method);
+  ///@}
+
+  ///@{
+  /// Stop when the unshot power falls to this fraction of the emitted power. Default 1e-3.
+  vtkSetClampMacro(Tolerance, double, 1e-12, 1.0);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /// Stop after this many shots. Default 200000.
+  vtkSetClampMacro(MaxIterations, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaxIterations, vtkIdType);
+  ///@}
+
+  ///@{
+  /// Stop after this many seconds of solving; 0 means no limit. Default 0.
+  vtkSetClampMacro(MaxTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaxTime, double);
+  ///@}
+
+  ///@{
+  /// Worker threads; 0 uses every core. Default 0.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /// Overshooting with the ambient estimate (needed for reflectance near 1). Default on.
+  vtkSetMacro(Overshooting, bool);
+  vtkGetMacro(Overshooting, bool);
+  vtkBooleanMacro(Overshooting, bool);
+  ///@}
+
+  ///@{
+  /// Longest edge of the shooting elements, as a fraction of the scene diagonal. Default 0.25.
+  vtkSetClampMacro(ShooterElementSize, double, 1e-6, 1.0);
+  vtkGetMacro(ShooterElementSize, double);
+  ///@}
+
+  ///@{
+  /// Longest edge of the initial receiving elements, fraction of the diagonal. Default 1/16.
+  vtkSetClampMacro(InitialElementSize, double, 1e-6, 1.0);
+  vtkGetMacro(InitialElementSize, double);
+  ///@}
+
+  ///@{
+  /// Adaptive quadtree levels below the initial elements. Default 2.
+  vtkSetClampMacro(MaxSubdivisionLevels, int, 0, 10);
+  vtkGetMacro(MaxSubdivisionLevels, int);
+  ///@}
+
+  ///@{
+  /// Departure from a linear field that splits an element, relative. Default 0.1.
+  vtkSetClampMacro(SubdivisionThreshold, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SubdivisionThreshold, double);
+  ///@}
+
+  ///@{
+  /// Use the disc approximation when A / (pi r^2) is below this. Default 2e-3.
+  vtkSetClampMacro(FormFactorTolerance, double, 0.0, 1.0);
+  vtkGetMacro(FormFactorTolerance, double);
+  ///@}
+
+  ///@{
+  /// Visibility rays per receiver sample towards emitters (1, 4 or 16). Default 16.
+  vtkSetClampMacro(VisibilitySamples, int, 1, 16);
+  vtkGetMacro(VisibilitySamples, int);
+  ///@}
+
+  ///@{
+  /// Visibility rays per receiver sample towards reflecting shooters (1, 4 or 16). Default 1.
+  vtkSetClampMacro(IndirectVisibilitySamples, int, 1, 16);
+  vtkGetMacro(IndirectVisibilitySamples, int);
+  ///@}
+
+  /// Why the last execution failed ("" when it did not).
+  const std::string& GetLastError() const { return this->LastError; }
+  /// What the last execution ignored or defaulted.
+  const std::vector<std::string>& GetWarnings() const { return this->Warnings; }
+  /// Statistics of the last solve (history, counts, times).
+  const radiosity::SolverStatistics& GetStatistics() const { return this->Statistics; }
+  /// The last scene as the solver saw it and what was dropped from it.
+  const radiosity::Scene& GetScene() const { return this->LastScene; }
+  const radiosity::SceneCleanupReport& GetCleanupReport() const { return this->Cleanup; }
+  /// The last solution in the core's form (for probes and images); null before a solve.
+  const radiosity::SolutionMesh* GetSolution() const { return this->Solution.get(); }
+  double GetPreprocessSeconds() const { return this->PreprocessSeconds; }
+
+  /// Called with the solver's phase, iteration and residual besides the
+  /// progress events (for terminal progress bars); returning false aborts.
+  void SetStatusCallback(radiosity::ProgressCallback callback) { this->StatusCallback = callback; }
+
+protected:
+  vtkRadiosityFilter();
+  ~vtkRadiosityFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Method = Auto;
+  double Tolerance = 1e-3;
+  vtkIdType MaxIterations = 200000;
+  double MaxTime = 0.0;
+  int NumberOfThreads = 0;
+  bool Overshooting = true;
+  double ShooterElementSize = 0.25;
+  double InitialElementSize = 1.0 / 16.0;
+  int MaxSubdivisionLevels = 2;
+  double SubdivisionThreshold = 0.1;
+  double FormFactorTolerance = 2e-3;
+  int VisibilitySamples = 16;
+  int IndirectVisibilitySamples = 1;
+
+private:
+  vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;
+  void operator=(const vtkRadiosityFilter&) = delete;
+
+  bool Fail(const std::string& message);
+
+  std::string LastError;
+  std::vector<std::string> Warnings;
+  radiosity::SolverStatistics Statistics;
+  radiosity::Scene LastScene;
+  radiosity::SceneCleanupReport Cleanup;
+  std::unique_ptr<radiosity::SolutionMesh> Solution;
+  double PreprocessSeconds = 0.0;
+  radiosity::ProgressCallback StatusCallback;
+};
+
+#endif

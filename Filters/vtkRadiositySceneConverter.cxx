@@ -1,0 +1,409 @@
+#include "vtkRadiositySceneConverter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeIterator.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedShortArray.h"
+
+#include <sstream>
+
+vtkStandardNewMacro(vtkRadiositySceneConverter);
+
+namespace
+{
+using radiosity::RGB;
+
+const char* const SourceCellArray = "vtkRadiositySourceCell";
+
+/// Reads a 3-component material array (or its default); false on a wrong shape.
+bool ReadColour(vtkCellData* cd, const char* name, vtkIdType cell, RGB& value, std::string& error)
+{
+  vtkDataArray* a = cd->GetArray(name);
+  if (!a)
+  {
+    return true;
+  }
+  if (a->GetNumberOfComponents() != 3)
+  {
+    error = std::string("array ") + name + " has " + std::to_string(a->GetNumberOfComponents()) +
+      " components, 3 (RGB) expected";
+    return false;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    value[c] = a->GetComponent(cell, c);
+  }
+  return true;
+}
+
+/// One dataset (one object) appended to the scene.
+bool AppendDataSet(vtkDataSet* ds, const std::string& name, radiosity::Scene& scene,
+  std::string& error, std::vector<std::string>& warnings)
+{
+  vtkSmartPointer<vtkPolyData> pd = vtkPolyData::SafeDownCast(ds);
+  if (!pd)
+  {
+    vtkNew<vtkDataSetSurfaceFilter> surface;
+    surface->SetInputData(ds);
+    surface->Update();
+    pd = surface->GetOutput();
+    warnings.push_back(name + ": " + ds->GetClassName() + " converted to its outer surface");
+  }
+  const vtkIdType nVerts = pd->GetNumberOfVerts(), nLines = pd->GetNumberOfLines(),
+                  nStrips = pd->GetNumberOfStrips(), nPolys = pd->GetNumberOfPolys();
+  if (nVerts + nLines + nStrips > 0)
+  {
+    std::ostringstream w;
+    w << name << ": ignored " << nVerts << " vertex, " << nLines << " line and " << nStrips
+      << " strip cells (only polygons are surfaces)";
+    warnings.push_back(w.str());
+  }
+  if (nPolys == 0)
+  {
+    return true;
+  }
+  // Polygons only, with their original cell ids, then triangulated.
+  vtkNew<vtkPolyData> polys;
+  polys->SetPoints(pd->GetPoints());
+  polys->SetPolys(pd->GetPolys());
+  vtkCellData* in = pd->GetCellData();
+  for (const char* array : { "Reflectance", "Emission", "Specular", "Shininess", "TwoSided" })
+  {
+    if (vtkDataArray* a = in->GetArray(array))
+    {
+      if (a->GetNumberOfTuples() != pd->GetNumberOfCells())
+      {
+        error = name + ": array " + array + " has " + std::to_string(a->GetNumberOfTuples()) +
+          " tuples for " + std::to_string(pd->GetNumberOfCells()) + " cells";
+        return false;
+      }
+      vtkSmartPointer<vtkDataArray> slice;
+      slice.TakeReference(a->NewInstance());
+      slice->SetName(array);
+      slice->SetNumberOfComponents(a->GetNumberOfComponents());
+      slice->SetNumberOfTuples(nPolys);
+      for (vtkIdType i = 0; i < nPolys; ++i)
+      {
+        slice->SetTuple(i, nVerts + nLines + i, a);
+      }
+      polys->GetCellData()->AddArray(slice);
+    }
+  }
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName(SourceCellArray);
+  ids->SetNumberOfTuples(nPolys);
+  for (vtkIdType i = 0; i < nPolys; ++i)
+  {
+    ids->SetValue(i, nVerts + nLines + i);
+  }
+  polys->GetCellData()->AddArray(ids);
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(polys);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  vtkPolyData* tris = triangulate->GetOutput();
+  vtkCellData* cd = tris->GetCellData();
+
+  if (!in->GetArray("Reflectance"))
+  {
+    warnings.push_back(name + ": no Reflectance array, using 0.5 grey");
+  }
+  if (vtkDataArray* s = cd->GetArray("Shininess"))
+  {
+    if (s->GetNumberOfComponents() != 1)
+    {
+      error = name + ": array Shininess has " + std::to_string(s->GetNumberOfComponents()) +
+        " components, 1 expected";
+      return false;
+    }
+  }
+  vtkDataArray* twoSided = cd->GetArray("TwoSided");
+  if (twoSided && twoSided->GetNumberOfComponents() != 1)
+  {
+    error = name + ": array TwoSided has " + std::to_string(twoSided->GetNumberOfComponents()) +
+      " components, 1 expected";
+    return false;
+  }
+
+  radiosity::Scene object;
+  object.ObjectNames.push_back(name);
+  const vtkIdType np = tris->GetNumberOfPoints();
+  object.Points.resize(np);
+  for (vtkIdType p = 0; p < np; ++p)
+  {
+    double x[3];
+    tris->GetPoint(p, x);
+    object.Points[p] = radiosity::Vec3(x[0], x[1], x[2]);
+  }
+  vtkDataArray* sourceCells = cd->GetArray(SourceCellArray);
+  vtkCellArray* cells = tris->GetPolys();
+  vtkIdType cellIndex = 0;
+  vtkIdType npts;
+  const vtkIdType* pts;
+  for (cells->InitTraversal(); cells->GetNextCell(npts, pts); ++cellIndex)
+  {
+    if (npts != 3)
+    {
+      continue;
+    }
+    radiosity::Material m;
+    std::string arrayError;
+    if (!ReadColour(cd, "Reflectance", cellIndex, m.Reflectance, arrayError) ||
+      !ReadColour(cd, "Emission", cellIndex, m.Emission, arrayError) ||
+      !ReadColour(cd, "Specular", cellIndex, m.Specular, arrayError))
+    {
+      error = name + ": " + arrayError;
+      return false;
+    }
+    if (vtkDataArray* s = cd->GetArray("Shininess"))
+    {
+      m.Shininess = s->GetComponent(cellIndex, 0);
+    }
+    const long long source = static_cast<long long>(sourceCells->GetComponent(cellIndex, 0));
+    const radiosity::Triangle tri{ { static_cast<std::uint32_t>(pts[0]),
+      static_cast<std::uint32_t>(pts[1]), static_cast<std::uint32_t>(pts[2]) } };
+    const bool both = twoSided && twoSided->GetComponent(cellIndex, 0) != 0;
+    for (int side = 0; side < (both ? 2 : 1); ++side)
+    {
+      radiosity::Triangle t = tri;
+      if (side == 1)
+      {
+        std::swap(t.V[1], t.V[2]); // the back side, facing the other way
+      }
+      object.Triangles.push_back(t);
+      object.Materials.push_back(m);
+      object.ObjectIds.push_back(0);
+      object.SourceCells.push_back(source);
+    }
+  }
+  radiosity::AppendScene(scene, object);
+  return true;
+}
+}
+
+void vtkRadiositySceneConverter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}
+
+bool vtkRadiositySceneConverter::ToScene(vtkDataObject* input, radiosity::Scene& scene,
+  std::string& error, std::vector<std::string>& warnings)
+{
+  scene = radiosity::Scene();
+  if (!input)
+  {
+    error = "no input";
+    return false;
+  }
+  if (auto* ds = vtkDataSet::SafeDownCast(input))
+  {
+    return AppendDataSet(ds, "object 0", scene, error, warnings);
+  }
+  auto* composite = vtkDataObjectTree::SafeDownCast(input);
+  if (!composite)
+  {
+    error = std::string("unsupported input type ") + input->GetClassName();
+    return false;
+  }
+  vtkSmartPointer<vtkDataObjectTreeIterator> it;
+  it.TakeReference(composite->NewTreeIterator());
+  it->VisitOnlyLeavesOn();
+  it->SkipEmptyNodesOn();
+  int block = 0;
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++block)
+  {
+    std::string name = "block " + std::to_string(block);
+    if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
+    {
+      name = it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
+    }
+    auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+    if (!ds)
+    {
+      warnings.push_back(name + ": not a dataset, ignored");
+      continue;
+    }
+    if (!AppendDataSet(ds, name, scene, error, warnings))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace
+{
+vtkSmartPointer<vtkDoubleArray> ColourArray(const char* name, vtkIdType n)
+{
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(n);
+  return a;
+}
+
+void SetColour(vtkDoubleArray* a, vtkIdType i, const RGB& c)
+{
+  a->SetTypedTuple(i, &c[0]);
+}
+
+vtkSmartPointer<vtkPoints> ToPoints(const std::vector<radiosity::Vec3>& pts)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(pts.size()));
+  for (std::size_t i = 0; i < pts.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), pts[i].x, pts[i].y, pts[i].z);
+  }
+  return points;
+}
+
+vtkSmartPointer<vtkCellArray> ToTriangles(const std::vector<radiosity::Triangle>& tris)
+{
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->AllocateExact(static_cast<vtkIdType>(tris.size()), 3 * static_cast<vtkIdType>(tris.size()));
+  for (const auto& t : tris)
+  {
+    const vtkIdType ids[3] = { t.V[0], t.V[1], t.V[2] };
+    cells->InsertNextCell(3, ids);
+  }
+  return cells;
+}
+
+vtkSmartPointer<vtkStringArray> ObjectNames(const radiosity::Scene& scene)
+{
+  auto names = vtkSmartPointer<vtkStringArray>::New();
+  names->SetName("ObjectNames");
+  for (const auto& n : scene.ObjectNames)
+  {
+    names->InsertNextValue(n);
+  }
+  return names;
+}
+}
+
+vtkSmartPointer<vtkPolyData> vtkRadiositySceneConverter::FromScene(const radiosity::Scene& scene)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(ToPoints(scene.Points));
+  pd->SetPolys(ToTriangles(scene.Triangles));
+  const auto n = static_cast<vtkIdType>(scene.Triangles.size());
+  auto reflectance = ColourArray("Reflectance", n);
+  auto emission = ColourArray("Emission", n);
+  auto specular = ColourArray("Specular", n);
+  vtkNew<vtkDoubleArray> shininess;
+  shininess->SetName("Shininess");
+  shininess->SetNumberOfTuples(n);
+  vtkNew<vtkIntArray> objects;
+  objects->SetName("ObjectId");
+  objects->SetNumberOfTuples(n);
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const radiosity::Material& m = scene.Materials[t];
+    SetColour(reflectance, t, m.Reflectance);
+    SetColour(emission, t, m.Emission);
+    SetColour(specular, t, m.Specular);
+    shininess->SetValue(t, m.Shininess);
+    objects->SetValue(t, scene.ObjectIds[t]);
+  }
+  vtkCellData* cd = pd->GetCellData();
+  cd->AddArray(reflectance);
+  cd->AddArray(emission);
+  cd->AddArray(specular);
+  cd->AddArray(shininess);
+  cd->AddArray(objects);
+  pd->GetFieldData()->AddArray(ObjectNames(scene));
+  return pd;
+}
+
+vtkSmartPointer<vtkPolyData> vtkRadiositySceneConverter::FromSolution(
+  const radiosity::SolutionMesh& solution, const radiosity::Scene& scene)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(ToPoints(solution.Points));
+  pd->SetPolys(ToTriangles(solution.Triangles));
+  const auto nc = static_cast<vtkIdType>(solution.Triangles.size());
+  const auto np = static_cast<vtkIdType>(solution.Points.size());
+  auto cellIrradiance = ColourArray("Irradiance", nc);
+  auto cellRadiosity = ColourArray("Radiosity", nc);
+  auto reflectance = ColourArray("Reflectance", nc);
+  auto emission = ColourArray("Emission", nc);
+  vtkNew<vtkIdTypeArray> elementId;
+  elementId->SetName("ElementId");
+  elementId->SetNumberOfTuples(nc);
+  vtkNew<vtkIntArray> level;
+  level->SetName("Level");
+  level->SetNumberOfTuples(nc);
+  vtkNew<vtkIntArray> objects;
+  objects->SetName("ObjectId");
+  objects->SetNumberOfTuples(nc);
+  for (vtkIdType t = 0; t < nc; ++t)
+  {
+    const radiosity::Material& m = scene.Materials[solution.SourceTriangle[t]];
+    SetColour(cellIrradiance, t, solution.CellIrradiance[t]);
+    SetColour(cellRadiosity, t, solution.CellRadiosity[t]);
+    SetColour(reflectance, t, m.Reflectance);
+    SetColour(emission, t, m.Emission);
+    elementId->SetValue(t, solution.ElementId[t]);
+    level->SetValue(t, solution.Level[t]);
+    objects->SetValue(t, scene.ObjectIds[solution.SourceTriangle[t]]);
+  }
+  vtkCellData* cd = pd->GetCellData();
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ cellIrradiance, cellRadiosity,
+         reflectance, emission, elementId, level, objects })
+  {
+    cd->AddArray(a);
+  }
+  auto pointIrradiance = ColourArray("Irradiance", np);
+  auto pointRadiosity = ColourArray("Radiosity", np);
+  for (vtkIdType p = 0; p < np; ++p)
+  {
+    SetColour(pointIrradiance, p, solution.PointIrradiance[p]);
+    SetColour(pointRadiosity, p, solution.PointRadiosity[p]);
+  }
+  pd->GetPointData()->AddArray(pointIrradiance);
+  pd->GetPointData()->AddArray(pointRadiosity);
+  pd->GetPointData()->SetActiveScalars("Radiosity");
+  pd->GetFieldData()->AddArray(ObjectNames(scene));
+  return pd;
+}
+
+vtkSmartPointer<vtkDoubleArray> vtkRadiositySceneConverter::FromHistory(
+  const radiosity::ConvergenceHistory& history)
+{
+  const auto names = radiosity::ConvergenceHistory::ColumnNames();
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName("ConvergenceHistory");
+  a->SetNumberOfComponents(static_cast<int>(names.size()));
+  for (std::size_t c = 0; c < names.size(); ++c)
+  {
+    a->SetComponentName(static_cast<vtkIdType>(c), names[c].c_str());
+  }
+  a->SetNumberOfTuples(static_cast<vtkIdType>(history.Rows.size()));
+  for (std::size_t i = 0; i < history.Rows.size(); ++i)
+  {
+    const radiosity::ConvergenceRow& r = history.Rows[i];
+    const double row[7] = { static_cast<double>(r.Iteration), r.TimeSeconds, r.UnshotPowerW,
+      r.EnergyBalance, r.RmsError, r.MaxRelError, r.OvershootPowerW };
+    a->SetTypedTuple(static_cast<vtkIdType>(i), row);
+  }
+  return a;
+}

@@ -1,0 +1,66 @@
+/**
+ * @class   vtkRadiositySceneConverter
+ * @brief   converts VTK data to the radiosity core's scene and solutions back
+ *
+ * The only place where VTK data and the core's types meet (DESIGN.md: filters
+ * convert once in each direction). Input: vtkPolyData, or any composite
+ * dataset whose leaves are datasets (each leaf one object, SPEC "Scenes");
+ * polygons are triangulated, vertices, lines and strips ignored with a
+ * warning; non-polygonal datasets contribute their outer surface. Cell arrays
+ * `Reflectance`, `Emission`, `Specular`, `Shininess` and `TwoSided` as SPEC.md.
+ */
+#ifndef vtkRadiositySceneConverter_h
+#define vtkRadiositySceneConverter_h
+
+#include "vtkObject.h"
+#include "RadiosityFiltersModule.h" // for export macro
+#include "vtkSmartPointer.h"           // for return values
+
+#include "Radiosity/ConvergenceHistory.h" // for radiosity::ConvergenceHistory
+#include "Radiosity/Scene.h"              // for radiosity::Scene
+#include "Radiosity/SolutionMesh.h"       // for radiosity::SolutionMesh
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+class vtkDataObject;
+class vtkDoubleArray;
+class vtkPolyData;
+
+class RADIOSITYFILTERS_EXPORT vtkRadiositySceneConverter : public vtkObject
+{
+public:
+  static vtkRadiositySceneConverter* New();
+  vtkTypeMacro(vtkRadiositySceneConverter, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Builds the core scene. On bad input returns false with `error` naming the
+   * array, cell or block and the value; `warnings` collects what was ignored
+   * or defaulted. Material values themselves are validated by the core
+   * (radiosity::ValidateScene).
+   */
+  static bool ToScene(vtkDataObject* input, radiosity::Scene& scene, std::string& error,
+    std::vector<std::string>& warnings);
+
+  /// The scene as polydata with its material cell arrays, `ObjectId` and the
+  /// field data string array `ObjectNames`.
+  static vtkSmartPointer<vtkPolyData> FromScene(const radiosity::Scene& scene);
+
+  /// A solution as polydata with the SPEC output arrays (points and cells).
+  static vtkSmartPointer<vtkPolyData> FromSolution(
+    const radiosity::SolutionMesh& solution, const radiosity::Scene& scene);
+
+  /// `ConvergenceHistory`: one tuple per row, one named component per SPEC column.
+  static vtkSmartPointer<vtkDoubleArray> FromHistory(const radiosity::ConvergenceHistory& history);
+
+protected:
+  vtkRadiositySceneConverter() = default;
+  ~vtkRadiositySceneConverter() override = default;
+
+private:
+  vtkRadiositySceneConverter(const vtkRadiositySceneConverter&) = delete;
+  void operator=(const vtkRadiositySceneConverter&) = delete;
+};
+
+#endif

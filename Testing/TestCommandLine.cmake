@@ -1,0 +1,59 @@
+# vtkradiosity solve on the committed room scene: documented files, probe
+# values, and exit status 2 with nothing written for bad input.
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+
+function(expect_exit code)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (NOT rc EQUAL code)
+    message(FATAL_ERROR "expected exit ${code}, got ${rc}: ${ARGN}\n${out}\n${err}")
+  endif ()
+  set(last_stderr "${err}" PARENT_SCOPE)
+endfunction()
+
+expect_exit(0 "${PROGRAM}" solve "${DATA}/room.obj" --tolerance 1e-2
+  --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/values.csv"
+  --output "${WORK}/room.vtp" --image "${WORK}/room.png" --exr "${WORK}/room.exr"
+  --report "${WORK}/report.json" --size 128)
+foreach (f room.vtp room.png room.exr report.json values.csv)
+  if (NOT EXISTS "${WORK}/${f}")
+    message(FATAL_ERROR "missing output ${f}")
+  endif ()
+endforeach ()
+file(STRINGS "${WORK}/values.csv" rows)
+list(LENGTH rows n)
+if (NOT n EQUAL 5)
+  message(FATAL_ERROR "values.csv: expected a header and 4 rows, got ${n} lines")
+endif ()
+list(GET rows 0 header)
+if (NOT header STREQUAL "x,y,z,E_r,E_g,E_b")
+  message(FATAL_ERROR "values.csv header: ${header}")
+endif ()
+# Floor centre below the light: irradiance well above zero and below the
+# light's exitance; the sensor in mid-air facing up sees the ceiling only.
+list(GET rows 1 centre)
+string(REPLACE "," ";" centre "${centre}")
+list(GET centre 3 er)
+if (er LESS 1 OR er GREATER 30)
+  message(FATAL_ERROR "floor-centre irradiance out of range: ${er}")
+endif ()
+file(READ "${WORK}/report.json" report)
+string(JSON method GET "${report}" method)
+string(JSON stop GET "${report}" solution stop)
+if (NOT method STREQUAL "progressive" OR NOT stop STREQUAL "converged")
+  message(FATAL_ERROR "report: method ${method}, stop ${stop}")
+endif ()
+
+# Bad input: exit 2, the array and value named, nothing written.
+expect_exit(2 "${PROGRAM}" solve "${DATA}/room_bad.obj" --output "${WORK}/bad.vtp"
+  --report "${WORK}/bad.json")
+if (NOT last_stderr MATCHES "Reflectance" OR NOT last_stderr MATCHES "1.2")
+  message(FATAL_ERROR "bad reflectance message: ${last_stderr}")
+endif ()
+expect_exit(2 "${PROGRAM}" solve "${DATA}/missing.vtp" --output "${WORK}/bad.vtp")
+expect_exit(2 "${PROGRAM}" solve "${DATA}/room.obj" --method nonsense --output "${WORK}/bad.vtp")
+expect_exit(2 "${PROGRAM}" solve "${DATA}/room.obj" --tolerance -1 --output "${WORK}/bad.vtp")
+file(GLOB leftovers "${WORK}/bad*")
+if (leftovers)
+  message(FATAL_ERROR "bad input left files: ${leftovers}")
+endif ()

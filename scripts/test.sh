@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Builds and runs every test (unit, image regression, command line) under Xvfb.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+bash "$root/scripts/build.sh"
+build="${RADIOSITY_BUILD_DIR:-$root/build}"
+cd "$build"
+xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j "${RADIOSITY_JOBS:-$(nproc)}" "$@"
