@@ -83,7 +83,8 @@ bool AppendDataSet(vtkDataSet* ds, const std::string& name, radiosity::Scene& sc
   polys->SetPoints(pd->GetPoints());
   polys->SetPolys(pd->GetPolys());
   vtkCellData* in = pd->GetCellData();
-  for (const char* array : { "Reflectance", "Emission", "Specular", "Shininess", "TwoSided" })
+  for (const char* array :
+    { "Reflectance", "Emission", "Specular", "Shininess", "TwoSided", "ObjectId" })
   {
     if (vtkDataArray* a = in->GetArray(array))
     {
@@ -192,6 +193,36 @@ bool AppendDataSet(vtkDataSet* ds, const std::string& name, radiosity::Scene& sc
       object.ObjectIds.push_back(0);
       object.SourceCells.push_back(source);
     }
+  }
+  // A polydata carrying `ObjectId` (as vtkCornellBoxSource writes) holds
+  // several objects: keep them apart, with their `ObjectNames` when given.
+  vtkDataArray* objectIds = cd->GetArray("ObjectId");
+  if (objectIds && objectIds->GetNumberOfComponents() == 1)
+  {
+    auto* names = vtkStringArray::SafeDownCast(pd->GetFieldData()->GetAbstractArray("ObjectNames"));
+    int maxId = 0;
+    std::vector<int> ids;
+    ids.reserve(object.Triangles.size());
+    vtkIdType cell = 0;
+    for (cells->InitTraversal(); cells->GetNextCell(npts, pts); ++cell)
+    {
+      if (npts != 3)
+      {
+        continue;
+      }
+      const int id = std::max(0, static_cast<int>(objectIds->GetComponent(cell, 0)));
+      const bool both = twoSided && twoSided->GetComponent(cell, 0) != 0;
+      ids.insert(ids.end(), both ? 2 : 1, id);
+      maxId = std::max(maxId, id);
+    }
+    object.ObjectNames.clear();
+    for (int i = 0; i <= maxId; ++i)
+    {
+      object.ObjectNames.push_back(names && i < names->GetNumberOfValues()
+          ? names->GetValue(i)
+          : name + " object " + std::to_string(i));
+    }
+    object.ObjectIds = ids;
   }
   radiosity::AppendScene(scene, object);
   return true;

@@ -170,16 +170,21 @@ bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shoote
     factors[k] *= vis[k];
   }
   // Shooter-side form factor for the energy balance: an independent
-  // discretisation of the same transfer, always exact (the balance of a
-  // closed room amplifies any form factor error by 1 / (1 - rho)).
-  // Integrated over the shooter with the same degree-2 rule as the receivers.
+  // discretisation of the same transfer (the shooter's points looking at the
+  // receiving element), integrated over the shooter with the same degree-2
+  // rule and the same choice of kernel as the receivers.
   if (vis[3] > 0.0)
   {
-    double f = 0.75 * PointToPolygonFormFactor(s.Centroid, s.Normal, corners, 3);
+    const auto pointToReceiver = [&](const Vec3& q)
+    {
+      return ApparentSize(q, r.Centroid, r.Area) < this->Settings.FormFactorTolerance
+        ? DiscFormFactor(q, s.Normal, r.Centroid, r.Normal, r.Area)
+        : PointToPolygonFormFactor(q, s.Normal, corners, 3);
+    };
+    double f = 0.75 * pointToReceiver(s.Centroid);
     for (int k = 0; k < 3; ++k)
     {
-      const Vec3 q = shooterPoly[k] + inset * (s.Centroid - shooterPoly[k]);
-      f += PointToPolygonFormFactor(q, s.Normal, corners, 3) / 12.0;
+      f += pointToReceiver(shooterPoly[k] + inset * (s.Centroid - shooterPoly[k])) / 12.0;
     }
     counts.ShooterSideFormFactor = vis[3] * f;
   }
