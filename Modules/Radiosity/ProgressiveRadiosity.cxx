@@ -67,9 +67,17 @@ ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene, const Progressive
   {
     level = static_cast<std::uint16_t>(level + std::max(0, options.MaxSubdivisionLevels));
   }
+  double rhoArea = 0.0, area = 0.0;
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    rhoArea += MaxComponent(scene.Materials[t].Reflectance) * scene.Area(t);
+    area += scene.Area(t);
+  }
+  this->DiscTolerance = options.FormFactorTolerance * (1.0 - rhoArea / std::max(area, 1e-300));
   const auto& shooters = this->Elements->Shooters();
   this->ShooterSlot.assign(this->Elements->Elements().size(), 0);
   this->ShotTotal.assign(shooters.size(), RGB(0.0));
+  this->EscapeFraction.assign(shooters.size(), -1.0);
   for (std::size_t i = 0; i < shooters.size(); ++i)
   {
     const std::uint32_t n = shooters[i];
@@ -90,7 +98,8 @@ struct ProgressiveRadiosity::TransferScratch
 };
 
 bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shooter,
-  TransferScratch& scratch, std::array<double, 4>& factors, ShotResult& counts) const
+  TransferScratch& scratch, std::array<double, 4>& factors, ShotResult& counts,
+  bool shooterSide) const
 {
   const ElementMesh& mesh = *this->Elements;
   const Element& r = mesh[receiver];
@@ -157,7 +166,7 @@ bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shoote
       factors[k] = 0.0;
       continue;
     }
-    if (ApparentSize(samples[k], s.Centroid, s.Area) < this->Settings.FormFactorTolerance)
+    if (ApparentSize(samples[k], s.Centroid, s.Area) < this->DiscTolerance)
     {
       factors[k] = DiscFormFactor(samples[k], r.Normal, s.Centroid, s.Normal, s.Area);
       ++counts.Disc;
@@ -173,11 +182,11 @@ bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shoote
   // discretisation of the same transfer (the shooter's points looking at the
   // receiving element), integrated over the shooter with the same degree-2
   // rule and the same choice of kernel as the receivers.
-  if (vis[3] > 0.0)
+  if (shooterSide && vis[3] > 0.0)
   {
     const auto pointToReceiver = [&](const Vec3& q)
     {
-      return ApparentSize(q, r.Centroid, r.Area) < this->Settings.FormFactorTolerance
+      return ApparentSize(q, r.Centroid, r.Area) < this->DiscTolerance
         ? DiscFormFactor(q, s.Normal, r.Centroid, r.Normal, r.Area)
         : PointToPolygonFormFactor(q, s.Normal, corners, 3);
     };
@@ -206,6 +215,10 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
     (mesh[e].ShooterNode == shooter ? own : pending).push_back(e);
   }
   std::vector<unsigned char> fresh(pending.size(), 0); // children of this shot's splits
+  // The fraction of a shooter's power that leaves the scene depends on
+  // geometry only: it is integrated at the shooter's first shot and reused.
+  double& escapeFraction = this->EscapeFraction[this->ShooterSlot[shooter]];
+  const bool balanceNeeded = escapeFraction < 0.0;
 
   std::vector<ShotResult> results;
   double shooterSide = 0.0; // children of split receivers join it in later passes
@@ -233,7 +246,7 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
             out.History = ElementSamples();
             for (std::uint32_t n : this->ActiveShooters)
             {
-              if (mesh[e].ShooterNode == n || !this->Transfer(e, n, scratch, f, ignored))
+              if (mesh[e].ShooterNode == n || !this->Transfer(e, n, scratch, f, ignored, false))
               {
                 continue;
               }
@@ -246,7 +259,7 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
             }
             total = out.History;
           }
-          if (!this->Transfer(e, shooter, scratch, f, out))
+          if (!this->Transfer(e, shooter, scratch, f, out, balanceNeeded))
           {
             out.FacingAway = true;
             continue;
@@ -323,7 +336,11 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
     pending.swap(next);
     fresh.assign(pending.size(), 1);
   }
-  this->Escaped += Mean(shot) * shooterArea * (1.0 - shooterSide);
+  if (balanceNeeded)
+  {
+    escapeFraction = 1.0 - shooterSide;
+  }
+  this->Escaped += Mean(shot) * shooterArea * escapeFraction;
   // The shooter's leaves keep what was shot in advance, as a negative residual.
   const RGB left = mesh[shooter].Unshot;
   for (std::uint32_t e : own)

@@ -35,7 +35,9 @@ struct ProgressiveOptions
   double InitialElementSize = 1.0 / 16.0; ///< longest initial receiver edge / scene diagonal
   int MaxSubdivisionLevels = 2;    ///< adaptive levels below the initial mesh
   double SubdivisionThreshold = 0.1;  ///< allowed departure from linear, relative
-  double FormFactorTolerance = 2e-3;  ///< disc approximation when A/(pi r^2) is below
+  /// Disc approximation where A/(pi r^2) is below this times (1 - mean
+  /// reflectance): interreflection amplifies form factor errors by 1/(1 - rho).
+  double FormFactorTolerance = 2e-3;
   int VisibilitySamples = 16;      ///< rays per receiver sample from emitters: 1, 4 or 16
   int IndirectVisibilitySamples = 1; ///< rays per receiver sample from reflectors
 };
@@ -53,6 +55,8 @@ public:
   const SceneAnalysis& Analysis() const { return this->SceneInfo; }
   const Visibility& GetVisibility() const { return *this->Rays; }
   const ProgressiveOptions& Options() const { return this->Settings; }
+  /// The apparent size below which the disc approximation is used.
+  double GetDiscTolerance() const { return this->DiscTolerance; }
 
 private:
   struct ShotResult;
@@ -61,7 +65,7 @@ private:
   /// Form factors times visibility from the receiver's four samples to the
   /// shooter node; false when the pair faces away (no transfer).
   bool Transfer(std::uint32_t receiver, std::uint32_t shooter, TransferScratch& scratch,
-    std::array<double, 4>& factors, ShotResult& counts) const;
+    std::array<double, 4>& factors, ShotResult& counts, bool shooterSide) const;
 
   const Scene& SourceScene;
   ProgressiveOptions Settings;
@@ -72,7 +76,9 @@ private:
   std::vector<std::uint32_t> ShooterSlot; ///< element -> index among the shooters
   std::vector<std::vector<Vec3>> Targets; ///< visibility sample points per shooter
   std::vector<RGB> ShotTotal;             ///< radiosity shot so far per shooter
+  std::vector<double> EscapeFraction;     ///< per shooter, negative until first shot
   std::vector<std::uint32_t> ActiveShooters; ///< shooters that have shot
+  double DiscTolerance = 0.0; ///< FormFactorTolerance scaled by (1 - mean reflectance)
   double Absorbed = 0.0;
   double Escaped = 0.0;
 };
