@@ -1,4 +1,5 @@
 #include "vtkRadiosityConvergenceChart.h"
+#include "vtkRadiosityWindowPNG.h"
 
 #include "vtkAxis.h"
 #include "vtkChartLegend.h"
@@ -7,10 +8,8 @@
 #include "vtkContextView.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkErrorCode.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPNGWriter.h"
 #include "vtkPen.h"
 #include "vtkPlot.h"
 #include "vtkRenderWindow.h"
@@ -18,7 +17,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkTextProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -262,19 +260,10 @@ bool vtkRadiosityConvergenceChart::WritePNG(const char* fileName, int width, int
   {
     return false;
   }
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->GetRenderWindow());
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(fileName);
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != vtkErrorCode::NoError)
+  std::string error;
+  if (!vtkRadiosityWriteWindowPNG(this->GetRenderWindow(), fileName, error))
   {
-    vtkErrorMacro("Could not write PNG image '"
-      << fileName << "': " << vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()));
+    vtkErrorMacro(<< error);
     return false;
   }
   return true;

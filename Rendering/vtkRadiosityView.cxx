@@ -1,16 +1,15 @@
 #include "vtkRadiosityView.h"
+#include "vtkRadiosityWindowPNG.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkErrorCode.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -19,7 +18,6 @@
 #include "vtkShaderProperty.h"
 #include "vtkToneMappingPass.h"
 #include "vtkUniforms.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
 
@@ -285,19 +283,10 @@ bool vtkRadiosityView::WritePNG(const char* fileName)
   {
     return false;
   }
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->GetRenderWindow());
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(fileName);
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != vtkErrorCode::NoError)
+  std::string error;
+  if (!vtkRadiosityWriteWindowPNG(this->GetRenderWindow(), fileName, error))
   {
-    vtkErrorMacro("Could not write PNG image '"
-      << fileName << "': " << vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()));
+    vtkErrorMacro(<< error);
     return false;
   }
   return true;

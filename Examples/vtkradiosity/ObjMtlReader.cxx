@@ -1,5 +1,7 @@
 #include "ObjMtlReader.h"
 
+#include "TextTrim.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -95,16 +97,6 @@ std::vector<std::string> Split(const std::string& text)
   return tokens;
 }
 
-std::string Trim(const std::string& text)
-{
-  const auto begin = text.find_first_not_of(" \t");
-  if (begin == std::string::npos)
-  {
-    return {};
-  }
-  const auto end = text.find_last_not_of(" \t");
-  return text.substr(begin, end - begin + 1);
-}
 
 // Everything after the keyword: names (materials, objects, files) may contain spaces.
 std::string RestOfLine(const std::string& line, const std::string& keyword)

@@ -1,5 +1,7 @@
 #include "ProbeIO.h"
 
+#include "TextTrim.h"
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -15,16 +17,6 @@ namespace cli
 {
 namespace
 {
-std::string Trim(const std::string& text)
-{
-  const auto begin = text.find_first_not_of(" \t\r");
-  if (begin == std::string::npos)
-  {
-    return {};
-  }
-  const auto end = text.find_last_not_of(" \t\r");
-  return text.substr(begin, end - begin + 1);
-}
 
 std::vector<std::string> SplitFields(const std::string& line)
 {
