@@ -139,7 +139,7 @@ int vtkRadiosityFilter::RequestData(
   this->UpdateProgress(1.0);
   if (this->Statistics.Stop == radiosity::StopReason::Aborted)
   {
-    vtkWarningMacro(<< "aborted: the output holds the solution so far");
+    vtkWarningMacro(<< "aborted after " << this->Statistics.Iterations << " iterations");
   }
   this->Solution = std::make_unique<radiosity::SolutionMesh>(radiosity::ExtractSolution(solver.Mesh()));
   output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(*this->Solution, this->LastScene));

@@ -11,7 +11,8 @@
  * quadtrees, Coombe et al. 2004 on the CPU); Auto picks the best available.
  * Bad input gives an error naming the array, cell or point and an empty
  * output (GetLastError() keeps the message). Progress events during the solve;
- * AbortExecute stops it with the solution so far.
+ * AbortExecute stops it (VTK then empties the output; the solution so far
+ * stays available through GetSolution()).
  */
 #ifndef vtkRadiosityFilter_h
 #define vtkRadiosityFilter_h

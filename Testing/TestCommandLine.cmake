@@ -44,6 +44,24 @@ if (NOT method STREQUAL "progressive" OR NOT stop STREQUAL "converged")
   message(FATAL_ERROR "report: method ${method}, stop ${stop}")
 endif ()
 
+# The written solution is itself a valid scene (its cell arrays carry the
+# materials): solving it again works.
+expect_exit(0 "${PROGRAM}" solve "${WORK}/room.vtp" --tolerance 1e-2 --output "${WORK}/again.vtp")
+if (NOT EXISTS "${WORK}/again.vtp")
+  message(FATAL_ERROR "missing again.vtp")
+endif ()
+# STL carries no materials: default reflectance and no emitter, both warned
+# about; the zero solution is returned at once.
+expect_exit(0 "${PROGRAM}" solve "${DATA}/triangle.stl" --report "${WORK}/stl.json")
+if (NOT last_stderr MATCHES "Reflectance" OR NOT last_stderr MATCHES "no emitter")
+  message(FATAL_ERROR "STL warnings missing: ${last_stderr}")
+endif ()
+file(READ "${WORK}/stl.json" stl)
+string(JSON stop GET "${stl}" solution stop)
+if (NOT stop STREQUAL "no emitters")
+  message(FATAL_ERROR "STL without emitters: stop ${stop}")
+endif ()
+
 # Bad input: exit 2, the array and value named, nothing written.
 expect_exit(2 "${PROGRAM}" solve "${DATA}/room_bad.obj" --output "${WORK}/bad.vtp"
   --report "${WORK}/bad.json")
