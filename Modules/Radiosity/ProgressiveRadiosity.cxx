@@ -19,6 +19,8 @@ namespace radiosity
 {
 namespace
 {
+// Corner samples sit this fraction of the way towards their element's centre.
+constexpr double CornerInset = 1e-6;
 using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point since)
 {
@@ -74,10 +76,17 @@ ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene, const Progressive
     area += scene.Area(t);
   }
   this->DiscTolerance = options.FormFactorTolerance * (1.0 - rhoArea / std::max(area, 1e-300));
+  this->PlaneTolerance = 1e-9 * this->SceneInfo.Diagonal;
   const auto& shooters = this->Elements->Shooters();
   this->ShooterSlot.assign(this->Elements->Elements().size(), 0);
   this->ShotTotal.assign(shooters.size(), RGB(0.0));
   this->EscapeFraction.assign(shooters.size(), -1.0);
+  for (std::uint32_t e : this->Elements->Leaves())
+  {
+    this->RegisterCorners(e);
+  }
+  this->SampleFactor.resize(this->Samples.size());
+  this->SampleStamp.resize(this->Samples.size(), 0);
   for (std::size_t i = 0; i < shooters.size(); ++i)
   {
     const std::uint32_t n = shooters[i];
@@ -97,9 +106,150 @@ struct ProgressiveRadiosity::TransferScratch
   std::vector<unsigned char> Visible;
 };
 
+bool ProgressiveRadiosity::FacesShooter(std::uint32_t receiver, std::uint32_t shooter) const
+{
+  // Leave out pairs with no transfer: receiver wholly behind the shooter's
+  // plane, or shooter wholly behind the receiver's.
+  const ElementMesh& mesh = *this->Elements;
+  const Element& r = mesh[receiver];
+  const Element& s = mesh[shooter];
+  bool anyFront = false, anyAbove = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    anyFront = anyFront || glm::dot(mesh.Corner(receiver, k) - mesh.Corner(shooter, 0), s.Normal) > 0;
+    anyAbove = anyAbove || glm::dot(mesh.Corner(shooter, k) - mesh.Corner(receiver, 0), r.Normal) > 0;
+  }
+  return anyFront && anyAbove;
+}
+
+void ProgressiveRadiosity::RegisterCorners(std::uint32_t e)
+{
+  const ElementMesh& mesh = *this->Elements;
+  const Element& el = mesh[e];
+  if (this->CornerSamples.size() <= e)
+  {
+    this->CornerSamples.resize(mesh.Elements().size());
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    // Shared by the leaves of one input triangle that meet at this vertex.
+    const std::uint64_t key = (static_cast<std::uint64_t>(el.V[k]) << 32) | el.Source;
+    auto found = this->SampleIndex.find(key);
+    if (found == this->SampleIndex.end())
+    {
+      // The limit from inside the element: a corner on another surface's
+      // plane (a room's edge, a contact) would otherwise see that surface
+      // edge-on and miss its half of the hemisphere.
+      const Vec3 corner = mesh.Corner(e, k);
+      SharedSample sample;
+      sample.Point = corner + CornerInset * (el.Centroid - corner);
+      sample.RayOrigin = corner + 1e-3 * (el.Centroid - corner) + this->Rays->Offset() * el.Normal;
+      sample.Normal = el.Normal;
+      found = this->SampleIndex.emplace(key, static_cast<std::uint32_t>(this->Samples.size())).first;
+      this->Samples.push_back(sample);
+    }
+    this->CornerSamples[e][k] = found->second;
+  }
+}
+
+double ProgressiveRadiosity::PointTransfer(const Vec3& p, const Vec3& n, const Vec3& origin,
+  std::uint32_t shooter, TransferScratch& scratch, ShotResult& counts, double* visibility) const
+{
+  const ElementMesh& mesh = *this->Elements;
+  const Element& s = mesh[shooter];
+  double vis = 1.0;
+  if (!this->Rays->Empty())
+  {
+    const std::vector<Vec3>& targets = this->Targets[this->ShooterSlot[shooter]];
+    scratch.From.assign(targets.size(), origin);
+    scratch.Visible.resize(targets.size());
+    this->Rays->TestSegments(
+      scratch.From.data(), targets.data(), targets.size(), scratch.Visible.data());
+    int count = 0;
+    for (unsigned char v : scratch.Visible)
+    {
+      count += v;
+    }
+    vis = static_cast<double>(count) / static_cast<double>(targets.size());
+  }
+  if (visibility)
+  {
+    *visibility = vis;
+  }
+  if (vis <= 0.0)
+  {
+    return 0.0;
+  }
+  if (ApparentSize(p, s.Centroid, s.Area) < this->DiscTolerance)
+  {
+    ++counts.Disc;
+    return vis * DiscFormFactor(p, n, s.Centroid, s.Normal, s.Area);
+  }
+  ++counts.Analytic;
+  const Vec3 poly[3] = { mesh.Corner(shooter, 0), mesh.Corner(shooter, 1), mesh.Corner(shooter, 2) };
+  return vis * PointToPolygonFormFactor(p, n, poly, 3);
+}
+
+void ProgressiveRadiosity::SampleTransfers(
+  const std::uint32_t* ids, std::size_t count, std::uint32_t shooter, ShotResult& counts)
+{
+  const ElementMesh& mesh = *this->Elements;
+  const Element& s = mesh[shooter];
+  const Vec3 poly[3] = { mesh.Corner(shooter, 0), mesh.Corner(shooter, 1), mesh.Corner(shooter, 2) };
+  // One batch of visibility rays for all the samples of this range.
+  std::vector<unsigned char> visible;
+  const std::vector<Vec3>& targets = this->Targets[this->ShooterSlot[shooter]];
+  const std::size_t nv = targets.size();
+  if (!this->Rays->Empty())
+  {
+    std::vector<Vec3> from, to;
+    from.reserve(count * nv);
+    to.reserve(count * nv);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      for (const Vec3& q : targets)
+      {
+        from.push_back(this->Samples[ids[i]].RayOrigin);
+        to.push_back(q);
+      }
+    }
+    visible.resize(from.size());
+    this->Rays->TestSegments(from.data(), to.data(), from.size(), visible.data());
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const SharedSample& sample = this->Samples[ids[i]];
+    double vis = 1.0;
+    if (!visible.empty())
+    {
+      int seen = 0;
+      for (std::size_t j = 0; j < nv; ++j)
+      {
+        seen += visible[i * nv + j];
+      }
+      vis = static_cast<double>(seen) / static_cast<double>(nv);
+    }
+    double f = 0.0;
+    if (vis > 0.0)
+    {
+      if (ApparentSize(sample.Point, s.Centroid, s.Area) < this->DiscTolerance)
+      {
+        ++counts.Disc;
+        f = DiscFormFactor(sample.Point, sample.Normal, s.Centroid, s.Normal, s.Area);
+      }
+      else
+      {
+        ++counts.Analytic;
+        f = PointToPolygonFormFactor(sample.Point, sample.Normal, poly, 3);
+      }
+    }
+    this->SampleFactor[ids[i]] = vis * f;
+  }
+}
+
 bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shooter,
   TransferScratch& scratch, std::array<double, 4>& factors, ShotResult& counts,
-  bool shooterSide) const
+  bool shooterSide, const double* cornerFactors) const
 {
   const ElementMesh& mesh = *this->Elements;
   const Element& r = mesh[receiver];
@@ -108,81 +258,35 @@ bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shoote
     mesh.Corner(receiver, 2) };
   const Vec3 shooterPoly[3] = { mesh.Corner(shooter, 0), mesh.Corner(shooter, 1),
     mesh.Corner(shooter, 2) };
-  // Leave out pairs with no transfer: receiver wholly behind the shooter's
-  // plane, or shooter wholly behind the receiver's.
-  bool anyFront = false, anyAbove = false;
-  for (int k = 0; k < 3; ++k)
-  {
-    anyFront = anyFront || glm::dot(corners[k] - shooterPoly[0], s.Normal) > 0;
-    anyAbove = anyAbove || glm::dot(shooterPoly[k] - corners[0], r.Normal) > 0;
-  }
-  if (!anyFront || !anyAbove)
+  if (!this->FacesShooter(receiver, shooter))
   {
     factors = { 0, 0, 0, 0 };
     return false;
   }
-  // Corner samples are the limits from inside the element: a corner on
-  // another surface's plane (a room's edge, a contact) would otherwise see
-  // that surface edge-on and miss its half of the hemisphere.
-  constexpr double inset = 1e-6;
-  const Vec3 samples[4] = { corners[0] + inset * (r.Centroid - corners[0]),
-    corners[1] + inset * (r.Centroid - corners[1]), corners[2] + inset * (r.Centroid - corners[2]),
-    r.Centroid };
-  double vis[4] = { 1, 1, 1, 1 };
-  if (!this->Rays->Empty())
+  const Vec3 centreOrigin = r.Centroid + this->Rays->Offset() * r.Normal;
+  double visCentre = 0.0;
+  factors[3] =
+    this->PointTransfer(r.Centroid, r.Normal, centreOrigin, shooter, scratch, counts, &visCentre);
+  for (int k = 0; k < 3; ++k)
   {
-    const std::vector<Vec3>& targets = this->Targets[this->ShooterSlot[shooter]];
-    const std::size_t nv = targets.size();
-    const double eps = this->Rays->Offset();
-    scratch.From.clear();
-    scratch.To.clear();
-    for (const Vec3& p : samples)
+    // A shared value holds unless the corner lies in the shooter's plane:
+    // there the form factor jumps (a receiver touching the shooter) and each
+    // element needs its own limit from inside.
+    if (cornerFactors &&
+      std::fabs(glm::dot(corners[k] - shooterPoly[0], s.Normal)) > this->PlaneTolerance)
     {
-      // Start inside the element and off its plane.
-      const Vec3 origin = p + 1e-3 * (r.Centroid - p) + eps * r.Normal;
-      for (const Vec3& q : targets)
-      {
-        scratch.From.push_back(origin);
-        scratch.To.push_back(q);
-      }
-    }
-    scratch.Visible.resize(scratch.From.size());
-    this->Rays->TestSegments(
-      scratch.From.data(), scratch.To.data(), scratch.From.size(), scratch.Visible.data());
-    for (int k = 0; k < 4; ++k)
-    {
-      int count = 0;
-      for (std::size_t j = 0; j < nv; ++j)
-      {
-        count += scratch.Visible[k * nv + j];
-      }
-      vis[k] = static_cast<double>(count) / static_cast<double>(nv);
-    }
-  }
-  for (int k = 0; k < 4; ++k)
-  {
-    if (vis[k] <= 0.0)
-    {
-      factors[k] = 0.0;
+      factors[k] = cornerFactors[k];
       continue;
     }
-    if (ApparentSize(samples[k], s.Centroid, s.Area) < this->DiscTolerance)
-    {
-      factors[k] = DiscFormFactor(samples[k], r.Normal, s.Centroid, s.Normal, s.Area);
-      ++counts.Disc;
-    }
-    else
-    {
-      factors[k] = PointToPolygonFormFactor(samples[k], r.Normal, shooterPoly, 3);
-      ++counts.Analytic;
-    }
-    factors[k] *= vis[k];
+    const Vec3 p = corners[k] + CornerInset * (r.Centroid - corners[k]);
+    const Vec3 origin = corners[k] + 1e-3 * (r.Centroid - corners[k]) + this->Rays->Offset() * r.Normal;
+    factors[k] = this->PointTransfer(p, r.Normal, origin, shooter, scratch, counts);
   }
   // Shooter-side form factor for the energy balance: an independent
   // discretisation of the same transfer (the shooter's points looking at the
   // receiving element), integrated over the shooter with the same degree-2
   // rule and the same choice of kernel as the receivers.
-  if (shooterSide && vis[3] > 0.0)
+  if (shooterSide && visCentre > 0.0)
   {
     const auto pointToReceiver = [&](const Vec3& q)
     {
@@ -193,9 +297,9 @@ bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shoote
     double f = 0.75 * pointToReceiver(s.Centroid);
     for (int k = 0; k < 3; ++k)
     {
-      f += pointToReceiver(shooterPoly[k] + inset * (s.Centroid - shooterPoly[k])) / 12.0;
+      f += pointToReceiver(shooterPoly[k] + CornerInset * (s.Centroid - shooterPoly[k])) / 12.0;
     }
-    counts.ShooterSideFormFactor = vis[3] * f;
+    counts.ShooterSideFormFactor = visCentre * f;
   }
   return true;
 }
@@ -222,8 +326,42 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
 
   std::vector<ShotResult> results;
   double shooterSide = 0.0; // children of split receivers join it in later passes
+  std::vector<std::uint32_t> needed;
+  std::vector<ShotResult> sampleCounts;
   while (!pending.empty())
   {
+    // Corner samples are shared between the leaves that meet at a vertex:
+    // evaluate each needed one once for this shot.
+    ++this->Stamp;
+    needed.clear();
+    for (std::uint32_t e : pending)
+    {
+      if (!this->FacesShooter(e, shooter))
+      {
+        continue;
+      }
+      for (std::uint32_t id : this->CornerSamples[e])
+      {
+        if (this->SampleStamp[id] != this->Stamp)
+        {
+          this->SampleStamp[id] = this->Stamp;
+          needed.push_back(id);
+        }
+      }
+    }
+    sampleCounts.assign(needed.size(), ShotResult());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, needed.size(), 32),
+      [&](const tbb::blocked_range<std::size_t>& range)
+      {
+        this->SampleTransfers(needed.data() + range.begin(), range.size(), shooter,
+          sampleCounts[range.begin()]);
+      });
+    for (const ShotResult& c : sampleCounts)
+    {
+      stats.AnalyticFormFactors += c.Analytic;
+      stats.DiscFormFactors += c.Disc;
+    }
+
     results.assign(pending.size(), ShotResult());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 16),
       [&](const tbb::blocked_range<std::size_t>& range)
@@ -259,7 +397,10 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
             }
             total = out.History;
           }
-          if (!this->Transfer(e, shooter, scratch, f, out, balanceNeeded))
+          const auto& ids = this->CornerSamples[e];
+          const double corners[3] = { this->SampleFactor[ids[0]], this->SampleFactor[ids[1]],
+            this->SampleFactor[ids[2]] };
+          if (!this->Transfer(e, shooter, scratch, f, out, balanceNeeded, corners))
           {
             out.FacingAway = true;
             continue;
@@ -322,6 +463,7 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
         ++stats.Subdivisions;
         for (std::uint32_t c = 0; c < 4; ++c)
         {
+          this->RegisterCorners(first + c);
           next.push_back(first + c);
         }
         continue;
@@ -335,6 +477,8 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
     }
     pending.swap(next);
     fresh.assign(pending.size(), 1);
+    this->SampleFactor.resize(this->Samples.size());
+    this->SampleStamp.resize(this->Samples.size(), 0);
   }
   if (balanceNeeded)
   {

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <memory>
+#include <unordered_map>
 
 namespace radiosity
 {
@@ -64,8 +65,24 @@ private:
   void Shoot(std::uint32_t shooter, const RGB& shot, SolverStatistics& stats);
   /// Form factors times visibility from the receiver's four samples to the
   /// shooter node; false when the pair faces away (no transfer).
+  /// `cornerFactors`, when given, are the three corners' values already computed.
   bool Transfer(std::uint32_t receiver, std::uint32_t shooter, TransferScratch& scratch,
-    std::array<double, 4>& factors, ShotResult& counts, bool shooterSide) const;
+    std::array<double, 4>& factors, ShotResult& counts, bool shooterSide,
+    const double* cornerFactors = nullptr) const;
+  /// Form factor times visibility from one receiving point to a shooter node.
+  double PointTransfer(const Vec3& p, const Vec3& n, const Vec3& rayOrigin, std::uint32_t shooter,
+    TransferScratch& scratch, ShotResult& counts, double* visibility = nullptr) const;
+  bool FacesShooter(std::uint32_t receiver, std::uint32_t shooter) const;
+  /// Evaluates the shared corner samples `ids` for one shot (one ray batch).
+  void SampleTransfers(
+    const std::uint32_t* ids, std::size_t count, std::uint32_t shooter, ShotResult& counts);
+  void RegisterCorners(std::uint32_t leaf);
+
+  /// A corner sample shared by the leaves of one input triangle meeting at a vertex.
+  struct SharedSample
+  {
+    Vec3 Point, RayOrigin, Normal;
+  };
 
   const Scene& SourceScene;
   ProgressiveOptions Settings;
@@ -77,8 +94,15 @@ private:
   std::vector<std::vector<Vec3>> Targets; ///< visibility sample points per shooter
   std::vector<RGB> ShotTotal;             ///< radiosity shot so far per shooter
   std::vector<double> EscapeFraction;     ///< per shooter, negative until first shot
+  std::vector<SharedSample> Samples;
+  std::unordered_map<std::uint64_t, std::uint32_t> SampleIndex; ///< (vertex, input triangle)
+  std::vector<std::array<std::uint32_t, 3>> CornerSamples;     ///< per element
+  std::vector<double> SampleFactor;     ///< this shot's value per sample
+  std::vector<std::uint32_t> SampleStamp; ///< pass in which a sample was last evaluated
+  std::uint32_t Stamp = 0;
   std::vector<std::uint32_t> ActiveShooters; ///< shooters that have shot
   double DiscTolerance = 0.0; ///< FormFactorTolerance scaled by (1 - mean reflectance)
+  double PlaneTolerance = 0.0; ///< distance below which a point lies in a plane
   double Absorbed = 0.0;
   double Escaped = 0.0;
 };

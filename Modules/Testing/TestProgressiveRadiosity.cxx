@@ -136,7 +136,10 @@ TEST(ProgressiveRadiosity, ScaleInvariance)
     }
     results.push_back(weighted / area);
   }
-  EXPECT_NEAR(results[0], results[1], 1e-6 * results[0]);
+  // Embree's single-precision rays round differently at the two scales, so a
+  // few grazing visibility rays may flip: 1e-5 of the mean radiosity. A self-
+  // intersection offset that did not scale would show errors of order 1.
+  EXPECT_NEAR(results[0], results[1], 1e-5 * results[0]);
 }
 
 TEST(ProgressiveRadiosity, NoEmittersReturnsZeroAtOnce)
