@@ -113,6 +113,8 @@ int vtkRadiosityFilter::RequestData(
   options.FormFactorTolerance = this->FormFactorTolerance;
   options.VisibilitySamples = this->VisibilitySamples;
   options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
+  options.ErrorProbes = this->ErrorProbes;
+  options.ErrorReference = this->ErrorReference;
   radiosity::ProgressiveRadiosity solver(this->LastScene, options);
   this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
 

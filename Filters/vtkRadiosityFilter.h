@@ -20,6 +20,7 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "RadiosityFiltersModule.h" // for export macro
 
+#include "Radiosity/ProbeEvaluator.h" // for radiosity::Probe
 #include "Radiosity/Scene.h"       // for radiosity::SceneCleanupReport
 #include "Radiosity/SolverTypes.h" // for radiosity::SolverStatistics
 
@@ -141,6 +142,19 @@ public:
   const radiosity::SolutionMesh* GetSolution() const { return this->Solution.get(); }
   double GetPreprocessSeconds() const { return this->PreprocessSeconds; }
 
+  /**
+   * Reference irradiance at probe points: every row of the convergence
+   * history then carries the solution's RMS and maximum relative error there
+   * (error against run time). Empty vectors switch it off.
+   */
+  void SetErrorReference(
+    const std::vector<radiosity::Probe>& probes, const std::vector<radiosity::RGB>& irradiance)
+  {
+    this->ErrorProbes = probes;
+    this->ErrorReference = irradiance;
+    this->Modified();
+  }
+
   /// Called with the solver's phase, iteration and residual besides the
   /// progress events (for terminal progress bars); returning false aborts.
   void SetStatusCallback(radiosity::ProgressCallback callback) { this->StatusCallback = callback; }
@@ -180,6 +194,8 @@ private:
   std::unique_ptr<radiosity::SolutionMesh> Solution;
   double PreprocessSeconds = 0.0;
   radiosity::ProgressCallback StatusCallback;
+  std::vector<radiosity::Probe> ErrorProbes;
+  std::vector<radiosity::RGB> ErrorReference;
 };
 
 #endif

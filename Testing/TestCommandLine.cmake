@@ -62,6 +62,39 @@ if (NOT stop STREQUAL "no emitters")
   message(FATAL_ERROR "STL without emitters: stop ${stop}")
 endif ()
 
+# Error against run time: the exact penumbra scene against its analytic
+# reference; then the values written by that run, read back as a reference
+# file, give zero error (the same deterministic solution).
+expect_exit(0 "${PROGRAM}" solve shadow --probes "${DATA}/shadow_probes.csv"
+  --reference analytic --probe-output "${WORK}/shadow_values.csv" --report "${WORK}/shadow.json"
+  --history "${WORK}/shadow_history.csv")
+file(READ "${WORK}/shadow.json" shadow)
+string(JSON kind GET "${shadow}" error reference)
+string(JSON rms GET "${shadow}" error rms_relative_error)
+string(JSON tracked GET "${shadow}" error probes_on_a_surface)
+if (NOT kind STREQUAL "analytic: direct with convex blocker" OR NOT tracked EQUAL 31 OR rms GREATER 0.3)
+  message(FATAL_ERROR "shadow reference: ${kind}, rms ${rms}, tracked ${tracked}")
+endif ()
+file(STRINGS "${WORK}/shadow_history.csv" history LIMIT_COUNT 2)
+list(GET history 1 first)
+if (first MATCHES "nan")
+  message(FATAL_ERROR "the history has no error figures: ${first}")
+endif ()
+expect_exit(0 "${PROGRAM}" solve shadow --probes "${DATA}/shadow_probes.csv"
+  --reference "${WORK}/shadow_values.csv" --report "${WORK}/shadow_again.json")
+file(READ "${WORK}/shadow_again.json" again)
+string(JSON rms GET "${again}" error probe_output_rms_relative_error)
+if (rms GREATER 1e-12)
+  message(FATAL_ERROR "the run's own values as reference: rms ${rms}")
+endif ()
+expect_exit(2 "${PROGRAM}" solve shadow --probes "${DATA}/room_probes.csv"
+  --reference "${WORK}/shadow_values.csv" --output "${WORK}/bad.vtp")
+expect_exit(2 "${PROGRAM}" solve cornell --probes "${DATA}/room_probes.csv"
+  --reference analytic --output "${WORK}/bad.vtp")
+if (NOT last_stderr MATCHES "no closed form")
+  message(FATAL_ERROR "analytic reference for the Cornell box: ${last_stderr}")
+endif ()
+
 # Bad input: exit 2, the array and value named, nothing written.
 expect_exit(2 "${PROGRAM}" solve "${DATA}/room_bad.obj" --output "${WORK}/bad.vtp"
   --report "${WORK}/bad.json")

@@ -54,22 +54,39 @@ std::string TemporarySibling(const std::string& file)
 }
 } // namespace
 
-bool ReadProbes(const std::string& csv, std::vector<Probe>& probes, std::string& error)
+namespace
 {
-  probes.clear();
+struct CsvRow
+{
+  int Line = 0;
+  std::string Text;
+  double Values[6];
+};
+
+/// Reads a CSV with exactly the header `names` (spaces around fields, a UTF-8
+/// byte order mark and CRLF line ends tolerated) and rows of 6 finite numbers;
+/// blank lines are skipped. `error` names the file, the line and its text.
+bool ReadSixColumns(const std::string& csv, const char* const names[6], const std::string& what,
+  std::vector<CsvRow>& rows, std::string& error)
+{
+  rows.clear();
   std::ifstream in(csv);
+  std::string headerText;
+  for (int i = 0; i < 6; ++i)
+  {
+    headerText += std::string(i ? "," : "") + names[i];
+  }
   if (!in)
   {
-    error = "cannot read probe file '" + csv + "'";
+    error = "cannot read " + what + " file '" + csv + "'";
     return false;
   }
-  static const char* const expected[6] = { "x", "y", "z", "nx", "ny", "nz" };
   std::string line;
   int number = 0;
   bool header = false;
   auto fail = [&](const std::string& reason) {
     error = csv + ":" + std::to_string(number) + ": " + reason + ": '" + Trim(line) + "'";
-    probes.clear();
+    rows.clear();
     return false;
   };
   while (std::getline(in, line))
@@ -89,11 +106,11 @@ bool ReadProbes(const std::string& csv, std::vector<Probe>& probes, std::string&
       bool ok = fields.size() == 6;
       for (std::size_t i = 0; ok && i < 6; ++i)
       {
-        ok = fields[i] == expected[i];
+        ok = fields[i] == names[i];
       }
       if (!ok)
       {
-        return fail("expected the header 'x,y,z,nx,ny,nz'");
+        return fail("expected the header '" + headerText + "'");
       }
       header = true;
       continue;
@@ -102,33 +119,85 @@ bool ReadProbes(const std::string& csv, std::vector<Probe>& probes, std::string&
     {
       return fail("expected 6 values, found " + std::to_string(fields.size()));
     }
-    double v[6];
+    CsvRow row;
+    row.Line = number;
+    row.Text = Trim(line);
     for (int i = 0; i < 6; ++i)
     {
-      if (!ParseFinite(fields[i], v[i]))
+      if (!ParseFinite(fields[i], row.Values[i]))
       {
-        return fail(std::string("column ") + expected[i] + " is not a finite number ('" +
+        return fail(std::string("column ") + names[i] + " is not a finite number ('" +
           fields[i] + "')");
       }
     }
+    rows.push_back(row);
+  }
+  if (!header)
+  {
+    error = csv + ": empty file, expected the header '" + headerText + "'";
+    return false;
+  }
+  return true;
+}
+}
+
+bool ReadProbes(const std::string& csv, std::vector<Probe>& probes, std::string& error)
+{
+  probes.clear();
+  static const char* const names[6] = { "x", "y", "z", "nx", "ny", "nz" };
+  std::vector<CsvRow> rows;
+  if (!ReadSixColumns(csv, names, "probe", rows, error))
+  {
+    return false;
+  }
+  for (const CsvRow& row : rows)
+  {
     Probe probe;
-    probe.Position = Vec3(v[0], v[1], v[2]);
-    const Vec3 normal(v[3], v[4], v[5]);
+    probe.Position = Vec3(row.Values[0], row.Values[1], row.Values[2]);
+    const Vec3 normal(row.Values[3], row.Values[4], row.Values[5]);
     const double length = glm::length(normal);
     // length is finite (each component is), but may underflow to 0 or overflow.
     if (!(length > 0.0) || !std::isfinite(length))
     {
-      return fail("the normal (nx, ny, nz) has zero or unrepresentable length");
+      error = csv + ":" + std::to_string(row.Line) +
+        ": the normal (nx, ny, nz) has zero or unrepresentable length: '" + row.Text + "'";
+      probes.clear();
+      return false;
     }
     probe.Normal = normal / length;
     probes.push_back(probe);
   }
-  if (!header)
+  return true;
+}
+
+bool ReadProbeValues(const std::string& csv, const std::vector<Probe>& probes,
+  std::vector<RGB>& values, std::string& error)
+{
+  values.clear();
+  static const char* const names[6] = { "x", "y", "z", "E_r", "E_g", "E_b" };
+  std::vector<CsvRow> rows;
+  if (!ReadSixColumns(csv, names, "reference", rows, error))
   {
-    number = 0;
-    line.clear();
-    error = csv + ": empty file, expected the header 'x,y,z,nx,ny,nz'";
     return false;
+  }
+  if (rows.size() != probes.size())
+  {
+    error = csv + ": " + std::to_string(rows.size()) + " reference values for " +
+      std::to_string(probes.size()) + " probes";
+    return false;
+  }
+  for (std::size_t i = 0; i < rows.size(); ++i)
+  {
+    const Vec3 at(rows[i].Values[0], rows[i].Values[1], rows[i].Values[2]);
+    const Vec3& p = probes[i].Position;
+    if (glm::length(at - p) > 1e-9 * (1.0 + glm::length(p)))
+    {
+      error = csv + ":" + std::to_string(rows[i].Line) +
+        ": the position does not match probe " + std::to_string(i + 1) + ": '" + rows[i].Text + "'";
+      values.clear();
+      return false;
+    }
+    values.emplace_back(rows[i].Values[3], rows[i].Values[4], rows[i].Values[5]);
   }
   return true;
 }

@@ -22,6 +22,14 @@ namespace cli
 bool ReadProbes(const std::string& csv, std::vector<Probe>& probes, std::string& error);
 
 /**
+ * Reads reference values in the --probe-output format `x,y,z,E_r,E_g,E_b`, one
+ * row per probe, in the order of `probes` and at their positions (else an
+ * error naming the line).
+ */
+bool ReadProbeValues(const std::string& csv, const std::vector<Probe>& probes,
+  std::vector<RGB>& values, std::string& error);
+
+/**
  * Writes `x,y,z,E_r,E_g,E_b`, one row per probe in input order, with 17
  * significant digits (doubles round-trip exactly). Refuses mismatched sizes and
  * non-finite values; written to a temporary file in the same directory and

@@ -3,6 +3,7 @@
 #include "ObjMtlReader.h"
 
 #include "vtkCornellBoxSource.h"
+#include "vtkRadiositySceneConverter.h"
 #include "vtkDataSetReader.h"
 #include "vtkExecutive.h"
 #include "vtkNew.h"
@@ -11,7 +12,11 @@
 #include "vtkSTLReader.h"
 #include "vtkXMLGenericDataObjectReader.h"
 
+#include "Radiosity/SceneGenerators.h"
+
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <fstream>
 
 namespace radiosity
@@ -55,6 +60,19 @@ vtkSmartPointer<vtkDataObject> LoadScene(
     vtkSmartPointer<vtkDataObject> out = box->GetOutput();
     return out;
   }
+  // The procedural test scenes with exact answers (SceneGenerators.h).
+  const std::map<std::string, std::function<Scene()>> builtIn = {
+    { "shadow", [] { return MakeShadowScene(4, 10.0); } },
+    { "contact", [] { return MakeContactScene(4, 0.0, 10.0); } },
+    { "sphere", [] { return MakeSphereInterior(1.0, 3, 0.9, RGB(10.0)); } },
+    { "closed-room-0.99", [] { return MakeClosedCube(1.0, 2, 0.99, 1.0); } },
+    { "closed-room-0.999", [] { return MakeClosedCube(1.0, 2, 0.999, 1.0); } } };
+  const auto found = builtIn.find(scene);
+  if (found != builtIn.end())
+  {
+    vtkSmartPointer<vtkDataObject> out = vtkRadiositySceneConverter::FromScene(found->second());
+    return out;
+  }
   if (!std::ifstream(scene).good())
   {
     error = "scene file " + scene + " does not exist or cannot be opened";
@@ -91,7 +109,8 @@ vtkSmartPointer<vtkDataObject> LoadScene(
     return Run(reader, scene, error);
   }
   error = "unknown scene file type '." + ext + "' (" + scene +
-    "): use .vtp, .vtm, .vtk, .ply, .stl or .obj";
+    "): use .vtp, .vtm, .vtk, .ply, .stl or .obj, or a built-in scene: cornell, shadow, contact, "
+    "sphere, closed-room-0.99, closed-room-0.999";
   return nullptr;
 }
 }

@@ -1,5 +1,7 @@
 // Loads a scene file or a built-in scene into VTK data (SPEC: .vtp, .vtk,
-// .ply, .stl, .obj with .mtl, and composite .vtm; `cornell`).
+// .ply, .stl, .obj with .mtl, and composite .vtm; `cornell` and the
+// procedural test scenes `shadow`, `contact`, `sphere`, `closed-room-0.99`,
+// `closed-room-0.999`).
 #ifndef vtkradiosity_SceneLoader_h
 #define vtkradiosity_SceneLoader_h
 

@@ -16,11 +16,14 @@
 #include "vtkPolyData.h"
 #include "vtkRadiosityConvergenceChart.h"
 #include "vtkRadiosityFilter.h"
+#include "vtkRadiositySceneConverter.h"
 #include "vtkRadiosityView.h"
 #include "vtkRenderer.h"
 #include "vtkTable.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include "Radiosity/AnalyticReference.h"
+#include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/ProbeEvaluator.h"
 #include "Radiosity/RadianceImage.h"
 #include "Radiosity/SolutionMesh.h"
@@ -28,6 +31,7 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
@@ -53,6 +57,7 @@ struct SolveArguments
   double MaxTime = 0.0;
   int Threads = 0;
   std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
+  std::string Reference;
   int Width = 800, Height = 800;
   bool NoOvershooting = false;
 };
@@ -115,6 +120,10 @@ int RunSolve(const SolveArguments& args)
   {
     throw BadInput(error);
   }
+  if (!args.Reference.empty() && probes.empty())
+  {
+    throw BadInput("--reference needs --probes (the points where the error is measured)");
+  }
   std::vector<std::string> loadWarnings;
   vtkSmartPointer<vtkDataObject> input = cli::LoadScene(args.Scene, error, loadWarnings);
   if (!input)
@@ -127,6 +136,38 @@ int RunSolve(const SolveArguments& args)
   }
   const double loadSeconds = Since(start);
 
+  // The reference: a file of values at the probes, or a closed form the scene has.
+  std::vector<RGB> reference;
+  std::string referenceKind;
+  if (args.Reference == "analytic")
+  {
+    std::vector<std::string> ignored;
+    Scene scene;
+    if (!vtkRadiositySceneConverter::ToScene(input, scene, error, ignored))
+    {
+      throw BadInput(error);
+    }
+    AnalyticReference analytic;
+    if (!ComputeAnalyticReference(scene, probes, analytic, error))
+    {
+      throw BadInput("--reference analytic: " + error);
+    }
+    reference = analytic.Irradiance;
+    referenceKind = "analytic: " + analytic.Kind;
+  }
+  else if (args.Reference == "pathtraced")
+  {
+    throw BadInput("--reference pathtraced: the path-traced reference is not part of this build yet");
+  }
+  else if (!args.Reference.empty())
+  {
+    if (!cli::ReadProbeValues(args.Reference, probes, reference, error))
+    {
+      throw BadInput(error);
+    }
+    referenceKind = "file: " + args.Reference;
+  }
+
   vtkNew<vtkRadiosityFilter> filter;
   filter->SetInputData(input);
   filter->SetMethod(vtkRadiosityFilter::Progressive);
@@ -135,6 +176,7 @@ int RunSolve(const SolveArguments& args)
   filter->SetMaxTime(args.MaxTime);
   filter->SetNumberOfThreads(args.Threads);
   filter->SetOvershooting(!args.NoOvershooting);
+  filter->SetErrorReference(reference.empty() ? std::vector<Probe>() : probes, reference);
   filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
   cli::ProgressBar bar;
   filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
@@ -214,12 +256,16 @@ int RunSolve(const SolveArguments& args)
   phases["render_s"] = Since(renderStart);
 
   std::size_t gathered = 0;
-  if (!args.ProbeOutput.empty())
+  std::vector<RGB> probeValues;
+  if (!args.ProbeOutput.empty() || !reference.empty())
   {
     ProbeEvaluator evaluator(solution, filter->GetScene());
-    const std::vector<RGB> values = evaluator.Evaluate(probes);
+    probeValues = evaluator.Evaluate(probes);
     gathered = evaluator.GatheredCount();
-    Check(cli::WriteProbeValues(args.ProbeOutput, probes, values, error), error);
+  }
+  if (!args.ProbeOutput.empty())
+  {
+    Check(cli::WriteProbeValues(args.ProbeOutput, probes, probeValues, error), error);
   }
   if (!args.HistoryCsv.empty())
   {
@@ -283,7 +329,28 @@ int RunSolve(const SolveArguments& args)
     report["time"]["total_s"] = Since(start);
     report["peak_memory_bytes"] = cli::PeakMemoryBytes();
     report["convergence_history"] = cli::HistoryJson(stats.History);
-    report["error"] = nullptr; // no reference known
+    if (reference.empty())
+    {
+      report["error"] = nullptr; // no reference known
+    }
+    else
+    {
+      const ConvergenceRow& last = stats.History.Rows.back();
+      nlohmann::json e;
+      e["reference"] = referenceKind;
+      e["probes"] = probes.size();
+      e["probes_on_a_surface"] = stats.ErrorProbesTracked;
+      e["rms_relative_error"] = std::isfinite(last.RmsError) ? nlohmann::json(last.RmsError) : nlohmann::json();
+      e["max_relative_error"] = std::isfinite(last.MaxRelError) ? nlohmann::json(last.MaxRelError) : nlohmann::json();
+      if (!probeValues.empty())
+      {
+        // Every probe, off-surface ones (gathered) included.
+        const ErrorFigures all = RelativeErrors(probeValues, reference);
+        e["probe_output_rms_relative_error"] = all.Rms;
+        e["probe_output_max_relative_error"] = all.Max;
+      }
+      report["error"] = e;
+    }
     Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
   }
   std::cerr << "solved " << args.Scene << ": " << stats.Elements << " elements, "
@@ -316,6 +383,8 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--size", solve.Width, "image width and height in pixels")
     ->check(CLI::Range(16, 8192));
   solveCommand->add_flag("--no-overshooting", solve.NoOvershooting);
+  solveCommand->add_option("--reference", solve.Reference,
+    "analytic (scenes with a closed form) or a CSV x,y,z,E_r,E_g,E_b at the probes");
 
   std::string outputDir = "out";
   CLI::App* demo = app.add_subcommand("demo", "solve, render and report the built-in Cornell box");

@@ -1,6 +1,8 @@
 #include "Radiosity/ProgressiveRadiosity.h"
 
+#include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/FormFactor.h"
+#include "Radiosity/MeshProbeTracker.h"
 #include "Radiosity/ShooterSamples.h"
 #include "Radiosity/Visibility.h"
 
@@ -536,6 +538,14 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
   // Cohen 1988's interreflection factor R = 1 / (1 - mean reflectance).
   const RGB interreflection = RGB(1.0) / (RGB(1.0) - rhoMean);
 
+  std::unique_ptr<MeshProbeTracker> tracker;
+  if (!this->Settings.ErrorProbes.empty() &&
+    this->Settings.ErrorReference.size() == this->Settings.ErrorProbes.size())
+  {
+    tracker = std::make_unique<MeshProbeTracker>(
+      mesh, this->Settings.ErrorProbes, 1e-6 * this->SceneInfo.Diagonal);
+    stats.ErrorProbesTracked = tracker->Tracked();
+  }
   std::vector<RGB> nodePower(mesh.Elements().size(), RGB(0.0));
   stats.Stop = StopReason::IterationLimit;
   for (long long iteration = 0;; ++iteration)
@@ -582,6 +592,12 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
     row.EnergyBalance = (emitted - this->Absorbed - this->Escaped - signedUnshot) / emitted;
     const RGB overshoot = mesh.MaterialOf(sel.Best).Reflectance * ambient;
     row.OvershootPowerW = Mean(glm::abs(overshoot)) * mesh[sel.Best].Area;
+    if (tracker)
+    {
+      const ErrorFigures errors = RelativeErrors(tracker->Evaluate(), this->Settings.ErrorReference);
+      row.RmsError = errors.Rms;
+      row.MaxRelError = errors.Max;
+    }
     stats.History.Rows.push_back(row);
     stats.Iterations = iteration;
     stats.UnshotPowerW = sel.AbsPower;

@@ -14,6 +14,7 @@
 #define Radiosity_ProgressiveRadiosity_h
 
 #include "Radiosity/ElementMesh.h"
+#include "Radiosity/ProbeEvaluator.h"
 #include "Radiosity/SceneAnalysis.h"
 #include "Radiosity/SolverTypes.h"
 
@@ -41,6 +42,10 @@ struct ProgressiveOptions
   double FormFactorTolerance = 2e-3;
   int VisibilitySamples = 16;      ///< rays per receiver sample from emitters: 1, 4 or 16
   int IndirectVisibilitySamples = 1; ///< rays per receiver sample from reflectors
+  /// Reference irradiance at probes: when given, every history row carries the
+  /// solution's error there (error against run time).
+  std::vector<Probe> ErrorProbes;
+  std::vector<RGB> ErrorReference;
 };
 
 class ProgressiveRadiosity

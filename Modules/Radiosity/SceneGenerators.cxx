@@ -1,5 +1,9 @@
 #include "Radiosity/SceneGenerators.h"
 
+#include <array>
+#include <cmath>
+#include <map>
+
 namespace radiosity
 {
 void AppendQuad(Scene& scene, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
@@ -136,6 +140,95 @@ Scene MakeParallelSquares(double a, double c, int n, double reflectance, double 
   Scene s;
   AppendQuad(s, Vec3(0, 0, 0), Vec3(a, 0, 0), Vec3(a, a, 0), Vec3(0, a, 0), emitter, n, "emitter");
   AppendQuad(s, Vec3(0, 0, c), Vec3(0, a, c), Vec3(a, a, c), Vec3(a, 0, c), receiver, n, "receiver");
+  return s;
+}
+
+Scene MakeSphereInterior(double radius, int levels, double reflectance, const RGB& emission)
+{
+  const double g = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Vec3> v = { { -1, g, 0 }, { 1, g, 0 }, { -1, -g, 0 }, { 1, -g, 0 }, { 0, -1, g },
+    { 0, 1, g }, { 0, -1, -g }, { 0, 1, -g }, { g, 0, -1 }, { g, 0, 1 }, { -g, 0, -1 },
+    { -g, 0, 1 } };
+  std::vector<std::array<std::uint32_t, 3>> f = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 },
+    { 0, 7, 10 }, { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 },
+    { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 },
+    { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  for (Vec3& p : v)
+  {
+    p = glm::normalize(p);
+  }
+  for (int l = 0; l < levels; ++l)
+  {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
+    const auto midpoint = [&](std::uint32_t a, std::uint32_t b)
+    {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      const auto it = mid.find(key);
+      if (it != mid.end())
+      {
+        return it->second;
+      }
+      v.push_back(glm::normalize(v[a] + v[b]));
+      return mid[key] = static_cast<std::uint32_t>(v.size() - 1);
+    };
+    std::vector<std::array<std::uint32_t, 3>> next;
+    for (const auto& t : f)
+    {
+      const std::uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]),
+                          ca = midpoint(t[2], t[0]);
+      next.push_back({ t[0], ab, ca });
+      next.push_back({ ab, t[1], bc });
+      next.push_back({ ca, bc, t[2] });
+      next.push_back({ ab, bc, ca });
+    }
+    f.swap(next);
+  }
+  Scene s;
+  for (const Vec3& p : v)
+  {
+    s.Points.push_back(radius * p);
+  }
+  for (const auto& t : f)
+  {
+    // The icosahedron's faces point outward: reverse them to face inward.
+    s.Triangles.push_back({ { t[0], t[2], t[1] } });
+    Material m;
+    m.Reflectance = RGB(reflectance);
+    const Vec3 c = (v[t[0]] + v[t[1]] + v[t[2]]) / 3.0;
+    m.Emission = c.z > 0.5 ? emission : RGB(0.0);
+    s.Materials.push_back(m);
+    s.ObjectIds.push_back(0);
+  }
+  s.ObjectNames = { "sphere" };
+  return s;
+}
+
+Scene MakeShadowScene(int n, double emission)
+{
+  Material black, light;
+  black.Reflectance = RGB(0.0);
+  light.Reflectance = RGB(0.0);
+  light.Emission = RGB(emission);
+  Scene s;
+  AppendQuad(s, Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), black, n, "floor");
+  AppendQuad(s, Vec3(-0.25, -0.25, 1), Vec3(-0.25, 0.25, 1), Vec3(0.25, 0.25, 1),
+    Vec3(0.25, -0.25, 1), light, 1, "emitter");
+  // The blocker faces down (towards the floor) and up (towards the emitter).
+  const Vec3 b0(-0.05, -0.2, 0.5), b1(0.35, -0.2, 0.5), b2(0.35, 0.2, 0.5), b3(-0.05, 0.2, 0.5);
+  AppendQuad(s, b0, b1, b2, b3, black, 1, "blocker top");
+  AppendQuad(s, b0, b3, b2, b1, black, 1, "blocker bottom");
+  return s;
+}
+
+Scene MakeContactScene(int n, double reflectance, double emission)
+{
+  Material floor, wall;
+  floor.Reflectance = RGB(reflectance);
+  wall.Reflectance = RGB(0.0);
+  wall.Emission = RGB(emission);
+  Scene s;
+  AppendQuad(s, Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 1, 0), floor, n, "floor");
+  AppendQuad(s, Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 1, 1), Vec3(0, 0, 1), wall, n, "wall");
   return s;
 }
 } // namespace radiosity

@@ -39,6 +39,19 @@ Scene MakeClosedCube(double size, int n, double reflectance, double emission);
 /// Two directly opposed parallel squares of side a at distance c (open scene):
 /// the lower one emits `emission` upward, the upper one reflects `reflectance`.
 Scene MakeParallelSquares(double a, double c, int n, double reflectance, double emission);
+/// The inside of a sphere (an icosphere subdivided `levels` times, faces
+/// inward), uniform reflectance, emission `emission` on the cap z > 0.5 r only.
+Scene MakeSphereInterior(double radius, int levels, double reflectance, const RGB& emission);
+
+/// The exact-penumbra scene: a square emitter of side 0.5 facing down at
+/// height 1, a square black blocker of side 0.4 at height 0.5 shifted by 0.15
+/// in x, and a 2 x 2 black floor at z = 0 (n x n quads); everything black, so
+/// the floor's irradiance is the direct light with exact penumbrae.
+Scene MakeShadowScene(int n, double emission);
+
+/// The contact scene: an emitting vertical wall (x = 0, facing +x, 1 x 1)
+/// standing on a floor (z = 0, 2 x 1) of reflectance `reflectance`.
+Scene MakeContactScene(int n, double reflectance, double emission);
 } // namespace radiosity
 
 #endif

@@ -64,6 +64,7 @@ struct SolverStatistics
   double UnshotPowerW = 0.0;
   double AbsorbedPowerW = 0.0;
   double EscapedPowerW = 0.0;
+  std::size_t ErrorProbesTracked = 0; ///< reference probes found on a surface
   double PreprocessSeconds = 0.0;
   double SolveSeconds = 0.0;
   ConvergenceHistory History;
