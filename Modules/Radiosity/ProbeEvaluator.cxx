@@ -1,6 +1,7 @@
 #include "Radiosity/ProbeEvaluator.h"
 
 #include "Radiosity/FormFactor.h"
+#include "Radiosity/MeshProbeTracker.h"
 #include "Radiosity/Visibility.h"
 
 #include <tbb/blocked_range.h>
@@ -24,23 +25,6 @@ Scene AsScene(const SolutionMesh& solution)
   return s;
 }
 
-/// Barycentric coordinates of the projection of p on triangle abc.
-bool Barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double& u,
-  double& v, double& w)
-{
-  const Vec3 e0 = b - a, e1 = c - a, d = p - a;
-  const double d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
-  const double d20 = glm::dot(d, e0), d21 = glm::dot(d, e1);
-  const double den = d00 * d11 - d01 * d01;
-  if (!(den > 0))
-  {
-    return false;
-  }
-  v = (d11 * d20 - d01 * d21) / den;
-  w = (d00 * d21 - d01 * d20) / den;
-  u = 1.0 - v - w;
-  return true;
-}
 }
 
 ProbeEvaluator::ProbeEvaluator(const SolutionMesh& solution, const Scene& scene)
@@ -81,7 +65,7 @@ std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes) cons
           continue;
         }
         double u, v, w;
-        if (!Barycentric(probe.Position, a, this->Solution.Points[tri.V[1]],
+        if (!ProjectOnTriangle(probe.Position, a, this->Solution.Points[tri.V[1]],
               this->Solution.Points[tri.V[2]], u, v, w) ||
           u < -edgeTolerance || v < -edgeTolerance || w < -edgeTolerance)
         {
