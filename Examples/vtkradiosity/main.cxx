@@ -2,6 +2,7 @@
 //   vtkradiosity solve SCENE [options]   solve, write the result, image, probes, report
 //   vtkradiosity demo [--output-dir DIR] the built-in Cornell box, everything into DIR (out/)
 // Exit status: 0 success, 2 bad input (nothing written), 1 internal failure.
+#include "Bench.h"
 #include "ExrWriter.h"
 #include "ProbeIO.h"
 #include "ProgressBar.h"
@@ -390,6 +391,12 @@ int main(int argc, char* argv[])
   CLI::App* demo = app.add_subcommand("demo", "solve, render and report the built-in Cornell box");
   demo->add_option("--output-dir", outputDir, "where the files go (default out/)");
 
+  std::string benchDir = "bench/results/error-vs-time";
+  bool quick = false;
+  CLI::App* bench = app.add_subcommand("bench", "error against run time on the standard scenes");
+  bench->add_option("--output-dir", benchDir, "where the CSVs, plots and table go");
+  bench->add_flag("--quick", quick, "two settings per scene (under 2 minutes, for CI)");
+
   try
   {
     app.parse(argc, argv);
@@ -401,6 +408,10 @@ int main(int argc, char* argv[])
   }
   try
   {
+    if (*bench)
+    {
+      return cli::RunBench(benchDir, quick);
+    }
     if (*demo)
     {
       mkdir(outputDir.c_str(), 0755);

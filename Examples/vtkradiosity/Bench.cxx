@@ -1,0 +1,215 @@
+#include "Bench.h"
+
+#include "Report.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkRadiosityConvergenceChart.h"
+#include "vtkTable.h"
+
+#include "Radiosity/AnalyticReference.h"
+#include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/ProgressiveRadiosity.h"
+#include "Radiosity/SceneGenerators.h"
+
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace radiosity
+{
+namespace cli
+{
+namespace
+{
+struct StandardScene
+{
+  std::string Name;
+  std::function<Scene()> Make;
+  /// Sensor points; empty means a sample of triangle centroids.
+  std::function<std::vector<Probe>(const Scene&)> Probes;
+};
+
+std::vector<Probe> CentroidSample(const Scene& scene)
+{
+  std::vector<Probe> probes;
+  const std::size_t stride = std::max<std::size_t>(1, scene.Triangles.size() / 40);
+  for (std::size_t t = 0; t < scene.Triangles.size(); t += stride)
+  {
+    probes.push_back(Probe{ scene.Centroid(t), scene.Normal(t) });
+  }
+  return probes;
+}
+
+std::vector<StandardScene> StandardScenes()
+{
+  return {
+    { "shadow", [] { return MakeShadowScene(4, 10.0); },
+      [](const Scene&)
+      {
+        std::vector<Probe> p;
+        for (int i = 0; i <= 30; ++i)
+        {
+          p.push_back(Probe{ Vec3(-0.6 + 0.05 * i, 0.03, 0.0), Vec3(0, 0, 1) });
+        }
+        return p;
+      } },
+    { "contact", [] { return MakeContactScene(4, 0.0, 10.0); },
+      [](const Scene&)
+      {
+        std::vector<Probe> p;
+        for (double d : { 1e-3, 1e-2, 0.05, 0.1, 0.3, 1.0 })
+        {
+          p.push_back(Probe{ Vec3(d, 0.5, 0.0), Vec3(0, 0, 1) });
+        }
+        return p;
+      } },
+    { "sphere", [] { return MakeSphereInterior(1.0, 3, 0.9, RGB(10.0)); }, CentroidSample },
+    { "closed-room-0.99", [] { return MakeClosedCube(1.0, 2, 0.99, 1.0); }, CentroidSample },
+    { "closed-room-0.999", [] { return MakeClosedCube(1.0, 2, 0.999, 1.0); }, CentroidSample },
+  };
+}
+
+struct Setting
+{
+  std::string Name;
+  double ElementSize;
+  double Tolerance;
+};
+
+std::string CpuModel()
+{
+  std::ifstream info("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(info, line))
+  {
+    if (line.rfind("model name", 0) == 0)
+    {
+      return line.substr(line.find(':') + 2);
+    }
+  }
+  return "unknown CPU";
+}
+
+double PeakMemory()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss * 1024.0;
+}
+}
+
+int RunBench(const std::string& outputDir, bool quick)
+{
+  mkdir(outputDir.c_str(), 0755);
+  const std::vector<Setting> settings = quick
+    ? std::vector<Setting>{ { "coarse", 1.0 / 8, 1e-2 }, { "default", 1.0 / 16, 1e-3 } }
+    : std::vector<Setting>{ { "coarse", 1.0 / 8, 1e-2 }, { "default", 1.0 / 16, 1e-3 },
+        { "fine", 1.0 / 32, 1e-3 }, { "finer", 1.0 / 48, 1e-4 } };
+  std::ostringstream md;
+  md << "# Error against run time\n\nMachine: " << CpuModel() << ", "
+     << std::thread::hardware_concurrency() << " hardware threads. Mode: "
+     << (quick ? "quick" : "full") << ".\n\n"
+     << "Errors are relative irradiance errors at the scene's probes against the analytic "
+        "reference (RMS and maximum over probes).\n\n";
+  for (const StandardScene& standard : StandardScenes())
+  {
+    const Scene scene = standard.Make();
+    const std::vector<Probe> probes = standard.Probes(scene);
+    AnalyticReference reference;
+    std::string why;
+    if (!ComputeAnalyticReference(scene, probes, reference, why))
+    {
+      std::cerr << "bench: " << standard.Name << ": " << why << "\n";
+      return 1;
+    }
+    std::ostringstream csv;
+    csv << "method,setting,element_size,tolerance,preprocess_s,solve_s,peak_memory_bytes,"
+           "elements,rays,rms_error,max_rel_error\n";
+    md << "## " << standard.Name << " (" << reference.Kind << ", " << probes.size()
+       << " probes)\n\n| method | setting | solve (s) | elements | rays | RMS error | max error |\n"
+       << "|---|---|---|---|---|---|---|\n";
+    vtkNew<vtkTable> curve;
+    vtkNew<vtkDoubleArray> time, rms, worst;
+    time->SetName("time_s");
+    rms->SetName("rms_error");
+    worst->SetName("max_rel_error");
+    for (const Setting& setting : settings)
+    {
+      ProgressiveOptions options;
+      options.InitialElementSize = setting.ElementSize;
+      options.ShooterElementSize = std::max(4 * setting.ElementSize, 0.25);
+      options.Tolerance = setting.Tolerance;
+      options.ErrorProbes = probes;
+      options.ErrorReference = reference.Irradiance;
+      const auto start = std::chrono::steady_clock::now();
+      ProgressiveRadiosity solver(scene, options);
+      const double preprocess =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const SolverStatistics stats = solver.Solve();
+      const ConvergenceRow& last = stats.History.Rows.back();
+      char line[512];
+      std::snprintf(line, sizeof line, "progressive,%s,%g,%g,%.6f,%.6f,%.0f,%zu,%zu,%.6e,%.6e\n",
+        setting.Name.c_str(), setting.ElementSize, setting.Tolerance, preprocess,
+        stats.SolveSeconds, PeakMemory(), stats.Elements, stats.RaysCast, last.RmsError,
+        last.MaxRelError);
+      csv << line;
+      std::snprintf(line, sizeof line, "| progressive | %s | %.3f | %zu | %zu | %.2e | %.2e |\n",
+        setting.Name.c_str(), stats.SolveSeconds, stats.Elements, stats.RaysCast, last.RmsError,
+        last.MaxRelError);
+      md << line;
+      time->InsertNextValue(std::max(stats.SolveSeconds + preprocess, 1e-6));
+      rms->InsertNextValue(last.RmsError);
+      worst->InsertNextValue(last.MaxRelError);
+    }
+    md << "\n";
+    std::string error;
+    if (!WriteFileAtomically(outputDir + "/" + standard.Name + ".csv", csv.str(), error))
+    {
+      std::cerr << "bench: " << error << "\n";
+      return 1;
+    }
+    curve->AddColumn(time);
+    curve->AddColumn(rms);
+    curve->AddColumn(worst);
+    vtkNew<vtkRadiosityConvergenceChart> chart;
+    chart->AddInputData(curve, "progressive");
+    chart->RemoveAllColumns();
+    chart->AddColumn("rms_error", "RMS relative error");
+    chart->AddColumn("max_rel_error", "max relative error");
+    // Log-log as the harness asks, unless the runs are too close in time for
+    // a log axis to show them apart.
+    double fastest = 1e300, slowest = 0.0;
+    for (vtkIdType i = 0; i < time->GetNumberOfTuples(); ++i)
+    {
+      fastest = std::min(fastest, time->GetValue(i));
+      slowest = std::max(slowest, time->GetValue(i));
+    }
+    chart->SetLogTime(slowest > 3.0 * fastest);
+    chart->SetTitle(("Error against run time: " + standard.Name).c_str());
+    if (!chart->WritePNG((outputDir + "/" + standard.Name + ".png").c_str(), 800, 450))
+    {
+      std::cerr << "bench: cannot write the plot for " << standard.Name << "\n";
+      return 1;
+    }
+    std::cout << "bench: " << standard.Name << " done\n";
+  }
+  std::string error;
+  if (!WriteFileAtomically(outputDir + "/README.md", md.str(), error))
+  {
+    std::cerr << "bench: " << error << "\n";
+    return 1;
+  }
+  std::cout << md.str();
+  return 0;
+}
+}
+}
