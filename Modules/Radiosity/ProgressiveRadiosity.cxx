@@ -7,10 +7,8 @@
 #include "Radiosity/Visibility.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
@@ -157,8 +155,6 @@ void ProgressiveRadiosity::RegisterCorners(std::uint32_t e)
 double ProgressiveRadiosity::PointTransfer(const Vec3& p, const Vec3& n, const Vec3& origin,
   std::uint32_t shooter, TransferScratch& scratch, ShotResult& counts, double* visibility) const
 {
-  const ElementMesh& mesh = *this->Elements;
-  const Element& s = mesh[shooter];
   double vis = 1.0;
   if (!this->Rays->Empty())
   {
@@ -178,26 +174,27 @@ double ProgressiveRadiosity::PointTransfer(const Vec3& p, const Vec3& n, const V
   {
     *visibility = vis;
   }
-  if (vis <= 0.0)
-  {
-    return 0.0;
-  }
+  return vis > 0.0 ? vis * this->PointFormFactor(p, n, shooter, counts) : 0.0;
+}
+
+double ProgressiveRadiosity::PointFormFactor(
+  const Vec3& p, const Vec3& n, std::uint32_t shooter, ShotResult& counts) const
+{
+  const ElementMesh& mesh = *this->Elements;
+  const Element& s = mesh[shooter];
   if (ApparentSize(p, s.Centroid, s.Area) < this->DiscTolerance)
   {
     ++counts.Disc;
-    return vis * DiscFormFactor(p, n, s.Centroid, s.Normal, s.Area);
+    return DiscFormFactor(p, n, s.Centroid, s.Normal, s.Area);
   }
   ++counts.Analytic;
   const Vec3 poly[3] = { mesh.Corner(shooter, 0), mesh.Corner(shooter, 1), mesh.Corner(shooter, 2) };
-  return vis * PointToPolygonFormFactor(p, n, poly, 3);
+  return PointToPolygonFormFactor(p, n, poly, 3);
 }
 
 void ProgressiveRadiosity::SampleTransfers(
   const std::uint32_t* ids, std::size_t count, std::uint32_t shooter, ShotResult& counts)
 {
-  const ElementMesh& mesh = *this->Elements;
-  const Element& s = mesh[shooter];
-  const Vec3 poly[3] = { mesh.Corner(shooter, 0), mesh.Corner(shooter, 1), mesh.Corner(shooter, 2) };
   // One batch of visibility rays for all the samples of this range.
   std::vector<unsigned char> visible;
   const std::vector<Vec3>& targets = this->Targets[this->ShooterSlot[shooter]];
@@ -231,21 +228,8 @@ void ProgressiveRadiosity::SampleTransfers(
       }
       vis = static_cast<double>(seen) / static_cast<double>(nv);
     }
-    double f = 0.0;
-    if (vis > 0.0)
-    {
-      if (ApparentSize(sample.Point, s.Centroid, s.Area) < this->DiscTolerance)
-      {
-        ++counts.Disc;
-        f = DiscFormFactor(sample.Point, sample.Normal, s.Centroid, s.Normal, s.Area);
-      }
-      else
-      {
-        ++counts.Analytic;
-        f = PointToPolygonFormFactor(sample.Point, sample.Normal, poly, 3);
-      }
-    }
-    this->SampleFactor[ids[i]] = vis * f;
+    this->SampleFactor[ids[i]] =
+      vis > 0.0 ? vis * this->PointFormFactor(sample.Point, sample.Normal, shooter, counts) : 0.0;
   }
 }
 

@@ -77,6 +77,8 @@ private:
   /// Form factor times visibility from one receiving point to a shooter node.
   double PointTransfer(const Vec3& p, const Vec3& n, const Vec3& rayOrigin, std::uint32_t shooter,
     TransferScratch& scratch, ShotResult& counts, double* visibility = nullptr) const;
+  /// The form factor kernel (disc or exact, by apparent size), no visibility.
+  double PointFormFactor(const Vec3& p, const Vec3& n, std::uint32_t shooter, ShotResult& counts) const;
   bool FacesShooter(std::uint32_t receiver, std::uint32_t shooter) const;
   /// Evaluates the shared corner samples `ids` for one shot (one ray batch).
   void SampleTransfers(
