@@ -12,6 +12,7 @@
 #include "vtkSTLReader.h"
 #include "vtkXMLGenericDataObjectReader.h"
 
+#include "Radiosity/BunnyScene.h"
 #include "Radiosity/SceneGenerators.h"
 
 #include <algorithm>
@@ -66,7 +67,12 @@ vtkSmartPointer<vtkDataObject> LoadScene(
     { "contact", [] { return MakeContactScene(4, 0.0, 10.0); } },
     { "sphere", [] { return MakeSphereInterior(1.0, 3, 0.9, RGB(10.0)); } },
     { "closed-room-0.99", [] { return MakeClosedCube(1.0, 2, 0.99, 1.0); } },
-    { "closed-room-0.999", [] { return MakeClosedCube(1.0, 2, 0.999, 1.0); } } };
+    { "closed-room-0.999", [] { return MakeClosedCube(1.0, 2, 0.999, 1.0); } },
+#ifdef RADIOSITY_BUNNY_JS
+    { "bunny-235k", [] { return MakeBunnyRoom(ReadNpmBunny(RADIOSITY_BUNNY_JS), 3); } },
+    { "bunny-940k", [] { return MakeBunnyRoom(ReadNpmBunny(RADIOSITY_BUNNY_JS), 4); } },
+#endif
+  };
   const auto found = builtIn.find(scene);
   if (found != builtIn.end())
   {
@@ -110,7 +116,7 @@ vtkSmartPointer<vtkDataObject> LoadScene(
   }
   error = "unknown scene file type '." + ext + "' (" + scene +
     "): use .vtp, .vtm, .vtk, .ply, .stl or .obj, or a built-in scene: cornell, shadow, contact, "
-    "sphere, closed-room-0.99, closed-room-0.999";
+    "sphere, closed-room-0.99, closed-room-0.999, bunny-235k, bunny-940k";
   return nullptr;
 }
 }

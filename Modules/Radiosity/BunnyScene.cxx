@@ -1,0 +1,167 @@
+#include "Radiosity/BunnyScene.h"
+
+#include "Radiosity/SceneGenerators.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace radiosity
+{
+namespace
+{
+/// The numbers between `from` and the end (or `until`), brackets and commas skipped.
+std::vector<double> Numbers(const std::string& text, std::size_t from, std::size_t until)
+{
+  std::vector<double> out;
+  const char* p = text.c_str() + from;
+  const char* end = text.c_str() + until;
+  while (p < end)
+  {
+    if ((*p >= '0' && *p <= '9') || *p == '-' || *p == '.')
+    {
+      char* next = nullptr;
+      const double value = std::strtod(p, &next);
+      if (next == p) // a lone '-' or '.' (as in "exports.cells")
+      {
+        ++p;
+        continue;
+      }
+      out.push_back(value);
+      p = next;
+    }
+    else
+    {
+      ++p;
+    }
+  }
+  return out;
+}
+}
+
+Scene ReadNpmBunny(const std::string& indexJs)
+{
+  std::ifstream in(indexJs);
+  if (!in)
+  {
+    throw SceneError("cannot read the bunny data " + indexJs);
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  const std::size_t positions = text.find("exports.positions=");
+  const std::size_t cells = text.find("exports.cells=");
+  if (positions == std::string::npos || cells == std::string::npos || cells < positions)
+  {
+    throw SceneError(indexJs + ": not the npm package bunny's index.js");
+  }
+  const std::vector<double> xyz = Numbers(text, positions, cells);
+  const std::vector<double> ids = Numbers(text, cells, text.size());
+  if (xyz.size() % 3 != 0 || ids.size() % 3 != 0 || xyz.empty() || ids.empty())
+  {
+    throw SceneError(indexJs + ": positions or cells are not triples");
+  }
+  Scene bunny;
+  for (std::size_t i = 0; i < xyz.size(); i += 3)
+  {
+    bunny.Points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+  }
+  for (std::size_t i = 0; i < ids.size(); i += 3)
+  {
+    Triangle t;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double id = ids[i + k];
+      if (id < 0 || id >= static_cast<double>(bunny.Points.size()))
+      {
+        throw SceneError(indexJs + ": cell " + std::to_string(i / 3) + " has point index " +
+          std::to_string(id) + " out of range");
+      }
+      t.V[k] = static_cast<std::uint32_t>(id);
+    }
+    bunny.Triangles.push_back(t);
+  }
+  bunny.Materials.assign(bunny.Triangles.size(), Material());
+  bunny.ObjectIds.assign(bunny.Triangles.size(), 0);
+  bunny.ObjectNames = { "bunny" };
+  return bunny;
+}
+
+Scene MakeBunnyRoom(const Scene& source, int levels)
+{
+  Scene bunny = source;
+  for (int l = 0; l < levels; ++l)
+  {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
+    const auto midpoint = [&](std::uint32_t a, std::uint32_t b)
+    {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      const auto it = mid.find(key);
+      if (it != mid.end())
+      {
+        return it->second;
+      }
+      bunny.Points.push_back(0.5 * (bunny.Points[a] + bunny.Points[b]));
+      return mid[key] = static_cast<std::uint32_t>(bunny.Points.size() - 1);
+    };
+    std::vector<Triangle> next;
+    next.reserve(4 * bunny.Triangles.size());
+    for (const Triangle& t : bunny.Triangles)
+    {
+      const std::uint32_t ab = midpoint(t.V[0], t.V[1]), bc = midpoint(t.V[1], t.V[2]),
+                          ca = midpoint(t.V[2], t.V[0]);
+      next.push_back({ { t.V[0], ab, ca } });
+      next.push_back({ { ab, t.V[1], bc } });
+      next.push_back({ { ca, bc, t.V[2] } });
+      next.push_back({ { ab, bc, ca } });
+    }
+    bunny.Triangles.swap(next);
+  }
+  // Faces outward: a positive enclosed volume.
+  double volume = 0.0;
+  for (std::size_t t = 0; t < bunny.Triangles.size(); ++t)
+  {
+    volume += glm::dot(bunny.Vertex(t, 0), glm::cross(bunny.Vertex(t, 1), bunny.Vertex(t, 2)));
+  }
+  if (volume < 0)
+  {
+    for (Triangle& t : bunny.Triangles)
+    {
+      std::swap(t.V[1], t.V[2]);
+    }
+  }
+  Vec3 lo, hi;
+  bunny.BoundingBox(lo, hi);
+  const double scale = 0.5 / (hi.y - lo.y);
+  const Vec3 base(0.5 * (lo.x + hi.x), lo.y, 0.5 * (lo.z + hi.z));
+  for (Vec3& p : bunny.Points)
+  {
+    p = (p - base) * scale + Vec3(1.0, 0.0, 1.0);
+  }
+  Material statue;
+  statue.Reflectance = RGB(0.7);
+  bunny.Materials.assign(bunny.Triangles.size(), statue);
+  bunny.ObjectIds.assign(bunny.Triangles.size(), 0);
+  bunny.ObjectNames = { "bunny" };
+
+  // The room, y up, faces inward, with the light just below the ceiling.
+  Material wall, floor, light;
+  wall.Reflectance = RGB(0.7);
+  floor.Reflectance = RGB(0.5);
+  light.Reflectance = RGB(0.0);
+  light.Emission = RGB(50.0);
+  Scene room;
+  const double h = 2.0;
+  AppendQuad(room, Vec3(0, 0, 0), Vec3(0, 0, h), Vec3(h, 0, h), Vec3(h, 0, 0), floor, 4, "floor");
+  AppendQuad(room, Vec3(0, h, 0), Vec3(h, h, 0), Vec3(h, h, h), Vec3(0, h, h), wall, 4, "ceiling");
+  AppendQuad(room, Vec3(0, 0, 0), Vec3(h, 0, 0), Vec3(h, h, 0), Vec3(0, h, 0), wall, 4, "wall z0");
+  AppendQuad(room, Vec3(0, 0, h), Vec3(0, h, h), Vec3(h, h, h), Vec3(h, 0, h), wall, 4, "wall z1");
+  AppendQuad(room, Vec3(0, 0, 0), Vec3(0, h, 0), Vec3(0, h, h), Vec3(0, 0, h), wall, 4, "wall x0");
+  AppendQuad(room, Vec3(h, 0, 0), Vec3(h, 0, h), Vec3(h, h, h), Vec3(h, h, 0), wall, 4, "wall x1");
+  AppendQuad(room, Vec3(0.75, h - 1e-3, 0.75), Vec3(1.25, h - 1e-3, 0.75),
+    Vec3(1.25, h - 1e-3, 1.25), Vec3(0.75, h - 1e-3, 1.25), light, 1, "light");
+  AppendScene(room, bunny);
+  return room;
+}
+} // namespace radiosity
