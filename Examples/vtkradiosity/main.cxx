@@ -25,6 +25,8 @@
 
 #include "Radiosity/AnalyticReference.h"
 #include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/PathTracer.h"
+#include "Radiosity/SceneGenerators.h"
 #include "Radiosity/ProbeEvaluator.h"
 #include "Radiosity/RadianceImage.h"
 #include "Radiosity/SolutionMesh.h"
@@ -59,8 +61,12 @@ struct SolveArguments
   int Threads = 0;
   std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
   std::string Reference;
+  std::size_t ReferenceSamples = 16384;
+  bool DemoProbes = false; ///< the demo's fixed sensors with a path-traced reference
   int Width = 800, Height = 800;
   bool NoOvershooting = false;
+  double ElementSize = 1.0 / 16.0;
+  double ShooterSize = 0.25;
 };
 
 double Since(Clock::time_point t)
@@ -102,6 +108,22 @@ void Check(bool ok, const std::string& error)
   }
 }
 
+/// Sensors for the demo's error curve: the centre of every input triangle of
+/// the Cornell box but the light's, facing the way the triangle does.
+std::vector<Probe> CornellDemoProbes()
+{
+  const Scene box = MakeCornellBox();
+  std::vector<Probe> probes;
+  for (std::size_t t = 0; t < box.Triangles.size(); ++t)
+  {
+    if (MaxComponent(box.Materials[t].Emission) == 0.0)
+    {
+      probes.push_back(Probe{ box.Centroid(t), box.Normal(t) });
+    }
+  }
+  return probes;
+}
+
 int RunSolve(const SolveArguments& args)
 {
   const auto start = Clock::now();
@@ -117,11 +139,15 @@ int RunSolve(const SolveArguments& args)
   // Everything that can be refused is read and checked before anything is written.
   std::vector<Probe> probes;
   std::string error;
+  if (args.DemoProbes)
+  {
+    probes = CornellDemoProbes();
+  }
   if (!args.Probes.empty() && !cli::ReadProbes(args.Probes, probes, error))
   {
     throw BadInput(error);
   }
-  if (!args.Reference.empty() && probes.empty())
+  if (!args.Reference.empty() && probes.empty() && !args.DemoProbes)
   {
     throw BadInput("--reference needs --probes (the points where the error is measured)");
   }
@@ -158,7 +184,38 @@ int RunSolve(const SolveArguments& args)
   }
   else if (args.Reference == "pathtraced")
   {
-    throw BadInput("--reference pathtraced: the path-traced reference is not part of this build yet");
+    std::vector<std::string> ignored;
+    Scene scene;
+    if (!vtkRadiositySceneConverter::ToScene(input, scene, error, ignored))
+    {
+      throw BadInput(error);
+    }
+    try
+    {
+      ValidateScene(scene);
+    }
+    catch (const SceneError& e)
+    {
+      throw BadInput(e.what());
+    }
+    DropDegenerateTriangles(scene);
+    PathTracerOptions options;
+    options.SamplesPerProbe = args.ReferenceSamples;
+    const PathTracer tracer(scene, options);
+    double worst = 0.0;
+    for (const ReferenceValue& v : tracer.Irradiance(probes))
+    {
+      reference.push_back(v.Value);
+      if (Luminance(v.Value) > 0)
+      {
+        worst = std::max(worst, Luminance(v.StandardError) / Luminance(v.Value));
+      }
+    }
+    char kind[160];
+    std::snprintf(kind, sizeof kind,
+      "path traced: %zu paths per probe, largest relative standard error %.2e",
+      args.ReferenceSamples, worst);
+    referenceKind = kind;
   }
   else if (!args.Reference.empty())
   {
@@ -177,6 +234,8 @@ int RunSolve(const SolveArguments& args)
   filter->SetMaxTime(args.MaxTime);
   filter->SetNumberOfThreads(args.Threads);
   filter->SetOvershooting(!args.NoOvershooting);
+  filter->SetInitialElementSize(args.ElementSize);
+  filter->SetShooterElementSize(args.ShooterSize);
   filter->SetErrorReference(reference.empty() ? std::vector<Probe>() : probes, reference);
   filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
   cli::ProgressBar bar;
@@ -281,7 +340,8 @@ int RunSolve(const SolveArguments& args)
     chart->AddColumn("unshot_power_W", "unshot power (W)");
     chart->AddColumn("overshoot_power_W", "power shot in advance by overshooting (W)");
     chart->AddColumn("energy_balance", "|energy balance| (relative)");
-    chart->AddColumn("rms_error", "RMS irradiance error");
+    chart->AddColumn("rms_error", "RMS relative irradiance error at the probes");
+    chart->AddColumn("max_rel_error", "max relative irradiance error");
     const std::string temporary = args.HistoryPng + ".partial.png";
     Check(chart->WritePNG(temporary.c_str(), 900, 500) &&
         std::rename(temporary.c_str(), args.HistoryPng.c_str()) == 0,
@@ -384,8 +444,17 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--size", solve.Width, "image width and height in pixels")
     ->check(CLI::Range(16, 8192));
   solveCommand->add_flag("--no-overshooting", solve.NoOvershooting);
+  solveCommand->add_option("--element-size", solve.ElementSize,
+    "initial receiving element edge, fraction of the scene diagonal (default 1/16)")
+    ->check(CLI::Range(1e-4, 1.0));
+  solveCommand->add_option("--shooter-size", solve.ShooterSize,
+    "shooting element edge, fraction of the scene diagonal (default 0.25)")
+    ->check(CLI::Range(1e-4, 1.0));
   solveCommand->add_option("--reference", solve.Reference,
-    "analytic (scenes with a closed form) or a CSV x,y,z,E_r,E_g,E_b at the probes");
+    "analytic (scenes with a closed form), pathtraced, or a CSV x,y,z,E_r,E_g,E_b at the probes");
+  solveCommand->add_option("--reference-samples", solve.ReferenceSamples,
+    "paths per probe for --reference pathtraced (default 16384)")
+    ->check(CLI::Range(std::size_t(16), std::size_t(1) << 30));
 
   std::string outputDir = "out";
   CLI::App* demo = app.add_subcommand("demo", "solve, render and report the built-in Cornell box");
@@ -423,6 +492,8 @@ int main(int argc, char* argv[])
       d.Report = outputDir + "/report.json";
       d.HistoryCsv = outputDir + "/convergence.csv";
       d.HistoryPng = outputDir + "/convergence.png";
+      d.Reference = "pathtraced";
+      d.DemoProbes = true;
       const int status = RunSolve(d);
       if (status == 0)
       {

@@ -119,10 +119,15 @@ struct Moments
 };
 } // namespace pathtracing
 
-using namespace pathtracing;
-
 struct PathTracer::Internals
 {
+  // Class-scope names: no clash with other files of a unity build.
+  static constexpr double Pi = pathtracing::Pi;
+  using Sensor = pathtracing::Sensor;
+  using Moments = pathtracing::Moments;
+  using Pcg32 = pathtracing::Pcg32;
+  static constexpr std::size_t ChunkSize = pathtracing::ChunkSize;
+
   std::unique_ptr<Visibility> Rays;
   double Epsilon = 0.0;
   std::vector<Vec3> Normals;          ///< unit, 0 for degenerate triangles
@@ -150,6 +155,10 @@ PathTracer::PathTracer(const Scene& scene, const PathTracerOptions& options)
   if (options.Threads < 0)
   {
     throw std::invalid_argument("PathTracer: Threads must be >= 0");
+  }
+  if (scene.Materials.size() != scene.Triangles.size())
+  {
+    throw std::invalid_argument("PathTracer: the scene needs one material per triangle");
   }
   this->Impl->Rays = std::make_unique<Visibility>(scene, Visibility::AllTriangles(scene));
   this->Impl->Epsilon = this->Impl->Rays->Offset();
@@ -197,7 +206,8 @@ std::size_t PathTracer::RaysCast() const
 RGB PathTracer::Internals::Path(const Scene& scene, const PathTracerOptions& options,
   const Sensor& sensor, Pcg32& rng) const
 {
-  const bool lightSampling = options.Sampling != PathSampling::CosineOnly && !this->Emitters.empty();
+  const bool lightSampling =
+    options.Sampling != PathSampling::CosineOnly && !this->Emitters.empty();
   const bool hitSampling = options.Sampling != PathSampling::EmitterOnly;
   const bool mis = options.Sampling == PathSampling::MultipleImportance;
   const double eps = this->Epsilon;
@@ -254,7 +264,7 @@ RGB PathTracer::Internals::Path(const Scene& scene, const PathTracerOptions& opt
     const double phi = 2.0 * Pi * u2;
     const double cosX = std::sqrt(1.0 - u1); // > 0 since u1 < 1
     Vec3 t, b;
-    Basis(n, t, b);
+    pathtracing::Basis(n, t, b);
     const Vec3 w = r * std::cos(phi) * t + r * std::sin(phi) * b + cosX * n;
     beta *= albedo; // f cos / (cos / pi)
     double dist, bu, bv;
@@ -316,7 +326,7 @@ std::vector<ReferenceValue> PathTracer::Internals::Estimate(const Scene& scene,
   const std::size_t chunks = (samples + ChunkSize - 1) / ChunkSize;
   const auto chunkMoments = [&](std::size_t s, std::size_t c)
   {
-    Pcg32 rng = StreamFor(options.Seed, stream, indices ? (*indices)[s] : s, c);
+    Pcg32 rng = pathtracing::StreamFor(options.Seed, stream, indices ? (*indices)[s] : s, c);
     const std::size_t begin = c * ChunkSize;
     const std::size_t end = std::min(samples, begin + ChunkSize);
     Moments m;
@@ -397,7 +407,7 @@ std::vector<ReferenceValue> PathTracer::Irradiance(const std::vector<Probe>& pro
 std::vector<ReferenceValue> PathTracer::Irradiance(
   const std::vector<Probe>& probes, std::size_t samples, std::uint64_t stream) const
 {
-  std::vector<Sensor> sensors(probes.size());
+  std::vector<Internals::Sensor> sensors(probes.size());
   for (std::size_t i = 0; i < probes.size(); ++i)
   {
     const Probe& p = probes[i];
@@ -416,7 +426,8 @@ std::vector<ReferenceValue> PathTracer::Irradiance(
     sensors[i].Position = p.Position;
     sensors[i].Normal = p.Normal / len;
   }
-  return this->Impl->Estimate(this->SourceScene, this->Settings, sensors, nullptr, samples, stream);
+  return this->Impl->Estimate(
+    this->SourceScene, this->Settings, sensors, nullptr, samples, stream);
 }
 
 RadianceImage PathTracer::Render(
@@ -444,13 +455,21 @@ RadianceImage PathTracer::Render(const PinholeCamera& camera, int width, int hei
   }
 
   // Same camera convention as RenderRadiance: primary rays through pixel centres.
-  const Vec3 forward = glm::normalize(camera.FocalPoint - camera.Position);
+  const Vec3 view = camera.FocalPoint - camera.Position;
+  const Vec3 side = glm::cross(view, camera.ViewUp);
+  if (!(glm::length(side) > 0.0) || !std::isfinite(glm::length(side)) ||
+    !(camera.ViewAngleDegrees > 0.0 && camera.ViewAngleDegrees < 180.0))
+  {
+    throw std::invalid_argument("PathTracer::Render: degenerate camera (position at the focal "
+                                "point, view-up along the view direction, or view angle)");
+  }
+  const Vec3 forward = glm::normalize(view);
   const Vec3 right = glm::normalize(glm::cross(forward, camera.ViewUp));
   const Vec3 up = glm::cross(right, forward);
-  const double halfHeight = std::tan(0.5 * camera.ViewAngleDegrees * Pi / 180.0);
+  const double halfHeight = std::tan(0.5 * camera.ViewAngleDegrees * Internals::Pi / 180.0);
   const double halfWidth = halfHeight * width / static_cast<double>(height);
   std::vector<int> hitTriangle(pixels, -1);
-  std::vector<Sensor> sensors(pixels);
+  std::vector<Internals::Sensor> sensors(pixels);
   const auto primary = [&]()
   {
     tbb::parallel_for(0, height,
@@ -491,7 +510,7 @@ RadianceImage PathTracer::Render(const PinholeCamera& camera, int width, int hei
   }
 
   // Irradiance estimates only where the surface reflects.
-  std::vector<Sensor> reflecting;
+  std::vector<Internals::Sensor> reflecting;
   std::vector<std::size_t> where;
   for (std::size_t px = 0; px < pixels; ++px)
   {
@@ -512,7 +531,7 @@ RadianceImage PathTracer::Render(const PinholeCamera& camera, int width, int hei
     {
       continue;
     }
-    const RGB le = scene.Materials[tri].Emission / Pi;
+    const RGB le = scene.Materials[tri].Emission / Internals::Pi;
     for (int c = 0; c < 3; ++c)
     {
       image.RGB[3 * px + c] = static_cast<float>(le[c]);
@@ -521,9 +540,9 @@ RadianceImage PathTracer::Render(const PinholeCamera& camera, int width, int hei
   for (std::size_t i = 0; i < where.size(); ++i)
   {
     const std::size_t px = where[i];
-    const RGB rho = scene.Materials[hitTriangle[px]].Reflectance;
-    const RGB l = scene.Materials[hitTriangle[px]].Emission / Pi + rho / Pi * irradiance[i].Value;
-    const RGB se = rho / Pi * irradiance[i].StandardError;
+    const Material& m = scene.Materials[hitTriangle[px]];
+    const RGB l = m.Emission / Internals::Pi + m.Reflectance / Internals::Pi * irradiance[i].Value;
+    const RGB se = m.Reflectance / Internals::Pi * irradiance[i].StandardError;
     for (int c = 0; c < 3; ++c)
     {
       image.RGB[3 * px + c] = static_cast<float>(l[c]);

@@ -95,6 +95,8 @@ ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene, const Progressive
     this->Targets.push_back(ShooterSamplePoints(this->Elements->Corner(n, 0),
       this->Elements->Corner(n, 1), this->Elements->Corner(n, 2),
       emitter ? options.VisibilitySamples : options.IndirectVisibilitySamples));
+    this->TargetWeights.emplace_back(
+      this->Targets.back().size(), 1.0 / static_cast<double>(this->Targets.back().size()));
   }
 }
 
@@ -152,6 +154,61 @@ void ProgressiveRadiosity::RegisterCorners(std::uint32_t e)
   }
 }
 
+double ProgressiveRadiosity::VisibleFraction(std::uint32_t shooter, const unsigned char* visible) const
+{
+  const std::vector<double>& weights = this->TargetWeights[this->ShooterSlot[shooter]];
+  double seen = 0.0;
+  for (std::size_t k = 0; k < weights.size(); ++k)
+  {
+    seen += visible[k] ? weights[k] : 0.0;
+  }
+  return seen;
+}
+
+void ProgressiveRadiosity::WeighTargets(std::uint32_t shooter, const std::vector<std::uint32_t>& own)
+{
+  // The visibility targets of a shooter are the centres of its level-j
+  // sub-triangles, in the order of ElementMesh::Subdivide's children. Each is
+  // weighted by the unshot power of the leaves inside it, so that a shooter
+  // partly hidden (a floor node under a block) is seen where its power is.
+  const ElementMesh& mesh = *this->Elements;
+  std::vector<double>& weights = this->TargetWeights[this->ShooterSlot[shooter]];
+  const std::size_t nt = weights.size();
+  const int depth = nt >= 16 ? 2 : (nt >= 4 ? 1 : 0);
+  std::vector<double> w(nt, 0.0);
+  std::vector<std::uint32_t> path;
+  for (std::uint32_t e : own)
+  {
+    path.clear();
+    for (std::uint32_t a = e; a != shooter; a = static_cast<std::uint32_t>(mesh[a].Parent))
+    {
+      const Element& parent = mesh[static_cast<std::uint32_t>(mesh[a].Parent)];
+      path.push_back(a - static_cast<std::uint32_t>(parent.FirstChild));
+    }
+    std::reverse(path.begin(), path.end()); // child indices from the shooter down
+    std::size_t first = 0, span = nt;
+    for (int level = 0; level < depth && level < static_cast<int>(path.size()); ++level)
+    {
+      span /= 4;
+      first += path[level] * span;
+    }
+    const double power = std::fabs(SumComponents(mesh[e].Unshot)) * mesh[e].Area / span;
+    for (std::size_t k = first; k < first + span; ++k)
+    {
+      w[k] += power;
+    }
+  }
+  double total = 0.0;
+  for (double x : w)
+  {
+    total += x;
+  }
+  for (std::size_t k = 0; k < nt; ++k)
+  {
+    weights[k] = total > 0.0 ? w[k] / total : 1.0 / static_cast<double>(nt);
+  }
+}
+
 double ProgressiveRadiosity::PointTransfer(const Vec3& p, const Vec3& n, const Vec3& origin,
   std::uint32_t shooter, TransferScratch& scratch, ShotResult& counts, double* visibility) const
 {
@@ -163,12 +220,7 @@ double ProgressiveRadiosity::PointTransfer(const Vec3& p, const Vec3& n, const V
     scratch.Visible.resize(targets.size());
     this->Rays->TestSegments(
       scratch.From.data(), targets.data(), targets.size(), scratch.Visible.data());
-    int count = 0;
-    for (unsigned char v : scratch.Visible)
-    {
-      count += v;
-    }
-    vis = static_cast<double>(count) / static_cast<double>(targets.size());
+    vis = this->VisibleFraction(shooter, scratch.Visible.data());
   }
   if (visibility)
   {
@@ -221,12 +273,7 @@ void ProgressiveRadiosity::SampleTransfers(
     double vis = 1.0;
     if (!visible.empty())
     {
-      int seen = 0;
-      for (std::size_t j = 0; j < nv; ++j)
-      {
-        seen += visible[i * nv + j];
-      }
-      vis = static_cast<double>(seen) / static_cast<double>(nv);
+      vis = this->VisibleFraction(shooter, visible.data() + i * nv);
     }
     this->SampleFactor[ids[i]] =
       vis > 0.0 ? vis * this->PointFormFactor(sample.Point, sample.Normal, shooter, counts) : 0.0;
@@ -304,6 +351,7 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
   {
     (mesh[e].ShooterNode == shooter ? own : pending).push_back(e);
   }
+  this->WeighTargets(shooter, own);
   std::vector<unsigned char> fresh(pending.size(), 0); // children of this shot's splits
   // The fraction of a shooter's power that leaves the scene depends on
   // geometry only: it is integrated at the shooter's first shot and reused.

@@ -80,6 +80,10 @@ private:
   /// The form factor kernel (disc or exact, by apparent size), no visibility.
   double PointFormFactor(const Vec3& p, const Vec3& n, std::uint32_t shooter, ShotResult& counts) const;
   bool FacesShooter(std::uint32_t receiver, std::uint32_t shooter) const;
+  /// Weighted fraction of the shooter's visibility targets seen (`visible` per target).
+  double VisibleFraction(std::uint32_t shooter, const unsigned char* visible) const;
+  /// Weights the shooter's targets by the unshot power of its leaves.
+  void WeighTargets(std::uint32_t shooter, const std::vector<std::uint32_t>& own);
   /// Evaluates the shared corner samples `ids` for one shot (one ray batch).
   void SampleTransfers(
     const std::uint32_t* ids, std::size_t count, std::uint32_t shooter, ShotResult& counts);
@@ -99,6 +103,7 @@ private:
   std::vector<std::uint16_t> MaxLevel; ///< per input triangle
   std::vector<std::uint32_t> ShooterSlot; ///< element -> index among the shooters
   std::vector<std::vector<Vec3>> Targets; ///< visibility sample points per shooter
+  std::vector<std::vector<double>> TargetWeights; ///< their weights at the last shot
   std::vector<RGB> ShotTotal;             ///< radiosity shot so far per shooter
   std::vector<double> EscapeFraction;     ///< per shooter, negative until first shot
   std::vector<SharedSample> Samples;
