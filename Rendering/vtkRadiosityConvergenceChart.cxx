@@ -191,11 +191,21 @@ int vtkRadiosityConvergenceChart::BuildPlots()
       }
       y->SetName(label.c_str());
       const vtkIdType n = std::min(time->GetNumberOfTuples(), values->GetNumberOfTuples());
+      // Values below 1e-12 of the column's largest are rounding noise (an
+      // energy balance of 1e-16 at the first iteration): they would only
+      // stretch the log axis.
+      double largest = 0.0;
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        const double v = std::abs(values->GetComponent(i, 0));
+        largest = std::isfinite(v) ? std::max(largest, v) : largest;
+      }
       for (vtkIdType i = 0; i < n; ++i)
       {
         const double t = time->GetComponent(i, 0);
         const double v = std::abs(values->GetComponent(i, 0));
-        if (std::isfinite(t) && std::isfinite(v) && v > 0.0 && (!this->LogTime || t > 0.0))
+        if (std::isfinite(t) && std::isfinite(v) && v > 1e-12 * largest &&
+          (!this->LogTime || t > 0.0))
         {
           x->InsertNextValue(t);
           y->InsertNextValue(v);

@@ -62,6 +62,8 @@ struct SolveArguments
   std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
   std::string Reference;
   std::size_t ReferenceSamples = 16384;
+  std::string ReferenceExr;
+  std::size_t ReferencePixelSamples = 64;
   bool DemoProbes = false; ///< the demo's fixed sensors with a path-traced reference
   int Width = 800, Height = 800;
   bool NoOvershooting = false;
@@ -132,6 +134,10 @@ int RunSolve(const SolveArguments& args)
     throw BadInput("--method " + args.Method +
       ": not available in this version (available: progressive, auto)");
   }
+  if (!args.ReferenceExr.empty() && args.Exr.empty())
+  {
+    throw BadInput("--reference-exr needs --exr (the same view, path traced)");
+  }
   if (!args.ProbeOutput.empty() && args.Probes.empty())
   {
     throw BadInput("--probe-output needs --probes");
@@ -166,29 +172,15 @@ int RunSolve(const SolveArguments& args)
   // The reference: a file of values at the probes, or a closed form the scene has.
   std::vector<RGB> reference;
   std::string referenceKind;
-  if (args.Reference == "analytic")
+  // The scene as the core sees it, for the references (the filter converts its own).
+  const auto coreScene = [&input]()
   {
     std::vector<std::string> ignored;
+    std::string why;
     Scene scene;
-    if (!vtkRadiositySceneConverter::ToScene(input, scene, error, ignored))
+    if (!vtkRadiositySceneConverter::ToScene(input, scene, why, ignored))
     {
-      throw BadInput(error);
-    }
-    AnalyticReference analytic;
-    if (!ComputeAnalyticReference(scene, probes, analytic, error))
-    {
-      throw BadInput("--reference analytic: " + error);
-    }
-    reference = analytic.Irradiance;
-    referenceKind = "analytic: " + analytic.Kind;
-  }
-  else if (args.Reference == "pathtraced")
-  {
-    std::vector<std::string> ignored;
-    Scene scene;
-    if (!vtkRadiositySceneConverter::ToScene(input, scene, error, ignored))
-    {
-      throw BadInput(error);
+      throw BadInput(why);
     }
     try
     {
@@ -199,6 +191,22 @@ int RunSolve(const SolveArguments& args)
       throw BadInput(e.what());
     }
     DropDegenerateTriangles(scene);
+    return scene;
+  };
+  if (args.Reference == "analytic")
+  {
+    const Scene scene = coreScene();
+    AnalyticReference analytic;
+    if (!ComputeAnalyticReference(scene, probes, analytic, error))
+    {
+      throw BadInput("--reference analytic: " + error);
+    }
+    reference = analytic.Irradiance;
+    referenceKind = "analytic: " + analytic.Kind;
+  }
+  else if (args.Reference == "pathtraced")
+  {
+    const Scene scene = coreScene();
     PathTracerOptions options;
     options.SamplesPerProbe = args.ReferenceSamples;
     const PathTracer tracer(scene, options);
@@ -311,6 +319,15 @@ int RunSolve(const SolveArguments& args)
       pinhole.ViewAngleDegrees = camera->GetViewAngle();
       const RadianceImage radiance = RenderRadiance(solution, pinhole, args.Width, args.Height);
       Check(cli::WriteExrHalf(args.Exr, radiance, error), error);
+      if (!args.ReferenceExr.empty())
+      {
+        // The path-traced reference of the same view, pixel for pixel.
+        PathTracerOptions options;
+        const PathTracer tracer(filter->GetScene(), options);
+        const RadianceImage truth =
+          tracer.Render(pinhole, args.Width, args.Height, args.ReferencePixelSamples);
+        Check(cli::WriteExrHalf(args.ReferenceExr, truth, error), error);
+      }
     }
   }
   phases["render_s"] = Since(renderStart);
@@ -444,6 +461,11 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--size", solve.Width, "image width and height in pixels")
     ->check(CLI::Range(16, 8192));
   solveCommand->add_flag("--no-overshooting", solve.NoOvershooting);
+  solveCommand->add_option("--reference-exr", solve.ReferenceExr,
+    "path-traced OpenEXR of the --exr view (linear radiance, the reference per pixel)");
+  solveCommand->add_option("--reference-pixel-samples", solve.ReferencePixelSamples,
+    "paths per pixel for --reference-exr (default 64)")
+    ->check(CLI::Range(std::size_t(1), std::size_t(1) << 20));
   solveCommand->add_option("--element-size", solve.ElementSize,
     "initial receiving element edge, fraction of the scene diagonal (default 1/16)")
     ->check(CLI::Range(1e-4, 1.0));
