@@ -87,6 +87,17 @@ string(JSON rms GET "${again}" error probe_output_rms_relative_error)
 if (rms GREATER 1e-12)
   message(FATAL_ERROR "the run's own values as reference: rms ${rms}")
 endif ()
+# The path-traced reference: at the probes, and per pixel of the --exr view.
+expect_exit(0 "${PROGRAM}" solve shadow --probes "${DATA}/shadow_probes.csv"
+  --reference pathtraced --reference-samples 4096 --exr "${WORK}/shadow.exr"
+  --reference-exr "${WORK}/shadow_reference.exr" --size 32 --report "${WORK}/shadow_pt.json")
+file(READ "${WORK}/shadow_pt.json" pt)
+string(JSON kind GET "${pt}" error reference)
+if (NOT kind MATCHES "^path traced: 4096 paths per probe" OR NOT EXISTS "${WORK}/shadow_reference.exr")
+  message(FATAL_ERROR "path-traced reference: ${kind}")
+endif ()
+expect_exit(2 "${PROGRAM}" solve shadow --reference-exr "${WORK}/bad.exr")
+
 expect_exit(2 "${PROGRAM}" solve shadow --probes "${DATA}/room_probes.csv"
   --reference "${WORK}/shadow_values.csv" --output "${WORK}/bad.vtp")
 expect_exit(2 "${PROGRAM}" solve cornell --probes "${DATA}/room_probes.csv"
