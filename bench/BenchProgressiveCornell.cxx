@@ -5,8 +5,8 @@
 // convergence histories (CSV) into the directory given as argv[1].
 #include "Radiosity/ProgressiveRadiosity.h"
 #include "Radiosity/SceneGenerators.h"
+#include "Radiosity/SystemInfo.h"
 
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -23,20 +23,6 @@ using namespace radiosity;
 
 namespace
 {
-std::string CpuModel()
-{
-  std::ifstream info("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(info, line))
-  {
-    if (line.rfind("model name", 0) == 0)
-    {
-      return line.substr(line.find(':') + 2);
-    }
-  }
-  return "unknown CPU";
-}
-
 struct Run
 {
   std::string Case;
@@ -110,13 +96,12 @@ int main(int argc, char* argv[])
   runs.push_back(Solve("closed room rho 0.999, no overshooting (20 s cap)", room, roomOptions));
   WriteHistory(dir + "/room0999_plain_history.csv", runs.back().Stats.History);
 
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
   std::ostringstream md;
   md << "# Progressive refinement radiosity benchmark\n\n"
      << "Machine: " << CpuModel() << ", " << std::thread::hardware_concurrency()
      << " hardware threads. Best of " << repetitions << " runs for the first row.\n"
-     << "Peak memory of the whole benchmark process: " << usage.ru_maxrss / 1024 << " MiB.\n\n"
+     << "Peak memory of the whole benchmark process: " << PeakMemoryBytes() / (1 << 20)
+     << " MiB.\n\n"
      << "| case | stop | time (s) | iterations | elements | rays | rays/s | rel. unshot | energy balance |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
   for (const Run& r : runs)

@@ -13,8 +13,8 @@
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/ProgressiveRadiosity.h"
 #include "Radiosity/SceneGenerators.h"
+#include "Radiosity/SystemInfo.h"
 
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -93,26 +93,6 @@ struct Setting
   double Tolerance;
 };
 
-std::string CpuModel()
-{
-  std::ifstream info("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(info, line))
-  {
-    if (line.rfind("model name", 0) == 0)
-    {
-      return line.substr(line.find(':') + 2);
-    }
-  }
-  return "unknown CPU";
-}
-
-double PeakMemory()
-{
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss * 1024.0;
-}
 }
 
 int RunBench(const std::string& outputDir, bool quick)
@@ -194,7 +174,7 @@ int RunBench(const std::string& outputDir, bool quick)
       std::snprintf(line, sizeof line,
         "progressive,%s,%g,%g,%.6f,%.6f,%.0f,%zu,%zu,%lld,%s,%.3e,%.6e,%.6e\n",
         setting.Name.c_str(), setting.ElementSize, setting.Tolerance, preprocess,
-        stats.SolveSeconds, PeakMemory(), stats.Elements, stats.RaysCast, stats.Iterations,
+        stats.SolveSeconds, PeakMemoryBytes(), stats.Elements, stats.RaysCast, stats.Iterations,
         ToString(stats.Stop), unshot, last.RmsError, last.MaxRelError);
       csv << line;
       std::snprintf(line, sizeof line,

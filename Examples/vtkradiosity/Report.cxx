@@ -1,7 +1,5 @@
 #include "Report.h"
 
-#include <sys/resource.h>
-
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -74,11 +72,5 @@ nlohmann::json HistoryJson(const ConvergenceHistory& history)
   return columns;
 }
 
-double PeakMemoryBytes()
-{
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) * 1024.0; // Linux reports kilobytes
-}
 }
 }

@@ -21,9 +21,6 @@ std::string HistoryCsv(const ConvergenceHistory& history);
 
 /// The history as JSON columns.
 nlohmann::json HistoryJson(const ConvergenceHistory& history);
-
-/// Peak resident memory of this process, bytes.
-double PeakMemoryBytes();
 }
 }
 

@@ -27,6 +27,7 @@
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
+#include "Radiosity/SystemInfo.h"
 #include "Radiosity/ProbeEvaluator.h"
 #include "Radiosity/RadianceImage.h"
 #include "Radiosity/SolutionMesh.h"
@@ -405,7 +406,7 @@ int RunSolve(const SolveArguments& args)
       { "probes", probes.size() }, { "probes_gathered_off_surface", gathered } };
     report["time"] = phases;
     report["time"]["total_s"] = Since(start);
-    report["peak_memory_bytes"] = cli::PeakMemoryBytes();
+    report["peak_memory_bytes"] = PeakMemoryBytes();
     report["convergence_history"] = cli::HistoryJson(stats.History);
     if (reference.empty())
     {

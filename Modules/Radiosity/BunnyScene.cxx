@@ -4,7 +4,6 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <map>
 #include <sstream>
 
 namespace radiosity
@@ -93,30 +92,7 @@ Scene MakeBunnyRoom(const Scene& source, int levels)
   Scene bunny = source;
   for (int l = 0; l < levels; ++l)
   {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
-    const auto midpoint = [&](std::uint32_t a, std::uint32_t b)
-    {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      const auto it = mid.find(key);
-      if (it != mid.end())
-      {
-        return it->second;
-      }
-      bunny.Points.push_back(0.5 * (bunny.Points[a] + bunny.Points[b]));
-      return mid[key] = static_cast<std::uint32_t>(bunny.Points.size() - 1);
-    };
-    std::vector<Triangle> next;
-    next.reserve(4 * bunny.Triangles.size());
-    for (const Triangle& t : bunny.Triangles)
-    {
-      const std::uint32_t ab = midpoint(t.V[0], t.V[1]), bc = midpoint(t.V[1], t.V[2]),
-                          ca = midpoint(t.V[2], t.V[0]);
-      next.push_back({ { t.V[0], ab, ca } });
-      next.push_back({ { ab, t.V[1], bc } });
-      next.push_back({ { ca, bc, t.V[2] } });
-      next.push_back({ { ab, bc, ca } });
-    }
-    bunny.Triangles.swap(next);
+    SubdivideAtMidpoints(bunny.Points, bunny.Triangles);
   }
   // Faces outward: a positive enclosed volume.
   double volume = 0.0;

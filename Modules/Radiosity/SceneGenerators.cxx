@@ -143,13 +143,43 @@ Scene MakeParallelSquares(double a, double c, int n, double reflectance, double 
   return s;
 }
 
+void SubdivideAtMidpoints(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
+  const std::function<Vec3(const Vec3&)>& place)
+{
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
+  const auto midpoint = [&](std::uint32_t a, std::uint32_t b)
+  {
+    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+    const auto it = mid.find(key);
+    if (it != mid.end())
+    {
+      return it->second;
+    }
+    const Vec3 m = 0.5 * (points[a] + points[b]);
+    points.push_back(place ? place(m) : m);
+    return mid[key] = static_cast<std::uint32_t>(points.size() - 1);
+  };
+  std::vector<Triangle> next;
+  next.reserve(4 * triangles.size());
+  for (const Triangle& t : triangles)
+  {
+    const std::uint32_t ab = midpoint(t.V[0], t.V[1]), bc = midpoint(t.V[1], t.V[2]),
+                        ca = midpoint(t.V[2], t.V[0]);
+    next.push_back({ { t.V[0], ab, ca } });
+    next.push_back({ { ab, t.V[1], bc } });
+    next.push_back({ { ca, bc, t.V[2] } });
+    next.push_back({ { ab, bc, ca } });
+  }
+  triangles.swap(next);
+}
+
 Scene MakeSphereInterior(double radius, int levels, double reflectance, const RGB& emission)
 {
   const double g = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<Vec3> v = { { -1, g, 0 }, { 1, g, 0 }, { -1, -g, 0 }, { 1, -g, 0 }, { 0, -1, g },
     { 0, 1, g }, { 0, -1, -g }, { 0, 1, -g }, { g, 0, -1 }, { g, 0, 1 }, { -g, 0, -1 },
     { -g, 0, 1 } };
-  std::vector<std::array<std::uint32_t, 3>> f = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 },
+  const std::vector<std::array<std::uint32_t, 3>> faces = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 },
     { 0, 7, 10 }, { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 },
     { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 },
     { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
@@ -157,44 +187,27 @@ Scene MakeSphereInterior(double radius, int levels, double reflectance, const RG
   {
     p = glm::normalize(p);
   }
+  std::vector<Triangle> f;
+  for (const auto& t : faces)
+  {
+    f.push_back({ t });
+  }
   for (int l = 0; l < levels; ++l)
   {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
-    const auto midpoint = [&](std::uint32_t a, std::uint32_t b)
-    {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      const auto it = mid.find(key);
-      if (it != mid.end())
-      {
-        return it->second;
-      }
-      v.push_back(glm::normalize(v[a] + v[b]));
-      return mid[key] = static_cast<std::uint32_t>(v.size() - 1);
-    };
-    std::vector<std::array<std::uint32_t, 3>> next;
-    for (const auto& t : f)
-    {
-      const std::uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]),
-                          ca = midpoint(t[2], t[0]);
-      next.push_back({ t[0], ab, ca });
-      next.push_back({ ab, t[1], bc });
-      next.push_back({ ca, bc, t[2] });
-      next.push_back({ ab, bc, ca });
-    }
-    f.swap(next);
+    SubdivideAtMidpoints(v, f, [](const Vec3& p) { return glm::normalize(p); });
   }
   Scene s;
   for (const Vec3& p : v)
   {
     s.Points.push_back(radius * p);
   }
-  for (const auto& t : f)
+  for (const Triangle& t : f)
   {
     // The icosahedron's faces point outward: reverse them to face inward.
-    s.Triangles.push_back({ { t[0], t[2], t[1] } });
+    s.Triangles.push_back({ { t.V[0], t.V[2], t.V[1] } });
     Material m;
     m.Reflectance = RGB(reflectance);
-    const Vec3 c = (v[t[0]] + v[t[1]] + v[t[2]]) / 3.0;
+    const Vec3 c = (v[t.V[0]] + v[t.V[1]] + v[t.V[2]]) / 3.0;
     m.Emission = c.z > 0.5 ? emission : RGB(0.0);
     s.Materials.push_back(m);
     s.ObjectIds.push_back(0);

@@ -5,7 +5,9 @@
 
 #include "Radiosity/Scene.h"
 
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace radiosity
 {
@@ -39,6 +41,14 @@ Scene MakeClosedCube(double size, int n, double reflectance, double emission);
 /// Two directly opposed parallel squares of side a at distance c (open scene):
 /// the lower one emits `emission` upward, the upper one reflects `reflectance`.
 Scene MakeParallelSquares(double a, double c, int n, double reflectance, double emission);
+/**
+ * Splits every triangle into four at its edge midpoints (shared between
+ * neighbours, so a watertight mesh stays watertight); `place`, when given,
+ * moves each new midpoint (onto a sphere, say).
+ */
+void SubdivideAtMidpoints(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
+  const std::function<Vec3(const Vec3&)>& place = {});
+
 /// The inside of a sphere (an icosphere subdivided `levels` times, faces
 /// inward), uniform reflectance, emission `emission` on the cap z > 0.5 r only.
 Scene MakeSphereInterior(double radius, int levels, double reflectance, const RGB& emission);
