@@ -145,6 +145,16 @@ int RunBench(const std::string& outputDir, bool quick)
        << "| method | setting | solve (s) | stop | iterations | elements | rays | RMS error | "
           "max error |\n|---|---|---|---|---|---|---|---|---|\n";
     vtkNew<vtkTable> curve;
+    vtkNew<vtkTable> during; // the default setting's error at every iteration
+    {
+      vtkNew<vtkDoubleArray> t, r, m;
+      t->SetName("time_s");
+      r->SetName("rms_error");
+      m->SetName("max_rel_error");
+      during->AddColumn(t);
+      during->AddColumn(r);
+      during->AddColumn(m);
+    }
     vtkNew<vtkDoubleArray> time, rms, worst;
     time->SetName("time_s");
     rms->SetName("rms_error");
@@ -182,6 +192,15 @@ int RunBench(const std::string& outputDir, bool quick)
         setting.Name.c_str(), stats.SolveSeconds, ToString(stats.Stop), unshot, stats.Iterations,
         stats.Elements, stats.RaysCast, last.RmsError, last.MaxRelError);
       md << line;
+      if (setting.Name == "default")
+      {
+        for (const ConvergenceRow& row : stats.History.Rows)
+        {
+          vtkDoubleArray::SafeDownCast(during->GetColumn(0))->InsertNextValue(preprocess + row.TimeSeconds);
+          vtkDoubleArray::SafeDownCast(during->GetColumn(1))->InsertNextValue(row.RmsError);
+          vtkDoubleArray::SafeDownCast(during->GetColumn(2))->InsertNextValue(row.MaxRelError);
+        }
+      }
       std::cout << "bench: " << standard.Name << " " << setting.Name << ": "
                 << ToString(stats.Stop) << "\n";
       time->InsertNextValue(std::max(stats.SolveSeconds + preprocess, 1e-6));
@@ -199,7 +218,8 @@ int RunBench(const std::string& outputDir, bool quick)
     curve->AddColumn(rms);
     curve->AddColumn(worst);
     vtkNew<vtkRadiosityConvergenceChart> chart;
-    chart->AddInputData(curve, "progressive");
+    chart->AddInputData(curve, "progressive, end of each setting");
+    chart->AddInputData(during, "progressive, default setting while it runs");
     chart->RemoveAllColumns();
     chart->AddColumn("rms_error", "RMS relative error");
     chart->AddColumn("max_rel_error", "max relative error");
@@ -210,6 +230,14 @@ int RunBench(const std::string& outputDir, bool quick)
     {
       fastest = std::min(fastest, time->GetValue(i));
       slowest = std::max(slowest, time->GetValue(i));
+    }
+    vtkDataArray* runTime = vtkDataArray::SafeDownCast(during->GetColumn(0));
+    for (vtkIdType i = 0; i < runTime->GetNumberOfTuples(); ++i)
+    {
+      if (runTime->GetComponent(i, 0) > 0.0)
+      {
+        fastest = std::min(fastest, runTime->GetComponent(i, 0));
+      }
     }
     chart->SetLogTime(slowest > 3.0 * fastest);
     chart->SetTitle(("Error against run time: " + standard.Name).c_str());
