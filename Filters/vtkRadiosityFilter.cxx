@@ -165,5 +165,6 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FormFactorTolerance: " << this->FormFactorTolerance << "\n";
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
   os << indent << "IndirectVisibilitySamples: " << this->IndirectVisibilitySamples << "\n";
+  os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";
   os << indent << "LastError: " << this->LastError << "\n";
 }
