@@ -9,5 +9,5 @@ cd "$root"
 if [ -n "${DISPLAY:-}" ]; then
   "$build/bin/vtkradiosity" demo --output-dir out "$@"
 else
-  xvfb-run -a -s "-screen 0 1920x1080x24" "$build/bin/vtkradiosity" demo --output-dir out "$@"
+  xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" "$build/bin/vtkradiosity" demo --output-dir out "$@"
 fi

@@ -5,4 +5,6 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$root/scripts/build.sh"
 build="${RADIOSITY_BUILD_DIR:-$root/build}"
 cd "$build"
-xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j "${RADIOSITY_JOBS:-$(nproc)}" "$@"
+# -noreset: by default Xvfb resets when its last client disconnects, and a
+# test connecting during that reset fails with "bad X server connection".
+xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure -j "${RADIOSITY_JOBS:-$(nproc)}" "$@"
