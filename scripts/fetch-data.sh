@@ -10,6 +10,6 @@ if ! command -v npm >/dev/null; then
 fi
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
-(cd "$tmp" && npm pack --silent bunny@1.0.1 >/dev/null 2>&1 && tar xzf bunny-1.0.1.tgz)
+(cd "$tmp" && timeout 120 npm pack --silent bunny@1.0.1 >/dev/null 2>&1 && tar xzf bunny-1.0.1.tgz)
 mkdir -p "$dest"
 cp "$tmp/package/index.js" "$dest/index.js"
