@@ -281,6 +281,16 @@ bool vtkRadiositySceneConverter::ToScene(vtkDataObject* input, radiosity::Scene&
 
 namespace
 {
+/// A one-component array of `n` tuples named `name`.
+template <typename ArrayT>
+vtkSmartPointer<ArrayT> NamedArray(const char* name, vtkIdType n)
+{
+  auto a = vtkSmartPointer<ArrayT>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(n);
+  return a;
+}
+
 vtkSmartPointer<vtkDoubleArray> ColourArray(const char* name, vtkIdType n)
 {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
@@ -340,12 +350,8 @@ vtkSmartPointer<vtkPolyData> vtkRadiositySceneConverter::FromScene(const radiosi
   auto reflectance = ColourArray("Reflectance", n);
   auto emission = ColourArray("Emission", n);
   auto specular = ColourArray("Specular", n);
-  vtkNew<vtkDoubleArray> shininess;
-  shininess->SetName("Shininess");
-  shininess->SetNumberOfTuples(n);
-  vtkNew<vtkIntArray> objects;
-  objects->SetName("ObjectId");
-  objects->SetNumberOfTuples(n);
+  auto shininess = NamedArray<vtkDoubleArray>("Shininess", n);
+  auto objects = NamedArray<vtkIntArray>("ObjectId", n);
   for (vtkIdType t = 0; t < n; ++t)
   {
     const radiosity::Material& m = scene.Materials[t];
@@ -377,15 +383,9 @@ vtkSmartPointer<vtkPolyData> vtkRadiositySceneConverter::FromSolution(
   auto cellRadiosity = ColourArray("Radiosity", nc);
   auto reflectance = ColourArray("Reflectance", nc);
   auto emission = ColourArray("Emission", nc);
-  vtkNew<vtkIdTypeArray> elementId;
-  elementId->SetName("ElementId");
-  elementId->SetNumberOfTuples(nc);
-  vtkNew<vtkIntArray> level;
-  level->SetName("Level");
-  level->SetNumberOfTuples(nc);
-  vtkNew<vtkIntArray> objects;
-  objects->SetName("ObjectId");
-  objects->SetNumberOfTuples(nc);
+  auto elementId = NamedArray<vtkIdTypeArray>("ElementId", nc);
+  auto level = NamedArray<vtkIntArray>("Level", nc);
+  auto objects = NamedArray<vtkIntArray>("ObjectId", nc);
   for (vtkIdType t = 0; t < nc; ++t)
   {
     const radiosity::Material& m = scene.Materials[solution.SourceTriangle[t]];

@@ -49,6 +49,14 @@ vtkSmartPointer<vtkDataObject> Run(vtkAlgorithm* reader, const std::string& file
   copy->ShallowCopy(out);
   return copy;
 }
+
+template <typename Reader>
+vtkSmartPointer<vtkDataObject> ReadWith(const std::string& file, std::string& error)
+{
+  vtkNew<Reader> reader;
+  reader->SetFileName(file.c_str());
+  return Run(reader, file, error);
+}
 }
 
 vtkSmartPointer<vtkDataObject> LoadScene(
@@ -92,27 +100,19 @@ vtkSmartPointer<vtkDataObject> LoadScene(
   }
   if (ext == "vtp" || ext == "vtm" || ext == "vtu" || ext == "vtpc" || ext == "vtpd")
   {
-    vtkNew<vtkXMLGenericDataObjectReader> reader;
-    reader->SetFileName(scene.c_str());
-    return Run(reader, scene, error);
+    return ReadWith<vtkXMLGenericDataObjectReader>(scene, error);
   }
   if (ext == "vtk")
   {
-    vtkNew<vtkDataSetReader> reader;
-    reader->SetFileName(scene.c_str());
-    return Run(reader, scene, error);
+    return ReadWith<vtkDataSetReader>(scene, error);
   }
   if (ext == "ply")
   {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(scene.c_str());
-    return Run(reader, scene, error);
+    return ReadWith<vtkPLYReader>(scene, error);
   }
   if (ext == "stl")
   {
-    vtkNew<vtkSTLReader> reader;
-    reader->SetFileName(scene.c_str());
-    return Run(reader, scene, error);
+    return ReadWith<vtkSTLReader>(scene, error);
   }
   error = "unknown scene file type '." + ext + "' (" + scene +
     "): use .vtp, .vtm, .vtk, .ply, .stl or .obj, or a built-in scene: cornell, shadow, contact, "

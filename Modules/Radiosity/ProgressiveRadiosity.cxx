@@ -337,7 +337,8 @@ bool ProgressiveRadiosity::Transfer(std::uint32_t receiver, std::uint32_t shoote
   return true;
 }
 
-void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverStatistics& stats)
+void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
+  const std::vector<std::uint32_t>& leaves, SolverStatistics& stats)
 {
   ElementMesh& mesh = *this->Elements;
   const double shooterArea = mesh[shooter].Area;
@@ -347,7 +348,7 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot, SolverS
   std::vector<std::uint32_t> pending;
   pending.reserve(mesh.NumberOfLeaves());
   std::vector<std::uint32_t> own;
-  for (std::uint32_t e : mesh.Leaves())
+  for (std::uint32_t e : leaves)
   {
     (mesh[e].ShooterNode == shooter ? own : pending).push_back(e);
   }
@@ -665,7 +666,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       break;
     }
     mesh[sel.Best].Unshot = -overshoot; // handed to the shooter's leaves after the shot
-    this->Shoot(sel.Best, nodeUnshot + overshoot, stats);
+    this->Shoot(sel.Best, nodeUnshot + overshoot, leaves, stats);
   }
   stats.Elements = mesh.NumberOfLeaves();
   stats.RaysCast = this->Rays->RaysCast();

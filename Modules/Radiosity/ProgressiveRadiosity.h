@@ -67,7 +67,9 @@ public:
 private:
   struct ShotResult;
   struct TransferScratch;
-  void Shoot(std::uint32_t shooter, const RGB& shot, SolverStatistics& stats);
+  /// One shot; `leaves` are the current leaves (the selection pass has them).
+  void Shoot(std::uint32_t shooter, const RGB& shot, const std::vector<std::uint32_t>& leaves,
+    SolverStatistics& stats);
   /// Form factors times visibility from the receiver's four samples to the
   /// shooter node; false when the pair faces away (no transfer).
   /// `cornerFactors`, when given, are the three corners' values already computed.

@@ -71,6 +71,18 @@ double Seconds(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+/// Irradiance at the probes, with the time and rays it took on the test log.
+std::vector<ReferenceValue> TimedIrradiance(
+  const Scene& scene, const PathTracerOptions& options, const std::vector<Probe>& probes)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const PathTracer tracer(scene, options);
+  std::vector<ReferenceValue> values = tracer.Irradiance(probes);
+  std::cout << "  " << probes.size() << " probes x " << options.SamplesPerProbe << " samples: "
+            << Seconds(start) << " s, " << tracer.RaysCast() << " rays\n";
+  return values;
+}
 } // namespace
 
 TEST(PathTracer, DirectLightFromSquareMatchesContourFormula)
@@ -176,11 +188,7 @@ TEST(PathTracer, ClosedCubeHalfReflectance)
     MakeProbe({ 0.4, 0.5, 0.6 }, { 1, 2, -3 }) };
   PathTracerOptions options;
   options.SamplesPerProbe = 65536;
-  const auto start = std::chrono::steady_clock::now();
-  const PathTracer tracer(scene, options);
-  const auto values = tracer.Irradiance(probes);
-  std::cout << "  " << probes.size() << " probes x " << options.SamplesPerProbe << " samples: "
-            << Seconds(start) << " s, " << tracer.RaysCast() << " rays\n";
+  const auto values = TimedIrradiance(scene, options, probes);
   for (std::size_t i = 0; i < probes.size(); ++i)
   {
     ExpectAgrees(values[i], RGB(e / (1.0 - rho)), "rho 0.5, probe " + std::to_string(i));
@@ -204,11 +212,7 @@ TEST(PathTracer, ClosedCubeHighReflectanceWithRoulette)
     MakeProbe({ 0.3, 1.0, 0.9 }, { 0, -1, 0 }) };
   PathTracerOptions options;
   options.SamplesPerProbe = 262144;
-  const auto start = std::chrono::steady_clock::now();
-  const PathTracer tracer(scene, options);
-  const auto values = tracer.Irradiance(probes);
-  std::cout << "  " << probes.size() << " probes x " << options.SamplesPerProbe << " samples: "
-            << Seconds(start) << " s, " << tracer.RaysCast() << " rays\n";
+  const auto values = TimedIrradiance(scene, options, probes);
   // Exact up to the bounce cap: the reflections past 64 carry rho^65 ~ 0.1 %.
   for (std::size_t i = 0; i < probes.size(); ++i)
   {
