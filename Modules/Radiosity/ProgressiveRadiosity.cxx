@@ -1,6 +1,7 @@
 #include "Radiosity/ProgressiveRadiosity.h"
 
 #include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/Stopwatch.h"
 #include "Radiosity/FormFactor.h"
 #include "Radiosity/MeshProbeTracker.h"
 #include "Radiosity/ShooterSamples.h"
@@ -21,15 +22,6 @@ namespace
 {
 // Corner samples sit this fraction of the way towards their element's centre.
 constexpr double CornerInset = 1e-6;
-using Clock = std::chrono::steady_clock;
-double Seconds(Clock::time_point since)
-{
-  return std::chrono::duration<double>(Clock::now() - since).count();
-}
-double Mean(const RGB& c)
-{
-  return SumComponents(c) / 3.0;
-}
 
 struct Selection
 {
@@ -537,7 +529,7 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
 SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
-  const auto start = Clock::now();
+  const Stopwatch start;
   std::unique_ptr<tbb::global_control> threads;
   if (this->Settings.Threads > 0)
   {
@@ -565,7 +557,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
   if (!(emitted > 0.0))
   {
     stats.Stop = StopReason::NoEmitters;
-    stats.SolveSeconds = Seconds(start);
+    stats.SolveSeconds = start.Seconds();
     return stats;
   }
   // Cohen 1988's interreflection factor R = 1 / (1 - mean reflectance).
@@ -616,7 +608,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       nodePower[n] = RGB(0.0);
     }
 
-    const double elapsed = Seconds(start);
+    const double elapsed = start.Seconds();
     ConvergenceRow row;
     row.Iteration = iteration;
     row.TimeSeconds = elapsed;
@@ -672,7 +664,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
   stats.RaysCast = this->Rays->RaysCast();
   stats.AbsorbedPowerW = this->Absorbed;
   stats.EscapedPowerW = this->Escaped;
-  stats.SolveSeconds = Seconds(start);
+  stats.SolveSeconds = start.Seconds();
   return stats;
 }
 } // namespace radiosity

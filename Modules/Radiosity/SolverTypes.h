@@ -60,6 +60,9 @@ struct SolverStatistics
   std::size_t PairsFacingAway = 0;   ///< element pairs skipped: no transfer possible
   std::size_t PairsUnoccludable = 0; ///< visible pairs that needed no ray
   std::size_t Occluders = 0;         ///< input triangles that can block a transfer
+  std::size_t Links = 0;             ///< hierarchical: node-to-node transfers
+  std::size_t PartialLinks = 0;      ///< hierarchical: links with recorded blockers
+  std::size_t HiddenLinks = 0;       ///< hierarchical: links found fully occluded
   double EmittedPowerW = 0.0;
   double UnshotPowerW = 0.0;
   double AbsorbedPowerW = 0.0;

@@ -23,6 +23,11 @@ inline double MaxComponent(const RGB& c)
 {
   return c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b);
 }
+inline double Mean(const RGB& c)
+{
+  return (c.x + c.y + c.z) / 3.0;
+}
+
 inline double SumComponents(const RGB& c)
 {
   return c.r + c.g + c.b;

@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -46,7 +47,9 @@ Visibility::Visibility(const Scene& scene, const std::vector<unsigned char>& can
     throw std::runtime_error("Embree: cannot create a device");
   }
   this->Impl->Scene = rtcNewScene(this->Impl->Device);
-  rtcSetSceneFlags(this->Impl->Scene, RTC_SCENE_FLAG_ROBUST);
+  // The context filter lets CollectOccluders see every hit along a segment.
+  rtcSetSceneFlags(
+    this->Impl->Scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(this->Impl->Scene, RTC_BUILD_QUALITY_HIGH);
   if (this->NumberOfOccluders > 0)
   {
@@ -151,6 +154,76 @@ void Visibility::TestSegments(
     }
   }
   this->Impl->Rays += cast;
+}
+
+namespace
+{
+// The intersect context comes first so that Embree's context pointer is ours.
+struct CollectingContext
+{
+  RTCIntersectContext Context;
+  const std::vector<unsigned>* GeometryToTriangle;
+  std::vector<std::uint32_t>* Hits;
+};
+
+void CollectHit(const RTCFilterFunctionNArguments* args)
+{
+  auto* ctx = reinterpret_cast<CollectingContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i)
+  {
+    if (args->valid[i] == 0)
+    {
+      continue;
+    }
+    const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+    ctx->Hits->push_back((*ctx->GeometryToTriangle)[prim]);
+    args->valid[i] = 0; // reject, so that traversal goes on to farther hits
+  }
+}
+}
+
+void Visibility::CollectOccluders(
+  const Vec3* from, const Vec3* to, std::size_t n, std::vector<std::uint32_t>& triangles) const
+{
+  if (this->Empty())
+  {
+    return;
+  }
+  const std::size_t first = triangles.size();
+  CollectingContext ctx;
+  rtcInitIntersectContext(&ctx.Context);
+  ctx.Context.filter = &CollectHit;
+  ctx.GeometryToTriangle = &this->Impl->GeometryToTriangle;
+  ctx.Hits = &triangles;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Vec3 o = from[i] - this->Impl->Origin;
+    const Vec3 d = to[i] - from[i];
+    const double len = glm::length(d);
+    if (len <= 2.0 * this->Epsilon)
+    {
+      continue;
+    }
+    RTCRayHit rh;
+    rh.ray.org_x = static_cast<float>(o.x);
+    rh.ray.org_y = static_cast<float>(o.y);
+    rh.ray.org_z = static_cast<float>(o.z);
+    rh.ray.dir_x = static_cast<float>(d.x / len);
+    rh.ray.dir_y = static_cast<float>(d.y / len);
+    rh.ray.dir_z = static_cast<float>(d.z / len);
+    rh.ray.tnear = static_cast<float>(this->Epsilon);
+    rh.ray.tfar = static_cast<float>(len - this->Epsilon);
+    rh.ray.time = 0.f;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(this->Impl->Scene, &ctx.Context, &rh);
+  }
+  this->Impl->Rays += n;
+  std::sort(triangles.begin() + static_cast<std::ptrdiff_t>(first), triangles.end());
+  triangles.erase(std::unique(triangles.begin() + static_cast<std::ptrdiff_t>(first), triangles.end()),
+    triangles.end());
 }
 
 bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, double& t,

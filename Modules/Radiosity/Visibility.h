@@ -6,6 +6,7 @@
 #include "Radiosity/Scene.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -36,6 +37,15 @@ public:
    * Thread-safe; call it from parallel loops with batches of segments.
    */
   void TestSegments(const Vec3* from, const Vec3* to, std::size_t n, unsigned char* visible) const;
+
+  /**
+   * Every occluder that any of the segments from[i] -> to[i] passes through
+   * (not only the nearest), appended to `triangles` as scene triangle indices
+   * (sorted, without repeats). These are the blockers of a link (Hanrahan,
+   * Salzman, Aupperle 1991; Hardt & Teller section 3). Thread-safe.
+   */
+  void CollectOccluders(
+    const Vec3* from, const Vec3* to, std::size_t n, std::vector<std::uint32_t>& triangles) const;
 
   /// Nearest hit of a ray, for primary rays of images; returns false on a miss.
   /// Only meaningful when built over every triangle (see `AllTriangles`).

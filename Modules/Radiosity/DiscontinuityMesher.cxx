@@ -1,0 +1,4 @@
+// Filled in by the issue-4 work.
+namespace radiosity
+{
+}

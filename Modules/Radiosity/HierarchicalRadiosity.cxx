@@ -1,0 +1,599 @@
+#include "Radiosity/HierarchicalRadiosity.h"
+
+#include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/Stopwatch.h"
+#include "Radiosity/FormFactor.h"
+#include "Radiosity/MeshProbeTracker.h"
+#include "Radiosity/Visibility.h"
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace radiosity
+{
+namespace
+{
+
+// Receiver points: the centroids of the four midpoint sub-triangles, equal
+// weights (exact for linear integrands).
+constexpr double RuleA[4][3] = { { 2.0 / 3, 1.0 / 6, 1.0 / 6 }, { 1.0 / 6, 2.0 / 3, 1.0 / 6 },
+  { 1.0 / 6, 1.0 / 6, 2.0 / 3 }, { 1.0 / 3, 1.0 / 3, 1.0 / 3 } };
+// A second set nearer the corners, for finding the blockers of partial links.
+constexpr double RuleB[4][3] = { { 0.8, 0.1, 0.1 }, { 0.1, 0.8, 0.1 }, { 0.1, 0.1, 0.8 },
+  { 0.45, 0.45, 0.1 } };
+
+Vec3 At(const TriangleCorners& t, const double (&b)[3])
+{
+  return b[0] * t[0] + b[1] * t[1] + b[2] * t[2];
+}
+} // namespace
+
+HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const HierarchicalOptions& options)
+  : SourceScene(scene)
+  , Settings(options)
+  , SceneInfo(AnalyzeScene(scene))
+{
+  this->Rays = std::make_unique<Visibility>(scene, this->SceneInfo.CanOcclude);
+  // Roots only: one node per input triangle, split where the links ask.
+  this->Elements = std::make_unique<ElementMesh>(scene, 1e300, 1e300, 0);
+  const double diag = this->SceneInfo.Diagonal > 0 ? this->SceneInfo.Diagonal : 1.0;
+  this->MinEdge = this->Settings.MinElementSize * diag;
+  this->PlaneTolerance = 1e-9 * diag;
+  double brightest = 0.0;
+  for (const Material& m : scene.Materials)
+  {
+    brightest = std::max(brightest, MaxComponent(m.Emission));
+  }
+  this->Epsilon = this->Settings.LinkTolerance > 0
+    ? this->Settings.LinkTolerance
+    : this->Settings.RelativeLinkTolerance * brightest;
+  const std::size_t n = this->Elements->Elements().size();
+  this->NodeRadiosity.resize(n);
+  this->NodeGathered.assign(n, RGB(0.0));
+  this->NodeIrradiance.assign(n, RGB(0.0));
+  for (std::uint32_t e = 0; e < n; ++e)
+  {
+    this->NodeRadiosity[e] = this->Elements->MaterialOf(e).Emission;
+    this->Roots.push_back(e);
+  }
+}
+
+HierarchicalRadiosity::~HierarchicalRadiosity() = default;
+
+TriangleCorners HierarchicalRadiosity::Corners(std::uint32_t e) const
+{
+  const ElementMesh& mesh = *this->Elements;
+  return { mesh.Corner(e, 0), mesh.Corner(e, 1), mesh.Corner(e, 2) };
+}
+
+double HierarchicalRadiosity::FormFactorEstimate(std::uint32_t from, std::uint32_t to) const
+{
+  const TriangleCorners a = this->Corners(from);
+  const TriangleCorners b = this->Corners(to);
+  const Vec3& n = (*this->Elements)[from].Normal;
+  double f = 0.0;
+  for (const auto& w : RuleA)
+  {
+    f = std::max(f, PointToPolygonFormFactor(At(a, w), n, b.data(), 3));
+  }
+  return f;
+}
+
+bool HierarchicalRadiosity::Splittable(std::uint32_t e) const
+{
+  return this->Elements->LongestEdge(e) > this->MinEdge;
+}
+
+std::uint32_t HierarchicalRadiosity::Children(std::uint32_t e)
+{
+  ElementMesh& mesh = *this->Elements;
+  if (!mesh[e].IsLeaf())
+  {
+    return static_cast<std::uint32_t>(mesh[e].FirstChild);
+  }
+  const std::uint32_t first = mesh.Subdivide(e);
+  const std::size_t n = mesh.Elements().size();
+  this->NodeRadiosity.resize(n, this->NodeRadiosity[e]);
+  this->NodeGathered.resize(n, RGB(0.0));
+  this->NodeIrradiance.resize(n, this->NodeIrradiance[e]);
+  return first;
+}
+
+void HierarchicalRadiosity::Refine(std::uint32_t p, std::uint32_t q, std::vector<PendingLink>& out)
+{
+  const ElementMesh& mesh = *this->Elements;
+  // Nothing passes between nodes that are wholly behind each other.
+  auto inFront = [&](std::uint32_t a, std::uint32_t b) {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (glm::dot(mesh.Corner(a, k) - mesh[b].Centroid, mesh[b].Normal) > this->PlaneTolerance)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  if (!inFront(q, p) || !inFront(p, q))
+  {
+    return;
+  }
+  const double fpq = this->FormFactorEstimate(p, q);
+  const double fqp = this->FormFactorEstimate(q, p);
+  const double bq = MaxComponent(this->NodeRadiosity[q]);
+  const bool sp = this->Splittable(p), sq = this->Splittable(q);
+  if (bq * std::max(fpq, fqp) <= this->Epsilon || (!sp && !sq))
+  {
+    out.push_back({ p, q });
+    return;
+  }
+  if ((fqp >= fpq && sp) || !sq)
+  {
+    const std::uint32_t c = this->Children(p);
+    for (std::uint32_t i = 0; i < 4; ++i)
+    {
+      this->Refine(c + i, q, out);
+    }
+  }
+  else
+  {
+    const std::uint32_t c = this->Children(q);
+    for (std::uint32_t i = 0; i < 4; ++i)
+    {
+      this->Refine(p, c + i, out);
+    }
+  }
+}
+
+void HierarchicalRadiosity::InitialLinks(std::vector<PendingLink>& out)
+{
+  for (std::uint32_t p : this->Roots)
+  {
+    for (std::uint32_t q : this->Roots)
+    {
+      if (p != q)
+      {
+        this->Refine(p, q, out);
+      }
+    }
+  }
+}
+
+std::size_t HierarchicalRadiosity::RefineLinks(std::vector<PendingLink>& out)
+{
+  std::vector<HierarchicalLink> kept;
+  kept.reserve(this->LinkList.size());
+  std::size_t changed = 0;
+  for (const HierarchicalLink& l : this->LinkList)
+  {
+    const double bq = MaxComponent(this->NodeRadiosity[l.Source]);
+    const bool refinable = l.Kind != HierarchicalLink::Hidden &&
+      (this->Splittable(l.Receiver) || this->Splittable(l.Source));
+    if (refinable &&
+      bq * std::max(this->FormFactorEstimate(l.Receiver, l.Source),
+             this->FormFactorEstimate(l.Source, l.Receiver)) > this->Epsilon)
+    {
+      this->Refine(l.Receiver, l.Source, out);
+      ++changed;
+    }
+    else
+    {
+      kept.push_back(l);
+    }
+  }
+  this->LinkList.swap(kept);
+  return changed;
+}
+
+void HierarchicalRadiosity::ComputeLinks(
+  const std::vector<PendingLink>& pending, SolverStatistics& stats)
+{
+  struct Result
+  {
+    HierarchicalLink Link;
+    std::vector<std::uint32_t> Blockers;
+  };
+  std::vector<Result> results(pending.size());
+  const Scene& scene = this->SourceScene;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 16),
+    [&](const tbb::blocked_range<std::size_t>& range) {
+      std::vector<TriangleCorners> blockerCorners;
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+      {
+        Result& res = results[i];
+        HierarchicalLink& link = res.Link;
+        link.Receiver = pending[i].Receiver;
+        link.Source = pending[i].Source;
+        const TriangleCorners p = this->Corners(link.Receiver);
+        const TriangleCorners q = this->Corners(link.Source);
+        const Vec3& n = (*this->Elements)[link.Receiver].Normal;
+        int seen = 16;
+        if (!this->Rays->Empty())
+        {
+          Vec3 from[16], to[16];
+          unsigned char visible[16];
+          for (int a = 0; a < 4; ++a)
+          {
+            for (int b = 0; b < 4; ++b)
+            {
+              from[4 * a + b] = At(p, RuleA[a]);
+              to[4 * a + b] = At(q, RuleA[b]);
+            }
+          }
+          this->Rays->TestSegments(from, to, 16, visible);
+          seen = 0;
+          for (unsigned char v : visible)
+          {
+            seen += v;
+          }
+          if (seen > 0 && seen < 16)
+          {
+            // Blockers: every occluder met by rays between both point sets.
+            Vec3 more[48][2];
+            int m = 0;
+            for (int a = 0; a < 4; ++a)
+            {
+              for (int b = 0; b < 4; ++b)
+              {
+                more[m][0] = At(p, RuleA[a]);
+                more[m++][1] = At(q, RuleA[b]);
+                more[m][0] = At(p, RuleB[a]);
+                more[m++][1] = At(q, RuleA[b]);
+                more[m][0] = At(p, RuleA[a]);
+                more[m++][1] = At(q, RuleB[b]);
+              }
+            }
+            Vec3 f[48], t[48];
+            for (int k = 0; k < 48; ++k)
+            {
+              f[k] = more[k][0];
+              t[k] = more[k][1];
+            }
+            this->Rays->CollectOccluders(f, t, 48, res.Blockers);
+            const std::uint32_t own[2] = { (*this->Elements)[link.Receiver].Source,
+              (*this->Elements)[link.Source].Source };
+            res.Blockers.erase(std::remove_if(res.Blockers.begin(), res.Blockers.end(),
+                                 [&](std::uint32_t b) { return b == own[0] || b == own[1]; }),
+              res.Blockers.end());
+            if (res.Blockers.size() > this->Settings.MaxBlockersPerLink)
+            {
+              res.Blockers.resize(this->Settings.MaxBlockersPerLink);
+            }
+          }
+        }
+        if (seen == 0)
+        {
+          link.Kind = HierarchicalLink::Hidden;
+          continue;
+        }
+        link.Kind = seen == 16 || res.Blockers.empty() ? HierarchicalLink::Visible
+                                                       : HierarchicalLink::Partial;
+        blockerCorners.clear();
+        for (std::uint32_t b : res.Blockers)
+        {
+          blockerCorners.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
+        }
+        double f = 0.0;
+        for (const auto& w : RuleA)
+        {
+          f += 0.25 *
+            (link.Kind == HierarchicalLink::Partial
+                ? VisibleFormFactor(At(p, w), n, q, blockerCorners.data(), blockerCorners.size())
+                : PointToPolygonFormFactor(At(p, w), n, q.data(), 3));
+        }
+        // Blocked rays without a recorded blocker: scale by the fraction seen.
+        if (seen < 16 && res.Blockers.empty())
+        {
+          f *= seen / 16.0;
+        }
+        link.Factor = f;
+      }
+    });
+  for (Result& r : results)
+  {
+    r.Link.FirstBlocker = static_cast<std::uint32_t>(this->BlockerPool.size());
+    r.Link.BlockerCount = static_cast<std::uint32_t>(r.Blockers.size());
+    this->BlockerPool.insert(this->BlockerPool.end(), r.Blockers.begin(), r.Blockers.end());
+    this->LinkList.push_back(r.Link);
+    stats.PartialLinks += r.Link.Kind == HierarchicalLink::Partial;
+    stats.HiddenLinks += r.Link.Kind == HierarchicalLink::Hidden;
+  }
+}
+
+void HierarchicalRadiosity::IndexLinks()
+{
+  std::stable_sort(this->LinkList.begin(), this->LinkList.end(),
+    [](const HierarchicalLink& a, const HierarchicalLink& b) { return a.Receiver < b.Receiver; });
+  const std::size_t n = this->Elements->Elements().size();
+  this->LinkOffsets.assign(n + 1, 0);
+  for (const HierarchicalLink& l : this->LinkList)
+  {
+    ++this->LinkOffsets[l.Receiver + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    this->LinkOffsets[i + 1] += this->LinkOffsets[i];
+  }
+}
+
+std::vector<std::uint32_t> HierarchicalRadiosity::LinksOf(std::uint32_t e) const
+{
+  std::vector<std::uint32_t> out;
+  if (e + 1 < this->LinkOffsets.size())
+  {
+    for (std::uint32_t i = this->LinkOffsets[e]; i < this->LinkOffsets[e + 1]; ++i)
+    {
+      out.push_back(i);
+    }
+  }
+  return out;
+}
+
+RGB HierarchicalRadiosity::PushPull(std::uint32_t e, const RGB& down, std::vector<RGB>& change)
+{
+  const ElementMesh& mesh = *this->Elements;
+  const Element& el = mesh[e];
+  const RGB h = down + this->NodeGathered[e];
+  this->NodeIrradiance[e] = h;
+  if (el.IsLeaf())
+  {
+    const Material& m = mesh.MaterialOf(e);
+    const RGB b = m.Emission + m.Reflectance * h;
+    change[e] = b - this->NodeRadiosity[e];
+    this->NodeRadiosity[e] = b;
+    return b;
+  }
+  RGB sum(0.0);
+  double area = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    const std::uint32_t c = static_cast<std::uint32_t>(el.FirstChild + i);
+    sum += mesh[c].Area * this->PushPull(c, h, change);
+    area += mesh[c].Area;
+  }
+  this->NodeRadiosity[e] = area > 0 ? sum / area : this->NodeRadiosity[e];
+  return this->NodeRadiosity[e];
+}
+
+RGB HierarchicalRadiosity::Pull(std::uint32_t e)
+{
+  const ElementMesh& mesh = *this->Elements;
+  const Element& el = mesh[e];
+  if (el.IsLeaf())
+  {
+    return this->NodeRadiosity[e];
+  }
+  RGB sum(0.0);
+  double area = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    const std::uint32_t c = static_cast<std::uint32_t>(el.FirstChild + i);
+    sum += mesh[c].Area * this->Pull(c);
+    area += mesh[c].Area;
+  }
+  this->NodeRadiosity[e] = area > 0 ? sum / area : this->NodeRadiosity[e];
+  return this->NodeRadiosity[e];
+}
+
+double HierarchicalRadiosity::Sweep(std::vector<RGB>& change)
+{
+  const std::size_t n = this->Elements->Elements().size();
+  change.assign(n, RGB(0.0));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
+    [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t e = range.begin(); e != range.end(); ++e)
+      {
+        RGB g(0.0);
+        for (std::uint32_t i = this->LinkOffsets[e]; i < this->LinkOffsets[e + 1]; ++i)
+        {
+          const HierarchicalLink& l = this->LinkList[i];
+          g += l.Factor * this->NodeRadiosity[l.Source];
+        }
+        this->NodeGathered[e] = g;
+      }
+    });
+  tbb::parallel_for(std::size_t(0), this->Roots.size(),
+    [&](std::size_t r) { this->PushPull(this->Roots[r], RGB(0.0), change); });
+  double delta = 0.0;
+  for (std::size_t e = 0; e < n; ++e)
+  {
+    delta += Mean(glm::abs(change[e])) * (*this->Elements)[static_cast<std::uint32_t>(e)].Area;
+  }
+  return delta;
+}
+
+void HierarchicalRadiosity::StoreLeafIrradiance()
+{
+  ElementMesh& mesh = *this->Elements;
+  for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
+  {
+    ElementSamples& s = mesh[e].Irradiance;
+    s.Corner = { this->NodeIrradiance[e], this->NodeIrradiance[e], this->NodeIrradiance[e] };
+    s.Centre = this->NodeIrradiance[e];
+  }
+}
+
+SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
+{
+  SolverStatistics stats;
+  const Stopwatch start;
+  std::unique_ptr<tbb::global_control> threads;
+  if (this->Settings.Threads > 0)
+  {
+    threads = std::make_unique<tbb::global_control>(
+      tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(this->Settings.Threads));
+  }
+  ElementMesh& mesh = *this->Elements;
+  stats.Occluders = this->SceneInfo.Occluders;
+  double emitted = 0.0;
+  for (std::uint32_t e : this->Roots)
+  {
+    emitted += Mean(mesh.MaterialOf(e).Emission) * mesh[e].Area;
+  }
+  stats.EmittedPowerW = emitted;
+  stats.Elements = mesh.NumberOfLeaves();
+  if (!(emitted > 0.0))
+  {
+    stats.Stop = StopReason::NoEmitters;
+    stats.SolveSeconds = start.Seconds();
+    return stats;
+  }
+  std::unique_ptr<MeshProbeTracker> tracker;
+  if (!this->Settings.ErrorProbes.empty() &&
+    this->Settings.ErrorReference.size() == this->Settings.ErrorProbes.size())
+  {
+    tracker = std::make_unique<MeshProbeTracker>(
+      mesh, this->Settings.ErrorProbes, 1e-6 * this->SceneInfo.Diagonal);
+    stats.ErrorProbesTracked = tracker->Tracked();
+  }
+  auto report = [&](const char* phase, long long iteration, double residual) {
+    if (!progress)
+    {
+      return true;
+    }
+    ProgressStatus status;
+    status.Phase = phase;
+    status.Iteration = iteration;
+    status.Residual = residual;
+    status.Fraction = std::clamp(
+      std::log(std::max(residual, 1e-300)) / std::log(this->Settings.Tolerance), 0.0, 1.0);
+    return progress(status);
+  };
+
+  std::vector<PendingLink> pending;
+  if (!report("linking", 0, 1.0))
+  {
+    stats.Stop = StopReason::Aborted;
+    stats.SolveSeconds = start.Seconds();
+    return stats;
+  }
+  this->InitialLinks(pending);
+  this->ComputeLinks(pending, stats);
+  this->IndexLinks();
+
+  std::vector<RGB> change;
+  double previousDelta = -1.0, previousRatio = -1.0;
+  bool extrapolated = false;
+  int round = 0;
+  stats.Stop = StopReason::IterationLimit;
+  for (long long iteration = 0;; ++iteration)
+  {
+    const double delta = this->Sweep(change);
+    const double ratio = previousDelta > 0 ? delta / previousDelta : -1.0;
+    const double remaining =
+      ratio > 0 && ratio < 1 ? delta * ratio / (1.0 - ratio) : std::max(delta, 0.0);
+    double total = 0.0, absorbed = 0.0;
+    for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
+    {
+      if (mesh[e].IsLeaf())
+      {
+        const Material& m = mesh.MaterialOf(e);
+        total += Mean(this->NodeRadiosity[e]) * mesh[e].Area;
+        absorbed += Mean((RGB(1.0) - m.Reflectance) * this->NodeIrradiance[e]) * mesh[e].Area;
+      }
+    }
+    this->StoreLeafIrradiance();
+
+    const double elapsed = start.Seconds();
+    ConvergenceRow row;
+    row.Iteration = iteration;
+    row.TimeSeconds = elapsed;
+    row.UnshotPowerW = remaining;
+    // Power that leaves the surfaces and is received nowhere: what escapes
+    // an open scene, and the form factor error of a closed one.
+    double received = 0.0;
+    for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
+    {
+      received += Mean(this->NodeGathered[e]) * mesh[e].Area;
+    }
+    const double escaped = total - received;
+    row.EnergyBalance = (emitted - absorbed - escaped) / emitted;
+    if (tracker)
+    {
+      const ErrorFigures errors = RelativeErrors(tracker->Evaluate(), this->Settings.ErrorReference);
+      row.RmsError = errors.Rms;
+      row.MaxRelError = errors.Max;
+    }
+    stats.History.Rows.push_back(row);
+    stats.Iterations = iteration;
+    stats.UnshotPowerW = remaining;
+    stats.AbsorbedPowerW = absorbed;
+    stats.EscapedPowerW = escaped;
+
+    const double relative = total > 0 ? remaining / total : 0.0;
+    if (!report("gathering", iteration, relative))
+    {
+      stats.Stop = StopReason::Aborted;
+      break;
+    }
+    if (relative <= this->Settings.Tolerance && !extrapolated)
+    {
+      pending.clear();
+      if (round < this->Settings.MaxRefinementRounds && this->RefineLinks(pending) > 0)
+      {
+        ++round;
+        if (!report("linking", iteration, relative))
+        {
+          stats.Stop = StopReason::Aborted;
+          break;
+        }
+        this->ComputeLinks(pending, stats);
+        this->IndexLinks();
+        previousDelta = previousRatio = -1.0;
+        continue;
+      }
+      stats.Stop = StopReason::Converged;
+      break;
+    }
+    if (iteration >= this->Settings.MaxIterations)
+    {
+      stats.Stop = StopReason::IterationLimit;
+      break;
+    }
+    if (this->Settings.MaxTimeSeconds > 0 && elapsed >= this->Settings.MaxTimeSeconds)
+    {
+      stats.Stop = StopReason::TimeLimit;
+      break;
+    }
+    extrapolated = false;
+    // Aitken: once the ratio is steady, add the geometric tail of the change.
+    if (ratio > 0.5 && ratio < 1.0 && previousRatio > 0 &&
+      std::fabs(ratio - previousRatio) < 0.02 * (1.0 - ratio))
+    {
+      const double gain = ratio / (1.0 - ratio);
+      for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
+      {
+        if (mesh[e].IsLeaf())
+        {
+          this->NodeRadiosity[e] += gain * change[e];
+        }
+      }
+      for (std::uint32_t r : this->Roots)
+      {
+        this->Pull(r);
+      }
+      extrapolated = true;
+      previousDelta = previousRatio = -1.0;
+      continue;
+    }
+    previousRatio = ratio;
+    previousDelta = delta;
+  }
+  stats.Elements = mesh.NumberOfLeaves();
+  stats.Links = this->LinkList.size();
+  stats.PartialLinks = 0;
+  stats.HiddenLinks = 0;
+  for (const HierarchicalLink& l : this->LinkList)
+  {
+    stats.PartialLinks += l.Kind == HierarchicalLink::Partial;
+    stats.HiddenLinks += l.Kind == HierarchicalLink::Hidden;
+  }
+  stats.Subdivisions = (mesh.Elements().size() - this->Roots.size()) / 4;
+  stats.RaysCast = this->Rays->RaysCast();
+  stats.SolveSeconds = start.Seconds();
+  return stats;
+}
+} // namespace radiosity
