@@ -1,4 +1,5 @@
 #include "vtkRadiosityView.h"
+#include "vtkQuadraticInterpolantMapper.h"
 #include "vtkRadiosityWindowPNG.h"
 
 #include "vtkActor.h"
@@ -20,6 +21,8 @@
 #include "vtkUniforms.h"
 
 #include <algorithm>
+#include <cstring>
+#include <string>
 
 vtkStandardNewMacro(vtkRadiosityView);
 
@@ -73,9 +76,19 @@ vtkRadiosityView::vtkRadiosityView()
     "  gl_FragData[0] = vec4(pow(max(radianceVSOutput, vec3(0.0)), vec3(1.0 / 2.2)), 1.0);\n",
     false);
 
+  // The interpolant path: per-pixel evaluation of the quadratic interpolants.
+  // Its actor carries none of the replacements above; only one of the two
+  // actors is visible at a time.
+  this->InterpolantMapper = vtkSmartPointer<vtkQuadraticInterpolantMapper>::New();
+  this->InterpolantActor = vtkSmartPointer<vtkActor>::New();
+  this->InterpolantActor->SetMapper(this->InterpolantMapper);
+  this->InterpolantActor->GetProperty()->LightingOff();
+  this->InterpolantActor->VisibilityOff();
+
   this->Renderer = vtkSmartPointer<vtkOpenGLRenderer>::New();
   this->Renderer->SetBackground(0.0, 0.0, 0.0);
   this->Renderer->AddActor(this->Actor);
+  this->Renderer->AddActor(this->InterpolantActor);
 
   // The standard render steps (camera, lights, opaque, translucent, overlay)
   // draw into the tone mapping pass's float framebuffer, which keeps HDR.
@@ -186,6 +199,15 @@ void vtkRadiosityView::SetRenderWindow(vtkRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
+bool vtkRadiosityView::UsesInterpolantMapper()
+{
+  return this->InterpolantRendering && this->Input && this->ArrayName &&
+    strcmp(this->ArrayName, "Radiosity") == 0 &&
+    this->Input->GetCellData()->GetAbstractArray(
+      vtkQuadraticInterpolantMapper::GetInterpolantArrayName()) != nullptr;
+}
+
+//------------------------------------------------------------------------------
 bool vtkRadiosityView::CheckInput()
 {
   const char* name = this->ArrayName ? this->ArrayName : "";
@@ -206,6 +228,16 @@ bool vtkRadiosityView::CheckInput()
                                                     << this->Input->GetNumberOfPolys()
                                                     << " polygons).");
     return false;
+  }
+  if (this->UsesInterpolantMapper())
+  {
+    std::string message;
+    if (!vtkQuadraticInterpolantMapper::ValidateInput(this->Input, &message))
+    {
+      vtkErrorMacro(<< message);
+      return false;
+    }
+    return true;
   }
   vtkPointData* pd = this->Input->GetPointData();
   vtkDataArray* array = pd->GetArray(name);
@@ -239,6 +271,16 @@ bool vtkRadiosityView::CheckInput()
 //------------------------------------------------------------------------------
 void vtkRadiosityView::UpdatePipeline()
 {
+  this->ToneMappingPass->SetToneMappingType(this->ToneMappingType);
+  const bool interpolants = this->UsesInterpolantMapper();
+  this->InterpolantActor->SetVisibility(interpolants);
+  this->Actor->SetVisibility(!interpolants);
+  if (interpolants)
+  {
+    this->InterpolantMapper->SetInputData(this->Input);
+    this->InterpolantMapper->SetExposure(this->Exposure);
+    return;
+  }
   this->Mapper->SetInputData(this->Input);
   // Remapped at every render: the array name may have changed, and the
   // mapping is cheap; the mapper rebuilds its buffers only when needed.
@@ -248,7 +290,6 @@ void vtkRadiosityView::UpdatePipeline()
   // Lambertian surfaces: radiance L = B / pi.
   this->Actor->GetShaderProperty()->GetVertexCustomUniforms()->SetUniformf(
     RadianceScaleUniform, static_cast<float>(this->Exposure / vtkMath::Pi()));
-  this->ToneMappingPass->SetToneMappingType(this->ToneMappingType);
 }
 
 //------------------------------------------------------------------------------
@@ -298,6 +339,9 @@ void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Input: " << this->Input.GetPointer() << "\n";
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
+  os << indent << "InterpolantRendering: " << (this->InterpolantRendering ? "On" : "Off") << "\n";
+  os << indent << "UsesInterpolantMapper: " << (this->UsesInterpolantMapper() ? "true" : "false")
+     << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMappingType: " << this->ToneMappingType << "\n";
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
@@ -306,4 +350,5 @@ void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
   os << indent << "RenderWindow: " << this->RenderWindow.GetPointer() << "\n";
   os << indent << "ToneMappingPass: " << this->ToneMappingPass.GetPointer() << "\n";
+  os << indent << "InterpolantMapper: " << this->InterpolantMapper.GetPointer() << "\n";
 }

@@ -2,14 +2,26 @@
  * @class   vtkRadiosityView
  * @brief   Draws a radiosity solution as tone-mapped HDR radiance.
  *
- * The display "for now": VTK's own polydata mapper draws the point array
- * `Radiosity` (3 components, radiant exitance B in W/m^2, see SPEC.md) as the
- * per-vertex radiance L = B / pi times Exposure, linearly interpolated across
- * each triangle. The array reaches the shaders as a float vertex attribute
- * (MapDataArrayToVertexAttribute) and a shader replacement writes it to the
- * fragment colour with no lighting and no clamping. The renderer draws into the
- * float framebuffer of a vtkToneMappingPass, which maps the HDR values to the
- * displayable range (Reinhard by default). The background is black.
+ * Two display paths, both drawing the radiance L = B / pi times Exposure with
+ * no lighting and no clamping into the float framebuffer of a
+ * vtkToneMappingPass, which maps the HDR values to the displayable range
+ * (Reinhard by default). The background is black.
+ *
+ * - Interpolants: when the input has the cell array `QuadraticInterpolant`
+ *   (Hardt & Teller's per-triangle quadratic irradiance, SPEC.md), the drawn
+ *   array is the default `Radiosity` and InterpolantRendering is on (the
+ *   default), a vtkQuadraticInterpolantMapper evaluates the interpolant per
+ *   pixel, B = Emission + Reflectance * R(s,t), from the cell arrays
+ *   `QuadraticInterpolant`, `Reflectance` and `Emission`.
+ * - Gouraud: otherwise VTK's own polydata mapper draws the point array
+ *   ArrayName (3 components, W/m^2; `Radiosity`, B, by default), linearly
+ *   interpolated across each triangle. The array reaches the shaders as a
+ *   float vertex attribute (MapDataArrayToVertexAttribute) and a shader
+ *   replacement writes it to the fragment colour.
+ *
+ * InterpolantRenderingOff forces the Gouraud path (for side-by-side
+ * comparisons of the same solution); UsesInterpolantMapper tells which path
+ * the next render takes.
  *
  * Typical use:
  * @code
@@ -21,8 +33,10 @@
  * @endcode
  *
  * Without SetCamera the camera is reset to frame the input at the first render.
- * Invalid input (no point array of that name, wrong component count) is
- * refused with an error naming the array: Render() and WritePNG() return false.
+ * Invalid input (no point array of that name, wrong component count; on the
+ * interpolant path a wrong `QuadraticInterpolant` or a cell that is not a
+ * triangle) is refused with an error naming the array or the cell: Render()
+ * and WritePNG() return false.
  */
 
 #ifndef vtkRadiosityView_h
@@ -35,6 +49,7 @@
 class vtkActor;
 class vtkPolyData;
 class vtkPolyDataMapper;
+class vtkQuadraticInterpolantMapper;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkToneMappingPass;
@@ -66,11 +81,31 @@ public:
 
   ///@{
   /**
-   * Name of the point array drawn (default "Radiosity").
+   * Name of the point array drawn by the Gouraud path (default "Radiosity").
+   * The interpolant path draws radiosity, so it is taken only while this is
+   * "Radiosity".
    */
   vtkSetStringMacro(ArrayName);
   vtkGetStringMacro(ArrayName);
   ///@}
+
+  ///@{
+  /**
+   * Whether an input with the cell array `QuadraticInterpolant` is drawn by
+   * evaluating the interpolants per pixel (default on). Off draws the point
+   * array ArrayName with Gouraud interpolation whatever the input.
+   */
+  vtkSetMacro(InterpolantRendering, bool);
+  vtkGetMacro(InterpolantRendering, bool);
+  vtkBooleanMacro(InterpolantRendering, bool);
+  ///@}
+
+  /**
+   * Whether the next render draws the interpolants per pixel: an input with
+   * the cell array `QuadraticInterpolant`, InterpolantRendering on and
+   * ArrayName "Radiosity".
+   */
+  bool UsesInterpolantMapper();
 
   ///@{
   /**
@@ -159,6 +194,7 @@ protected:
   void UpdatePipeline();
 
   char* ArrayName = nullptr;
+  bool InterpolantRendering = true;
   double Exposure = 1.0;
   int ToneMappingType = Reinhard;
   int Size[2] = { 640, 480 };
@@ -166,8 +202,12 @@ protected:
   bool CameraSet = false;
 
   vtkSmartPointer<vtkPolyData> Input;
+  // Gouraud path: the plain mapper with the shader replacements on its actor.
   vtkSmartPointer<vtkPolyDataMapper> Mapper;
   vtkSmartPointer<vtkActor> Actor;
+  // Interpolant path: an actor of its own, free of those replacements.
+  vtkSmartPointer<vtkQuadraticInterpolantMapper> InterpolantMapper;
+  vtkSmartPointer<vtkActor> InterpolantActor;
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkRenderWindow> RenderWindow;
   vtkSmartPointer<vtkToneMappingPass> ToneMappingPass;

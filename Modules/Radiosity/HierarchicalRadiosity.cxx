@@ -43,17 +43,24 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const Hierarchi
   const double diag = this->SceneInfo.Diagonal > 0 ? this->SceneInfo.Diagonal : 1.0;
   this->MinEdge = this->Settings.MinElementSize * diag;
   this->PlaneTolerance = 1e-9 * diag;
-  double brightest = 0.0;
-  for (const Material& m : scene.Materials)
+  double power = 0.0, area = 0.0, reflected = 0.0;
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
-    brightest = std::max(brightest, MaxComponent(m.Emission));
+    const double a = scene.Area(t);
+    power += MaxComponent(scene.Materials[t].Emission) * a;
+    reflected += MaxComponent(scene.Materials[t].Reflectance) * a;
+    area += a;
   }
+  area = std::max(area, 1e-300);
+  const double ambient = power / area / (1.0 - reflected / area);
   this->Epsilon = this->Settings.LinkTolerance > 0
     ? this->Settings.LinkTolerance
-    : this->Settings.RelativeLinkTolerance * brightest;
+    : this->Settings.RelativeLinkTolerance * ambient;
   const std::size_t n = this->Elements->Elements().size();
   this->NodeRadiosity.resize(n);
   this->NodeGathered.assign(n, RGB(0.0));
+  this->NodeGatheredVisible.assign(n, RGB(0.0));
+  this->Normalization.assign(n, 1.0);
   this->NodeIrradiance.assign(n, RGB(0.0));
   for (std::uint32_t e = 0; e < n; ++e)
   {
@@ -97,9 +104,12 @@ std::uint32_t HierarchicalRadiosity::Children(std::uint32_t e)
   }
   const std::uint32_t first = mesh.Subdivide(e);
   const std::size_t n = mesh.Elements().size();
-  this->NodeRadiosity.resize(n, this->NodeRadiosity[e]);
+  const RGB b = this->NodeRadiosity[e], h = this->NodeIrradiance[e];
+  this->NodeRadiosity.resize(n, b);
   this->NodeGathered.resize(n, RGB(0.0));
-  this->NodeIrradiance.resize(n, this->NodeIrradiance[e]);
+  this->NodeGatheredVisible.resize(n, RGB(0.0));
+  this->Normalization.resize(n, 1.0);
+  this->NodeIrradiance.resize(n, h);
   return first;
 }
 
@@ -276,14 +286,36 @@ void HierarchicalRadiosity::ComputeLinks(
         {
           blockerCorners.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
         }
+        // Receiver-area mean of the point form factor: the centroids of the
+        // uniform midpoint subdivision, finer where the source is close (the
+        // kernel varies fastest there, and the sums over a closed room must
+        // stay 1 to 1e-4 for reflectance 0.999).
+        const double distance = glm::length(
+          (*this->Elements)[link.Source].Centroid - (*this->Elements)[link.Receiver].Centroid);
+        const double size = this->Elements->LongestEdge(link.Receiver);
+        const int splits = distance < 1.5 * size ? 8 : distance < 4 * size ? 4 : 2;
         double f = 0.0;
-        for (const auto& w : RuleA)
+        int count = 0;
+        auto accumulate = [&](double s, double t) {
+          const double w[3] = { 1.0 - s - t, s, t };
+          const Vec3 x = At(p, w);
+          f += link.Kind == HierarchicalLink::Partial
+            ? VisibleFormFactor(x, n, q, blockerCorners.data(), blockerCorners.size())
+            : PointToPolygonFormFactor(x, n, q.data(), 3);
+          ++count;
+        };
+        for (int i = 0; i < splits; ++i)
         {
-          f += 0.25 *
-            (link.Kind == HierarchicalLink::Partial
-                ? VisibleFormFactor(At(p, w), n, q, blockerCorners.data(), blockerCorners.size())
-                : PointToPolygonFormFactor(At(p, w), n, q.data(), 3));
+          for (int j = 0; i + j < splits; ++j)
+          {
+            accumulate((i + 1.0 / 3) / splits, (j + 1.0 / 3) / splits);
+            if (i + j < splits - 1)
+            {
+              accumulate((i + 2.0 / 3) / splits, (j + 2.0 / 3) / splits);
+            }
+          }
         }
+        f /= count;
         // Blocked rays without a recorded blocker: scale by the fraction seen.
         if (seen < 16 && res.Blockers.empty())
         {
@@ -319,6 +351,49 @@ void HierarchicalRadiosity::IndexLinks()
   }
 }
 
+void HierarchicalRadiosity::Normalize()
+{
+  const ElementMesh& mesh = *this->Elements;
+  const std::size_t n = mesh.Elements().size();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64),
+    [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+      {
+        const auto e = static_cast<std::uint32_t>(i);
+        if (!mesh[e].IsLeaf())
+        {
+          continue;
+        }
+        const TriangleCorners p = this->Corners(e);
+        Vec3 points[4];
+        for (int k = 0; k < 4; ++k)
+        {
+          points[k] = At(p, RuleA[k]);
+        }
+        double approximate = 0.0, exact = 0.0;
+        for (std::int32_t a = static_cast<std::int32_t>(e); a >= 0; a = mesh[static_cast<std::uint32_t>(a)].Parent)
+        {
+          const auto node = static_cast<std::uint32_t>(a);
+          for (std::uint32_t l = this->LinkOffsets[node]; l < this->LinkOffsets[node + 1]; ++l)
+          {
+            const HierarchicalLink& link = this->LinkList[l];
+            if (link.Kind != HierarchicalLink::Visible)
+            {
+              continue;
+            }
+            approximate += link.Factor;
+            const TriangleCorners q = this->Corners(link.Source);
+            for (const Vec3& x : points)
+            {
+              exact += 0.25 * PointToPolygonFormFactor(x, mesh[e].Normal, q.data(), 3);
+            }
+          }
+        }
+        this->Normalization[e] = approximate > 0 ? exact / approximate : 1.0;
+      }
+    });
+}
+
 std::vector<std::uint32_t> HierarchicalRadiosity::LinksOf(std::uint32_t e) const
 {
   std::vector<std::uint32_t> out;
@@ -332,11 +407,14 @@ std::vector<std::uint32_t> HierarchicalRadiosity::LinksOf(std::uint32_t e) const
   return out;
 }
 
-RGB HierarchicalRadiosity::PushPull(std::uint32_t e, const RGB& down, std::vector<RGB>& change)
+RGB HierarchicalRadiosity::PushPull(
+  std::uint32_t e, const RGB& downVisible, const RGB& downOther, std::vector<RGB>& change)
 {
   const ElementMesh& mesh = *this->Elements;
   const Element& el = mesh[e];
-  const RGB h = down + this->NodeGathered[e];
+  const RGB hv = downVisible + this->NodeGatheredVisible[e];
+  const RGB ho = downOther + this->NodeGathered[e] - this->NodeGatheredVisible[e];
+  const RGB h = (el.IsLeaf() ? this->Normalization[e] : 1.0) * hv + ho;
   this->NodeIrradiance[e] = h;
   if (el.IsLeaf())
   {
@@ -351,7 +429,7 @@ RGB HierarchicalRadiosity::PushPull(std::uint32_t e, const RGB& down, std::vecto
   for (int i = 0; i < 4; ++i)
   {
     const std::uint32_t c = static_cast<std::uint32_t>(el.FirstChild + i);
-    sum += mesh[c].Area * this->PushPull(c, h, change);
+    sum += mesh[c].Area * this->PushPull(c, hv, ho, change);
     area += mesh[c].Area;
   }
   this->NodeRadiosity[e] = area > 0 ? sum / area : this->NodeRadiosity[e];
@@ -386,17 +464,23 @@ double HierarchicalRadiosity::Sweep(std::vector<RGB>& change)
     [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t e = range.begin(); e != range.end(); ++e)
       {
-        RGB g(0.0);
+        RGB g(0.0), gv(0.0);
         for (std::uint32_t i = this->LinkOffsets[e]; i < this->LinkOffsets[e + 1]; ++i)
         {
           const HierarchicalLink& l = this->LinkList[i];
-          g += l.Factor * this->NodeRadiosity[l.Source];
+          const RGB t = l.Factor * this->NodeRadiosity[l.Source];
+          g += t;
+          if (l.Kind == HierarchicalLink::Visible)
+          {
+            gv += t;
+          }
         }
         this->NodeGathered[e] = g;
+        this->NodeGatheredVisible[e] = gv;
       }
     });
   tbb::parallel_for(std::size_t(0), this->Roots.size(),
-    [&](std::size_t r) { this->PushPull(this->Roots[r], RGB(0.0), change); });
+    [&](std::size_t r) { this->PushPull(this->Roots[r], RGB(0.0), RGB(0.0), change); });
   double delta = 0.0;
   for (std::size_t e = 0; e < n; ++e)
   {
@@ -473,6 +557,7 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
   this->InitialLinks(pending);
   this->ComputeLinks(pending, stats);
   this->IndexLinks();
+  this->Normalize();
 
   std::vector<RGB> change;
   double previousDelta = -1.0, previousRatio = -1.0;
@@ -507,7 +592,10 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
     double received = 0.0;
     for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
     {
-      received += Mean(this->NodeGathered[e]) * mesh[e].Area;
+      if (mesh[e].IsLeaf())
+      {
+        received += Mean(this->NodeIrradiance[e]) * mesh[e].Area;
+      }
     }
     const double escaped = total - received;
     row.EnergyBalance = (emitted - absorbed - escaped) / emitted;
@@ -542,6 +630,7 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
         }
         this->ComputeLinks(pending, stats);
         this->IndexLinks();
+        this->Normalize();
         previousDelta = previousRatio = -1.0;
         continue;
       }

@@ -26,6 +26,14 @@
 //   stop criterion, and once r is steady the tail of the Neumann series is
 //   added at once (Aitken extrapolation), so that closed rooms with
 //   reflectance 0.999 converge in tens of sweeps instead of thousands.
+// - Normalisation: a leaf receives its ancestors' links at their node-mean
+//   factors, so the sum of its factors departs from the exact form factor of
+//   everything it is linked to by up to the link tolerance, and interreflection
+//   amplifies that by 1 / (1 - rho). Each leaf's unoccluded transfers are
+//   scaled by the ratio of the exact sum (point form factors at the leaf's own
+//   points, to every source of its chain of links) to the approximate one: the
+//   row-sum normalisation of Baum, Rushmeier & Winget 1989, which makes closed
+//   uniform rooms exact at any link tolerance.
 #ifndef Radiosity_HierarchicalRadiosity_h
 #define Radiosity_HierarchicalRadiosity_h
 
@@ -49,9 +57,12 @@ struct HierarchicalOptions
   double MaxTimeSeconds = 0.0;      ///< 0: no limit
   int Threads = 0;                  ///< 0: all cores
   /// Link refinement threshold epsilon on B F, W/m^2; 0: RelativeLinkTolerance
-  /// times the largest emitted exitance (so that the default is scale-free).
+  /// times the scene's mean irradiance as Cohen's ambient term estimates it,
+  /// emitted power over total area over (1 - mean reflectance), so that the
+  /// default is free of scale and of emission units and does not explode in
+  /// bright closed rooms.
   double LinkTolerance = 0.0;
-  double RelativeLinkTolerance = 2e-3;
+  double RelativeLinkTolerance = 0.05;
   /// Nodes whose longest edge is at or below this fraction of the scene diagonal are not split.
   double MinElementSize = 1.0 / 64.0;
   int MaxRefinementRounds = 4;      ///< BF refinement passes after the first solve
@@ -121,7 +132,9 @@ private:
   void ComputeLinks(const std::vector<PendingLink>& pending, SolverStatistics& stats);
   void IndexLinks();
   double Sweep(std::vector<RGB>& change);
-  RGB PushPull(std::uint32_t e, const RGB& down, std::vector<RGB>& change);
+  RGB PushPull(std::uint32_t e, const RGB& downVisible, const RGB& downOther,
+    std::vector<RGB>& change);
+  void Normalize();
   RGB Pull(std::uint32_t e);
   void StoreLeafIrradiance();
 
@@ -133,7 +146,10 @@ private:
   std::vector<HierarchicalLink> LinkList;
   std::vector<std::uint32_t> BlockerPool;
   std::vector<std::uint32_t> LinkOffsets; ///< links sorted by receiver: per node, the first
-  std::vector<RGB> NodeRadiosity, NodeGathered, NodeIrradiance;
+  std::vector<RGB> NodeRadiosity, NodeGathered, NodeGatheredVisible, NodeIrradiance;
+  /// Per leaf: exact over approximate sum of the unoccluded form factors of
+  /// its links and its ancestors' links (see Normalize).
+  std::vector<double> Normalization;
   std::vector<std::uint32_t> Roots;
   double Epsilon = 0.0;
   double MinEdge = 0.0;

@@ -1,0 +1,632 @@
+#include "vtkQuadraticInterpolantMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellTypes.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLCellToVTKCellMap.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <sstream>
+
+vtkStandardNewMacro(vtkQuadraticInterpolantMapper);
+
+namespace
+{
+// Generic vertex attribute carrying the barycentrics (s,t), and the point
+// array of the unshared-vertex copy it is read from.
+const char* const BarycentricAttribute = "interpolantST";
+const char* const BarycentricArray = "vtkQuadraticInterpolantST";
+
+// Floats per triangle in the texture buffer: (A, 2B, 2C, D, 2E, F,
+// Reflectance, Emission), each RGB; six RGBA texels.
+constexpr int FloatsPerTriangle = 24;
+constexpr int TexelsPerTriangle = FloatsPerTriangle / 4;
+constexpr int InterpolantComponents = 18;
+
+// "cell 12 is a vtkQuad (4 points)": the cell named by its VTK class.
+std::string DescribeCell(vtkPolyData* input, vtkIdType cellId, vtkIdType numberOfPoints)
+{
+  std::ostringstream os;
+  const char* type = vtkCellTypes::GetClassNameFromTypeId(input->GetCellType(cellId));
+  os << "cell " << cellId << " is a " << (type ? type : "cell of unknown type") << " ("
+     << numberOfPoints << (numberOfPoints == 1 ? " point" : " points") << ")";
+  return os.str();
+}
+
+// Checks a material array that may be absent; false with `message` when it
+// is present but unusable.
+bool CheckMaterialArray(vtkPolyData* input, const char* name, std::string& message)
+{
+  vtkCellData* cd = input->GetCellData();
+  if (!cd->GetAbstractArray(name))
+  {
+    return true;
+  }
+  vtkDataArray* array = cd->GetArray(name);
+  std::ostringstream os;
+  if (!array)
+  {
+    os << "Cell array '" << name << "' is not numeric.";
+  }
+  else if (array->GetNumberOfComponents() != 3)
+  {
+    os << "Cell array '" << name << "' has " << array->GetNumberOfComponents()
+       << " components, 3 (RGB) expected.";
+  }
+  else if (array->GetNumberOfTuples() < input->GetNumberOfCells())
+  {
+    os << "Cell array '" << name << "' has " << array->GetNumberOfTuples() << " tuples for "
+       << input->GetNumberOfCells() << " cells.";
+  }
+  else
+  {
+    return true;
+  }
+  message = os.str();
+  return false;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkQuadraticInterpolantMapper::vtkQuadraticInterpolantMapper()
+{
+  // The colour is the radiance: never map scalars through a lookup table.
+  this->ScalarVisibilityOff();
+  this->MapDataArrayToVertexAttribute(
+    BarycentricAttribute, BarycentricArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+}
+
+//------------------------------------------------------------------------------
+vtkQuadraticInterpolantMapper::~vtkQuadraticInterpolantMapper()
+{
+  if (this->InterpolantTexture)
+  {
+    this->InterpolantTexture->Delete();
+    this->InterpolantTexture = nullptr;
+  }
+  if (this->InterpolantBuffer)
+  {
+    this->InterpolantBuffer->Delete();
+    this->InterpolantBuffer = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkQuadraticInterpolantMapper::ValidateInput(vtkPolyData* input, std::string* message)
+{
+  std::string dummy;
+  std::string& why = message ? *message : dummy;
+  why.clear();
+  if (!input)
+  {
+    why = "No input polydata.";
+    return false;
+  }
+  const vtkIdType numberOfCells = input->GetNumberOfCells();
+  if (numberOfCells == 0)
+  {
+    return true;
+  }
+
+  // Triangles only. VTK numbers vertices first, then lines, polys and strips,
+  // so a vertex or line, if any, is cell 0 and the first strip follows the
+  // polys.
+  const vtkIdType numberOfPolys = input->GetNumberOfPolys();
+  const char* const hint =
+    ": vtkQuadraticInterpolantMapper draws triangles only (the cells the interpolants are "
+    "defined on).";
+  if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0)
+  {
+    vtkCellArray* cells = input->GetNumberOfVerts() > 0 ? input->GetVerts() : input->GetLines();
+    why = "Input " + DescribeCell(input, 0, cells->GetCellSize(0)) + hint;
+    return false;
+  }
+  vtkCellArray* polys = input->GetPolys();
+  for (vtkIdType i = 0; i < numberOfPolys; ++i)
+  {
+    const vtkIdType size = polys->GetCellSize(i);
+    if (size != 3)
+    {
+      why = "Input " + DescribeCell(input, i, size) + hint;
+      return false;
+    }
+  }
+  if (input->GetNumberOfStrips() > 0)
+  {
+    why = "Input " + DescribeCell(input, numberOfPolys, input->GetStrips()->GetCellSize(0)) + hint;
+    return false;
+  }
+
+  const char* name = GetInterpolantArrayName();
+  vtkCellData* cd = input->GetCellData();
+  vtkDataArray* interpolant = cd->GetArray(name);
+  std::ostringstream os;
+  if (!interpolant)
+  {
+    if (cd->GetAbstractArray(name))
+    {
+      os << "Cell array '" << name << "' is not numeric.";
+    }
+    else if (input->GetPointData()->GetAbstractArray(name))
+    {
+      os << "'" << name << "' is a point array; a cell array of " << InterpolantComponents
+         << " components (RGB x (A, 2B, 2C, D, 2E, F)) is expected.";
+    }
+    else
+    {
+      os << "No cell array '" << name << "' (" << InterpolantComponents
+         << " components: RGB x (A, 2B, 2C, D, 2E, F)) on the input.";
+    }
+    why = os.str();
+    return false;
+  }
+  if (interpolant->GetNumberOfComponents() != InterpolantComponents)
+  {
+    os << "Cell array '" << name << "' has " << interpolant->GetNumberOfComponents()
+       << " components, " << InterpolantComponents << " (RGB x (A, 2B, 2C, D, 2E, F)) expected.";
+    why = os.str();
+    return false;
+  }
+  if (interpolant->GetNumberOfTuples() < numberOfCells)
+  {
+    os << "Cell array '" << name << "' has " << interpolant->GetNumberOfTuples() << " tuples for "
+       << numberOfCells << " cells.";
+    why = os.str();
+    return false;
+  }
+  return CheckMaterialArray(input, GetReflectanceArrayName(), why) &&
+    CheckMaterialArray(input, GetEmissionArrayName(), why);
+}
+
+//------------------------------------------------------------------------------
+bool vtkQuadraticInterpolantMapper::UpdateTriangles(vtkPolyData* input)
+{
+  if (input == this->TrianglesSource && input->GetMTime() == this->TrianglesSourceTime)
+  {
+    if (!this->InputValid)
+    {
+      vtkErrorMacro(<< this->InputError);
+    }
+    return this->InputValid;
+  }
+  this->TrianglesSource = input;
+  this->TrianglesSourceTime = input->GetMTime();
+
+  this->InputValid = ValidateInput(input, &this->InputError);
+  if (!this->InputValid)
+  {
+    vtkErrorMacro(<< this->InputError);
+    this->Triangles->Initialize();
+    this->TriangleTexels.clear();
+    this->TriangleTexelsTime.Modified();
+    return false;
+  }
+
+  const vtkIdType n = input->GetNumberOfPolys();
+  vtkCellData* cd = input->GetCellData();
+  vtkDataArray* interpolant = cd->GetArray(GetInterpolantArrayName());
+  vtkDataArray* reflectance = cd->GetArray(GetReflectanceArrayName());
+  vtkDataArray* emission = cd->GetArray(GetEmissionArrayName());
+  if (n > 0 && !reflectance && !this->WarnedNoReflectance)
+  {
+    vtkWarningMacro(<< "No cell array '" << GetReflectanceArrayName()
+                    << "' on the input: drawing reflectance 0.5 grey.");
+    this->WarnedNoReflectance = true;
+  }
+  if (n > 0 && !emission && !this->WarnedNoEmission)
+  {
+    vtkWarningMacro(<< "No cell array '" << GetEmissionArrayName()
+                    << "' on the input: drawing no emission.");
+    this->WarnedNoEmission = true;
+  }
+
+  // The unshared-vertex copy: triangle i owns points 3i, 3i+1, 3i+2 (its
+  // cell's p0, p1, p2) with barycentrics (0,0), (1,0), (0,1).
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_FLOAT);
+  points->SetNumberOfPoints(3 * n);
+  vtkNew<vtkFloatArray> st;
+  st->SetName(BarycentricArray);
+  st->SetNumberOfComponents(2);
+  st->SetNumberOfTuples(3 * n);
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfTuples(n + 1);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfTuples(3 * n);
+  this->TriangleTexels.assign(static_cast<size_t>(n) * FloatsPerTriangle, 0.0f);
+
+  static const float corners[3][2] = { { 0.0f, 0.0f }, { 1.0f, 0.0f }, { 0.0f, 1.0f } };
+  vtkCellArray* polys = input->GetPolys();
+  vtkIdType npts = 0;
+  const vtkIdType* pts = nullptr;
+  double coefficients[InterpolantComponents];
+  double rho[3] = { 0.5, 0.5, 0.5 };
+  double e[3] = { 0.0, 0.0, 0.0 };
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    polys->GetCellAtId(i, npts, pts);
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType id = 3 * i + k;
+      points->SetPoint(id, input->GetPoint(pts[k]));
+      st->SetTypedTuple(id, corners[k]);
+      connectivity->SetValue(id, id);
+    }
+    offsets->SetValue(i, 3 * i);
+
+    // All cells are polys (ValidateInput), so poly i is cell i.
+    interpolant->GetTuple(i, coefficients);
+    if (reflectance)
+    {
+      reflectance->GetTuple(i, rho);
+    }
+    if (emission)
+    {
+      emission->GetTuple(i, e);
+    }
+    float* texel = this->TriangleTexels.data() + static_cast<size_t>(i) * FloatsPerTriangle;
+    // Coefficient-major: texel[3k + c] is coefficient k of channel c, the
+    // array's component 6c + k.
+    for (int k = 0; k < 6; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        texel[3 * k + c] = static_cast<float>(coefficients[6 * c + k]);
+      }
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      texel[18 + c] = static_cast<float>(rho[c]);
+      texel[21 + c] = static_cast<float>(e[c]);
+    }
+  }
+  offsets->SetValue(n, 3 * n);
+
+  vtkNew<vtkCellArray> triangles;
+  triangles->SetData(offsets, connectivity);
+  this->Triangles->Initialize();
+  this->Triangles->SetPoints(points);
+  this->Triangles->SetPolys(triangles);
+  this->Triangles->GetPointData()->AddArray(st);
+  this->TriangleTexelsTime.Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* actor)
+{
+  // vtkOpenGLPolyDataMapper::RenderPiece calls this once per render, after it
+  // has updated the input into CurrentInput and before RenderPieceStart: the
+  // place to check the input and to switch to its unshared-vertex copy.
+  this->DrawPiece = false;
+  vtkPolyData* input = this->CurrentInput;
+  if (!input || input->GetNumberOfCells() == 0)
+  {
+    return;
+  }
+  if (!this->UpdateTriangles(input) || this->Triangles->GetNumberOfCells() == 0)
+  {
+    return;
+  }
+  // The barycentric attribute is part of this mapper's contract: restore it
+  // if RemoveAllVertexAttributeMappings removed it.
+  if (this->ExtraAttributes.find(BarycentricAttribute) == this->ExtraAttributes.end())
+  {
+    this->MapDataArrayToVertexAttribute(
+      BarycentricAttribute, BarycentricArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  }
+  this->CurrentInput = this->Triangles;
+  this->DrawPiece = true;
+  this->Superclass::UpdateCameraShiftScale(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
+{
+  if (!this->DrawPiece)
+  {
+    return;
+  }
+  // Builds the VBO/IBOs of the copy (and the superclass's cell-to-cell map).
+  this->Superclass::RenderPieceStart(ren, actor);
+  this->InterpolantTextureReady = this->UpdateInterpolantTexture(ren, actor);
+  if (this->InterpolantTextureReady)
+  {
+    this->InterpolantTexture->Activate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->DrawPiece && this->InterpolantTextureReady)
+  {
+    this->Superclass::RenderPieceDraw(ren, actor);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
+{
+  if (!this->DrawPiece)
+  {
+    return;
+  }
+  if (this->InterpolantTextureReady)
+  {
+    this->InterpolantTexture->Deactivate();
+  }
+  this->Superclass::RenderPieceFinish(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+bool vtkQuadraticInterpolantMapper::UpdateInterpolantTexture(vtkRenderer* ren, vtkActor* actor)
+{
+  const int representation = actor->GetProperty()->GetRepresentation();
+  if (this->InterpolantTexture && this->InterpolantUploadTime > this->TriangleTexelsTime &&
+    this->InterpolantUploadRepresentation == representation &&
+    this->InterpolantTexture->GetHandle() != 0)
+  {
+    return true;
+  }
+
+  // One texel block per OpenGL primitive: a triangle in the surface
+  // representation, an edge in wireframe, a corner in points. The map from
+  // OpenGL primitive to VTK cell is the superclass's, as for cell scalars.
+  vtkPolyData* poly = this->Triangles;
+  vtkCellArray* prims[4] = { poly->GetVerts(), poly->GetLines(), poly->GetPolys(),
+    poly->GetStrips() };
+  this->CellCellMap->Update(prims, representation, poly->GetPoints());
+  const size_t numberOfPrimitives = this->CellCellMap->GetSize();
+  const size_t numberOfTriangles = this->TriangleTexels.size() / FloatsPerTriangle;
+
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (numberOfPrimitives == 0 ||
+    numberOfPrimitives * TexelsPerTriangle > static_cast<size_t>(maxTexels))
+  {
+    vtkErrorMacro(<< "Cannot draw " << numberOfPrimitives << " OpenGL primitives: their "
+                  << numberOfPrimitives * TexelsPerTriangle
+                  << " texels of coefficients exceed GL_MAX_TEXTURE_BUFFER_SIZE (" << maxTexels
+                  << ").");
+    return false;
+  }
+
+  std::vector<float> texels(numberOfPrimitives * FloatsPerTriangle);
+  for (size_t i = 0; i < numberOfPrimitives; ++i)
+  {
+    const size_t cell = static_cast<size_t>(this->CellCellMap->GetValue(i));
+    if (cell >= numberOfTriangles)
+    {
+      vtkErrorMacro(<< "OpenGL primitive " << i << " maps to cell " << cell << " of "
+                    << numberOfTriangles << ".");
+      return false;
+    }
+    std::copy_n(this->TriangleTexels.data() + cell * FloatsPerTriangle, FloatsPerTriangle,
+      texels.data() + i * FloatsPerTriangle);
+  }
+
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  if (!this->InterpolantTexture)
+  {
+    this->InterpolantTexture = vtkTextureObject::New();
+    this->InterpolantBuffer = vtkOpenGLBufferObject::New();
+    this->InterpolantBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
+  }
+  this->InterpolantTexture->SetContext(renWin);
+  if (!this->InterpolantBuffer->Upload(texels, vtkOpenGLBufferObject::TextureBuffer) ||
+    !this->InterpolantTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(numberOfPrimitives * TexelsPerTriangle), 4, VTK_FLOAT,
+      this->InterpolantBuffer))
+  {
+    vtkErrorMacro(<< "Cannot create the texture buffer of the interpolants ("
+                  << numberOfPrimitives * TexelsPerTriangle << " RGBA32F texels).");
+    return false;
+  }
+  vtkOpenGLCheckErrorMacro("failed after uploading the interpolants");
+  this->InterpolantUploadTime.Modified();
+  this->InterpolantUploadRepresentation = representation;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
+{
+  // The barycentrics: a vertex attribute passed on as a smooth varying (the
+  // default, perspective-correct interpolation), through the geometry shader
+  // that VTK adds for surface edges or wide lines, if any. The tags are kept
+  // for the superclass's own replacements.
+  std::string VSSource = shaders[vtkShader::Vertex]->GetSource();
+  std::string GSSource = shaders[vtkShader::Geometry]->GetSource();
+  std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
+
+  vtkShaderProgram::Substitute(VSSource, "//VTK::TCoord::Dec",
+    "//VTK::TCoord::Dec\n"
+    "in vec2 interpolantST;\n"
+    "out vec2 interpolantSTVSOutput;\n");
+  vtkShaderProgram::Substitute(VSSource, "//VTK::TCoord::Impl",
+    "//VTK::TCoord::Impl\n"
+    "  interpolantSTVSOutput = interpolantST;\n");
+  if (!GSSource.empty())
+  {
+    vtkShaderProgram::Substitute(GSSource, "//VTK::TCoord::Dec",
+      "//VTK::TCoord::Dec\n"
+      "in vec2 interpolantSTVSOutput[];\n"
+      "out vec2 interpolantSTGSOutput;\n");
+    vtkShaderProgram::Substitute(GSSource, "//VTK::TCoord::Impl",
+      "//VTK::TCoord::Impl\n"
+      "    interpolantSTGSOutput = interpolantSTVSOutput[i];\n");
+  }
+  // With a geometry shader the shader cache renames VSOutput to GSOutput here.
+  vtkShaderProgram::Substitute(FSSource, "//VTK::TCoord::Dec",
+    "//VTK::TCoord::Dec\n"
+    "in vec2 interpolantSTVSOutput;\n"
+    "uniform samplerBuffer interpolantTexture;\n"
+    "uniform float radianceScale;\n"
+    "uniform float inverseGamma;\n");
+
+  shaders[vtkShader::Vertex]->SetSource(VSSource);
+  shaders[vtkShader::Geometry]->SetSource(GSSource);
+  shaders[vtkShader::Fragment]->SetSource(FSSource);
+
+  this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::ReplaceShaderLight(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->DrawingVertices)
+  {
+    // Vertices drawn by VertexVisibility keep VTK's shading.
+    this->Superclass::ReplaceShaderLight(shaders, ren, actor);
+    return;
+  }
+
+  std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
+  std::string impl =
+    // Six texels per OpenGL primitive (see the class description).
+    "  int interpolantTexel = 6 * (gl_PrimitiveID + PrimitiveIDOffset);\n"
+    "  vec4 q0 = texelFetchBuffer(interpolantTexture, interpolantTexel);\n"
+    "  vec4 q1 = texelFetchBuffer(interpolantTexture, interpolantTexel + 1);\n"
+    "  vec4 q2 = texelFetchBuffer(interpolantTexture, interpolantTexel + 2);\n"
+    "  vec4 q3 = texelFetchBuffer(interpolantTexture, interpolantTexel + 3);\n"
+    "  vec4 q4 = texelFetchBuffer(interpolantTexture, interpolantTexel + 4);\n"
+    "  vec4 q5 = texelFetchBuffer(interpolantTexture, interpolantTexel + 5);\n"
+    "  vec3 coefA = q0.xyz;\n"
+    "  vec3 coef2B = vec3(q0.w, q1.xy);\n"
+    "  vec3 coef2C = vec3(q1.zw, q2.x);\n"
+    "  vec3 coefD = q2.yzw;\n"
+    "  vec3 coef2E = q3.xyz;\n"
+    "  vec3 coefF = vec3(q3.w, q4.xy);\n"
+    "  vec3 reflectance = vec3(q4.zw, q5.x);\n"
+    "  vec3 emission = q5.yzw;\n"
+    "  float s = interpolantSTVSOutput.x;\n"
+    "  float t = interpolantSTVSOutput.y;\n"
+    // Hardt & Teller eq. 1: eight multiplies and five adds per channel.
+    "  vec3 irradiance = coefA*s*s + coef2B*s*t + coef2C*s + coefD*t*t + coef2E*t + coefF;\n"
+    "  vec3 radiance = (emission + reflectance*irradiance) * radianceScale;\n"
+    "  vec3 encoded = pow(max(radiance, vec3(0.0)), vec3(inverseGamma));\n";
+  if (this->DrawingEdges(ren, actor))
+  {
+    // emix: the superclass's edge coverage (//VTK::Edges::Impl).
+    impl += "  encoded = mix(encoded, edgeColor, emix);\n";
+  }
+  impl += "  gl_FragData[0] = vec4(encoded, opacity);\n";
+  vtkShaderProgram::Substitute(FSSource, "//VTK::Light::Impl", impl);
+  shaders[vtkShader::Fragment]->SetSource(FSSource);
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::ReplaceShaderTCoord(
+  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
+{
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
+  vtkShaderProgram* program = cellBO.Program;
+  if (this->InterpolantTextureReady && program->IsUniformUsed("interpolantTexture"))
+  {
+    program->SetUniformi("interpolantTexture", this->InterpolantTexture->GetTextureUnit());
+  }
+  if (program->IsUniformUsed("radianceScale"))
+  {
+    // Lambertian surfaces: L = B / pi.
+    program->SetUniformf("radianceScale", static_cast<float>(this->Exposure / vtkMath::Pi()));
+  }
+  if (program->IsUniformUsed("inverseGamma"))
+  {
+    program->SetUniformf("inverseGamma", static_cast<float>(1.0 / this->Gamma));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::SetLightingShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->DrawingVertices)
+  {
+    this->Superclass::SetLightingShaderParameters(cellBO, ren, actor);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkUnsignedCharArray* vtkQuadraticInterpolantMapper::MapScalars(double alpha)
+{
+  int cellFlag = 0;
+  return this->MapScalars(alpha, cellFlag);
+}
+
+//------------------------------------------------------------------------------
+vtkUnsignedCharArray* vtkQuadraticInterpolantMapper::MapScalars(double alpha, int& cellFlag)
+{
+  // The copy has no scalars: this clears any colours left from before.
+  return this->Superclass::MapScalars(this->Triangles, alpha, cellFlag);
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  if (this->InterpolantTexture)
+  {
+    this->InterpolantTexture->ReleaseGraphicsResources(win);
+  }
+  if (this->InterpolantBuffer)
+  {
+    this->InterpolantBuffer->ReleaseGraphicsResources();
+  }
+  this->InterpolantUploadRepresentation = -1;
+  this->InterpolantTextureReady = false;
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+//------------------------------------------------------------------------------
+void vtkQuadraticInterpolantMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "Gamma: " << this->Gamma << "\n";
+  os << indent << "InterpolantArrayName: " << GetInterpolantArrayName() << "\n";
+  os << indent << "ReflectanceArrayName: " << GetReflectanceArrayName() << "\n";
+  os << indent << "EmissionArrayName: " << GetEmissionArrayName() << "\n";
+  os << indent << "InputValid: " << (this->InputValid ? "true" : "false") << "\n";
+  if (!this->InputValid && !this->InputError.empty())
+  {
+    os << indent << "InputError: " << this->InputError << "\n";
+  }
+  os << indent << "Triangles (unshared-vertex copy): " << this->Triangles->GetNumberOfCells()
+     << " triangles, " << this->Triangles->GetNumberOfPoints() << " points\n";
+  os << indent << "TriangleTexels: " << this->TriangleTexels.size() << " floats\n";
+  os << indent << "InterpolantTexture: " << this->InterpolantTexture << "\n";
+  os << indent << "InterpolantBuffer: " << this->InterpolantBuffer << "\n";
+  os << indent << "InterpolantTextureReady: " << (this->InterpolantTextureReady ? "true" : "false")
+     << "\n";
+  os << indent << "InterpolantUploadRepresentation: " << this->InterpolantUploadRepresentation
+     << "\n";
+  os << indent << "WarnedNoReflectance: " << (this->WarnedNoReflectance ? "true" : "false") << "\n";
+  os << indent << "WarnedNoEmission: " << (this->WarnedNoEmission ? "true" : "false") << "\n";
+}
