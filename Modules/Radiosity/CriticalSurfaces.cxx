@@ -211,7 +211,7 @@ bool LexLess(const Vec3& a, const Vec3& b)
 void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& receiverNormal,
   const std::array<Vec3, 3>& source, double sourceRadiosity,
   const std::vector<BlockerEdge>& blockerEdges, double minLength,
-  std::vector<DiscontinuitySegment>& out)
+  std::vector<DiscontinuitySegment>& out, const std::array<bool, 3>& sourceEdges)
 {
   namespace detail = critical_surfaces_detail;
   for (const Vec3& p : receiver)
@@ -332,6 +332,10 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
     }
     for (int i = 0; i < 3; ++i)
     {
+      if (!sourceEdges[i])
+      {
+        continue;
+      }
       const Vec3& p = src[i];
       const Vec3& q = src[(i + 1) % 3];
       if (!detail::ConeHalfPlanes(bv, bv - p, bv - q, planeNormal, hp))

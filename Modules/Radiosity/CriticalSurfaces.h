@@ -67,10 +67,13 @@ struct BlockerEdge
  * blockers) is not decided here: the weight ranking is meant to sort that.
  * The result is appended to `out`, which is never cleared.
  */
+/// `sourceEdges[i]` false leaves out the EV surfaces of source edge i -> i+1
+/// (an edge inside a larger emitting polygon, the diagonal of a quad light).
 void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& receiverNormal,
   const std::array<Vec3, 3>& source, double sourceRadiosity,
   const std::vector<BlockerEdge>& blockerEdges, double minLength,
-  std::vector<DiscontinuitySegment>& out);
+  std::vector<DiscontinuitySegment>& out,
+  const std::array<bool, 3>& sourceEdges = { true, true, true });
 } // namespace radiosity
 
 #endif

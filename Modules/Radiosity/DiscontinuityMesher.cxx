@@ -1,4 +1,449 @@
-// Filled in by the issue-4 work.
+#include "Radiosity/DiscontinuityMesher.h"
+
+#include "Radiosity/ConstrainedTriangulation.h"
+#include "Radiosity/CriticalSurfaces.h"
+#include "Radiosity/FormFactor.h"
+#include "Radiosity/MeshProbeTracker.h"
+#include "Radiosity/Stopwatch.h"
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <unordered_map>
+
 namespace radiosity
 {
+namespace
+{
+std::uint64_t EdgeKey(std::uint32_t a, std::uint32_t b)
+{
+  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
 }
+
+/// One source that irradiates a leaf: a link of the leaf or of an ancestor.
+struct ChainSource
+{
+  TriangleCorners Polygon;
+  RGB Radiosity;
+  std::vector<TriangleCorners> Blockers; ///< empty for unoccluded links
+  const HierarchicalLink* Link;
+};
+
+std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf)
+{
+  const ElementMesh& mesh = s.Mesh();
+  const Scene& scene = s.GetScene();
+  std::vector<ChainSource> chain;
+  for (std::int32_t a = static_cast<std::int32_t>(leaf); a >= 0;
+       a = mesh[static_cast<std::uint32_t>(a)].Parent)
+  {
+    for (std::uint32_t i : s.LinksOf(static_cast<std::uint32_t>(a)))
+    {
+      const HierarchicalLink& l = s.Links()[i];
+      if (l.Kind == HierarchicalLink::Hidden || !(MaxComponent(s.Radiosity(l.Source)) > 0))
+      {
+        continue;
+      }
+      ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), {}, &l };
+      if (l.Kind == HierarchicalLink::Partial)
+      {
+        for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
+        {
+          const std::uint32_t b = s.Blockers(l)[k];
+          c.Blockers.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
+        }
+      }
+      chain.push_back(std::move(c));
+    }
+  }
+  return chain;
+}
+
+RGB ChainIrradiance(const std::vector<ChainSource>& chain, const Vec3& x, const Vec3& n)
+{
+  RGB e(0.0);
+  for (const ChainSource& c : chain)
+  {
+    const double f = c.Blockers.empty()
+      ? PointToPolygonFormFactor(x, n, c.Polygon.data(), 3)
+      : VisibleFormFactor(x, n, c.Polygon, c.Blockers.data(), c.Blockers.size());
+    e += f * c.Radiosity;
+  }
+  return e;
+}
+
+/// Which edges of the input are silhouettes: an edge shared with a coplanar
+/// triangle of the same emission (the diagonal of a quad) bounds nothing.
+class EdgeTopology
+{
+public:
+  explicit EdgeTopology(const Scene& scene)
+    : SourceScene(scene)
+  {
+    for (std::uint32_t t = 0; t < scene.Triangles.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Edges[EdgeKey(scene.Triangles[t].V[k], scene.Triangles[t].V[(k + 1) % 3])].push_back(t);
+      }
+    }
+  }
+
+  bool Coplanar(std::uint32_t a, std::uint32_t b) const
+  {
+    const Vec3 na = this->SourceScene.Normal(a), nb = this->SourceScene.Normal(b);
+    return glm::dot(na, nb) > 1.0 - 1e-9;
+  }
+
+  /// Edge k of source triangle t lies inside a larger emitting polygon.
+  bool InteriorEmitterEdge(std::uint32_t t, int k) const
+  {
+    const Triangle& tri = this->SourceScene.Triangles[t];
+    const auto it = this->Edges.find(EdgeKey(tri.V[k], tri.V[(k + 1) % 3]));
+    for (std::uint32_t o : it->second)
+    {
+      if (o != t && this->Coplanar(o, t) &&
+        this->SourceScene.Materials[o].Emission == this->SourceScene.Materials[t].Emission)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// The edges of a blocker set that are not shared by two coplanar members.
+  std::vector<BlockerEdge> Silhouette(const std::vector<std::uint32_t>& blockers) const
+  {
+    std::vector<BlockerEdge> out;
+    for (std::uint32_t b : blockers)
+    {
+      const Triangle& tri = this->SourceScene.Triangles[b];
+      for (int k = 0; k < 3; ++k)
+      {
+        const auto& sharing = this->Edges.at(EdgeKey(tri.V[k], tri.V[(k + 1) % 3]));
+        bool interior = false;
+        for (std::uint32_t o : sharing)
+        {
+          interior = interior ||
+            (o != b && this->Coplanar(o, b) &&
+              std::binary_search(blockers.begin(), blockers.end(), o));
+        }
+        if (!interior)
+        {
+          out.push_back({ this->SourceScene.Points[tri.V[k]], this->SourceScene.Points[tri.V[(k + 1) % 3]] });
+        }
+      }
+    }
+    return out;
+  }
+
+private:
+  const Scene& SourceScene;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> Edges;
+};
+
+/// The kept discontinuity segments of one leaf (section 4.2).
+std::vector<std::array<Vec3, 2>> LeafDiscontinuities(const HierarchicalRadiosity& s,
+  const EdgeTopology& topology, std::uint32_t leaf, const DiscontinuityMeshOptions& options,
+  double minWeight, std::size_t& found)
+{
+  const ElementMesh& mesh = s.Mesh();
+  const Scene& scene = s.GetScene();
+  // Sources are the input triangles behind partial links (a subdivided light
+  // casts its discontinuities from its own edges, not from its quadtree's).
+  std::map<std::uint32_t, std::pair<double, std::vector<std::uint32_t>>> sources;
+  for (std::int32_t a = static_cast<std::int32_t>(leaf); a >= 0;
+       a = mesh[static_cast<std::uint32_t>(a)].Parent)
+  {
+    for (std::uint32_t i : s.LinksOf(static_cast<std::uint32_t>(a)))
+    {
+      const HierarchicalLink& l = s.Links()[i];
+      if (l.Kind != HierarchicalLink::Partial)
+      {
+        continue;
+      }
+      auto& entry = sources[mesh[l.Source].Source];
+      entry.first = std::max(entry.first, MaxComponent(s.Radiosity(l.Source)));
+      entry.second.insert(entry.second.end(), s.Blockers(l), s.Blockers(l) + l.BlockerCount);
+    }
+  }
+  std::vector<DiscontinuitySegment> segments;
+  const TriangleCorners receiver = s.Corners(leaf);
+  const double minLength = 1e-4 * mesh.LongestEdge(leaf);
+  for (auto& [source, entry] : sources)
+  {
+    if (entry.first < minWeight * 1e-6)
+    {
+      continue; // cannot reach w_min: the geometric factor is capped at 1e6
+    }
+    std::sort(entry.second.begin(), entry.second.end());
+    entry.second.erase(std::unique(entry.second.begin(), entry.second.end()), entry.second.end());
+    const TriangleCorners polygon = { scene.Vertex(source, 0), scene.Vertex(source, 1),
+      scene.Vertex(source, 2) };
+    const std::array<bool, 3> edges = { !topology.InteriorEmitterEdge(source, 0),
+      !topology.InteriorEmitterEdge(source, 1), !topology.InteriorEmitterEdge(source, 2) };
+    FindCriticalSegments(receiver, mesh[leaf].Normal, polygon, entry.first,
+      topology.Silhouette(entry.second), minLength, segments, edges);
+  }
+  found += segments.size();
+  segments.erase(std::remove_if(segments.begin(), segments.end(),
+                   [&](const DiscontinuitySegment& d) { return !(d.Weight >= minWeight); }),
+    segments.end());
+  std::sort(segments.begin(), segments.end(),
+    [](const DiscontinuitySegment& a, const DiscontinuitySegment& b) { return a.Weight > b.Weight; });
+  if (segments.size() > static_cast<std::size_t>(options.MaxPerLeaf))
+  {
+    segments.resize(static_cast<std::size_t>(options.MaxPerLeaf));
+  }
+  std::vector<std::array<Vec3, 2>> kept;
+  for (const DiscontinuitySegment& d : segments)
+  {
+    kept.push_back({ d.A, d.B });
+  }
+  return kept;
+}
+
+/// A sample of one leaf's triangulation: shared (a leaf corner or the
+/// midpoint of a whole leaf edge, index into the shared samples) or local.
+struct SampleRef
+{
+  bool Shared;
+  std::uint32_t Index;
+};
+
+struct LeafWork
+{
+  PlanarTriangulation Mesh;
+  std::vector<Vec3> LocalPoints;
+  std::vector<RGB> LocalValues;
+  std::vector<std::array<SampleRef, 6>> TriangleSamples; ///< r0..r5 per triangle
+  std::vector<SampleRef> VertexSamples;
+};
+} // namespace
+
+RGB AccuratePointIrradiance(
+  const HierarchicalRadiosity& solution, std::uint32_t leaf, const Vec3& x, const Vec3& n)
+{
+  return ChainIrradiance(GatherChain(solution, leaf), x, n);
+}
+
+DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
+  const DiscontinuityMeshOptions& options, const ProgressCallback& progress)
+{
+  const Stopwatch clock;
+  std::unique_ptr<tbb::global_control> threads;
+  if (options.Threads > 0)
+  {
+    threads = std::make_unique<tbb::global_control>(
+      tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(options.Threads));
+  }
+  DiscontinuityMesh out;
+  const ElementMesh& mesh = s.Mesh();
+  const Scene& scene = s.GetScene();
+  const std::vector<std::uint32_t> leaves = mesh.Leaves();
+  double brightest = 0.0;
+  for (const Material& m : scene.Materials)
+  {
+    brightest = std::max(brightest, MaxComponent(m.Emission));
+  }
+  const double minWeight = options.MinWeight * brightest;
+  const EdgeTopology topology(scene);
+  auto report = [&](const char* phase, double fraction) {
+    if (!progress)
+    {
+      return true;
+    }
+    ProgressStatus status;
+    status.Phase = phase;
+    status.Fraction = fraction;
+    return progress(status);
+  };
+
+  // Phase 1: discontinuities and triangulations, per leaf.
+  std::vector<LeafWork> work(leaves.size());
+  std::vector<std::size_t> found(leaves.size(), 0), kept(leaves.size(), 0);
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+    const std::uint32_t leaf = leaves[i];
+    const TriangleCorners corners = s.Corners(leaf);
+    std::vector<std::array<Vec3, 2>> segments;
+    if (options.Discontinuities)
+    {
+      segments = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
+      kept[i] = segments.size();
+    }
+    work[i].Mesh = segments.empty()
+      ? PlanarTriangulation{ { corners[0], corners[1], corners[2] }, { { 0u, 1u, 2u } } }
+      : TriangulateWithConstraints(corners, segments);
+  });
+  if (!report("meshing", 0.3))
+  {
+    return out;
+  }
+
+  // Phase 2: sample keys; leaf corners and whole leaf edges are shared.
+  std::unordered_map<std::uint64_t, std::uint32_t> sharedIndex;
+  std::vector<Vec3> sharedPoints;
+  std::vector<std::uint32_t> sharedOwner; ///< the leaf whose links evaluate it
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+  {
+    const Element& el = mesh[leaves[i]];
+    LeafWork& w = work[i];
+    out.LeavesMeshed += w.Mesh.Triangles.size() > 1;
+    out.SegmentsFound += found[i];
+    out.SegmentsKept += kept[i];
+    auto shared = [&](std::uint32_t a, std::uint32_t b) {
+      const std::uint64_t key = EdgeKey(el.V[a], el.V[b]);
+      auto it = sharedIndex.find(key);
+      if (it == sharedIndex.end())
+      {
+        it = sharedIndex.emplace(key, static_cast<std::uint32_t>(sharedPoints.size())).first;
+        sharedPoints.push_back(0.5 * (mesh.Points()[el.V[a]] + mesh.Points()[el.V[b]]));
+        sharedOwner.push_back(static_cast<std::uint32_t>(i));
+      }
+      return SampleRef{ true, it->second };
+    };
+    std::map<std::uint64_t, std::uint32_t> localMid;
+    w.VertexSamples.resize(w.Mesh.Points.size());
+    for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
+    {
+      if (v < 3)
+      {
+        w.VertexSamples[v] = shared(v, v);
+      }
+      else
+      {
+        w.VertexSamples[v] = { false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
+        w.LocalPoints.push_back(w.Mesh.Points[v]);
+      }
+    }
+    for (const auto& t : w.Mesh.Triangles)
+    {
+      std::array<SampleRef, 6> r{};
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+        r[2 * k] = w.VertexSamples[a];
+        if (a < 3 && b < 3)
+        {
+          r[2 * k + 1] = shared(a, b);
+        }
+        else
+        {
+          auto it = localMid.find(EdgeKey(a, b));
+          if (it == localMid.end())
+          {
+            it = localMid.emplace(EdgeKey(a, b), static_cast<std::uint32_t>(w.LocalPoints.size())).first;
+            w.LocalPoints.push_back(0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]));
+          }
+          r[2 * k + 1] = { false, it->second };
+        }
+      }
+      w.TriangleSamples.push_back(r);
+    }
+  }
+
+  // Phase 3: accurate point irradiance, shared samples grouped by owner leaf.
+  std::vector<std::vector<std::uint32_t>> owned(leaves.size());
+  for (std::uint32_t k = 0; k < sharedOwner.size(); ++k)
+  {
+    owned[sharedOwner[k]].push_back(k);
+  }
+  std::vector<RGB> sharedValues(sharedPoints.size());
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+    if (owned[i].empty() && work[i].LocalPoints.empty())
+    {
+      return;
+    }
+    const std::vector<ChainSource> chain = GatherChain(s, leaves[i]);
+    const Vec3& n = mesh[leaves[i]].Normal;
+    for (std::uint32_t k : owned[i])
+    {
+      sharedValues[k] = ChainIrradiance(chain, sharedPoints[k], n);
+    }
+    LeafWork& w = work[i];
+    w.LocalValues.resize(w.LocalPoints.size());
+    for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
+    {
+      w.LocalValues[k] = ChainIrradiance(chain, w.LocalPoints[k], n);
+    }
+  });
+  out.PointSamples = sharedPoints.size();
+  if (!report("interpolants", 0.9))
+  {
+    return out;
+  }
+
+  // Phase 4: interpolants and the output mesh.
+  auto value = [&](const LeafWork& w, const SampleRef& r) {
+    return r.Shared ? sharedValues[r.Index] : w.LocalValues[r.Index];
+  };
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+  {
+    const LeafWork& w = work[i];
+    const Element& el = mesh[leaves[i]];
+    out.PointSamples += w.LocalPoints.size();
+    const auto base = static_cast<std::uint32_t>(out.Points.size());
+    for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
+    {
+      out.Points.push_back(w.Mesh.Points[v]);
+      out.PointIrradiance.push_back(value(w, w.VertexSamples[v]));
+    }
+    for (std::size_t t = 0; t < w.Mesh.Triangles.size(); ++t)
+    {
+      const auto& tri = w.Mesh.Triangles[t];
+      Triangle cell;
+      cell.V = { base + tri[0], base + tri[1], base + tri[2] };
+      out.Triangles.push_back(cell);
+      std::array<RGB, 6> r;
+      for (int k = 0; k < 6; ++k)
+      {
+        r[k] = value(w, w.TriangleSamples[t][k]);
+      }
+      out.Interpolants.push_back(QuadraticInterpolant::FromSamples(r));
+      out.Leaf.push_back(leaves[i]);
+      out.SourceTriangle.push_back(el.Source);
+      out.Level.push_back(el.Level);
+      out.Normals.push_back(el.Normal);
+    }
+  }
+  out.Seconds = clock.Seconds();
+  report("interpolants", 1.0);
+  return out;
+}
+
+std::vector<RGB> EvaluateInterpolants(
+  const DiscontinuityMesh& mesh, const std::vector<Probe>& probes, double tolerance)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<RGB> values(probes.size(), RGB(nan));
+  const double cosLimit = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+  tbb::parallel_for(std::size_t(0), probes.size(), [&](std::size_t i) {
+    const Probe& probe = probes[i];
+    const Vec3 n = glm::normalize(probe.Normal);
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+    {
+      if (glm::dot(mesh.Normals[t], n) < cosLimit)
+      {
+        continue;
+      }
+      const Vec3& a = mesh.Points[mesh.Triangles[t].V[0]];
+      const double dist = std::fabs(glm::dot(probe.Position - a, mesh.Normals[t]));
+      double u, v, w;
+      if (dist <= tolerance && dist < best &&
+        ProjectOnTriangle(probe.Position, a, mesh.Points[mesh.Triangles[t].V[1]],
+          mesh.Points[mesh.Triangles[t].V[2]], u, v, w) &&
+        u >= -1e-6 && v >= -1e-6 && w >= -1e-6)
+      {
+        best = dist;
+        values[i] = mesh.Interpolants[t].Evaluate(v, w);
+      }
+    }
+  });
+  return values;
+}
+} // namespace radiosity
