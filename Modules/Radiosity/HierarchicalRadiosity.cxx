@@ -220,67 +220,83 @@ void HierarchicalRadiosity::ComputeLinks(
         const TriangleCorners p = this->Corners(link.Receiver);
         const TriangleCorners q = this->Corners(link.Source);
         const Vec3& n = (*this->Elements)[link.Receiver].Normal;
-        int seen = 16;
+        // Candidate blockers: occluders near the shaft (the BVH's boxes that
+        // meet its bounding sphere) with a vertex in front of both nodes. A
+        // superset is harmless: backprojection is exact, and a candidate that
+        // hides nothing subtracts nothing.
+        const Element& pe = (*this->Elements)[link.Receiver];
+        const Element& qe = (*this->Elements)[link.Source];
         if (!this->Rays->Empty())
         {
-          Vec3 from[16], to[16];
-          unsigned char visible[16];
-          for (int a = 0; a < 4; ++a)
+          const Vec3 centre = (p[0] + p[1] + p[2] + q[0] + q[1] + q[2]) / 6.0;
+          double radius = 0.0;
+          for (int k = 0; k < 3; ++k)
           {
-            for (int b = 0; b < 4; ++b)
+            radius = std::max({ radius, glm::length(p[k] - centre), glm::length(q[k] - centre) });
+          }
+          std::vector<std::uint32_t> near;
+          this->Rays->OccludersInSphere(centre, radius, near);
+          for (std::uint32_t b : near)
+          {
+            if (b == pe.Source || b == qe.Source)
             {
-              from[4 * a + b] = At(p, RuleA[a]);
-              to[4 * a + b] = At(q, RuleA[b]);
+              continue;
+            }
+            bool frontP = false, frontQ = false;
+            for (int k = 0; k < 3; ++k)
+            {
+              const Vec3 v = scene.Vertex(b, k);
+              frontP = frontP || glm::dot(v - pe.Centroid, pe.Normal) > this->PlaneTolerance;
+              frontQ = frontQ || glm::dot(v - qe.Centroid, qe.Normal) > this->PlaneTolerance;
+            }
+            if (frontP && frontQ)
+            {
+              res.Blockers.push_back(b);
             }
           }
-          this->Rays->TestSegments(from, to, 16, visible);
-          seen = 0;
-          for (unsigned char v : visible)
+          std::sort(res.Blockers.begin(), res.Blockers.end());
+          res.Blockers.erase(std::unique(res.Blockers.begin(), res.Blockers.end()), res.Blockers.end());
+        }
+        if (res.Blockers.size() > this->Settings.MaxBlockersPerLink)
+        {
           {
-            seen += v;
-          }
-          if (seen > 0 && seen < 16)
-          {
-            // Blockers: every occluder met by rays between both point sets.
-            Vec3 more[48][2];
-            int m = 0;
+            // Too many candidates: keep those the rays between the nodes meet.
+            std::vector<std::uint32_t> hit;
+            Vec3 from[16], to[16];
             for (int a = 0; a < 4; ++a)
             {
               for (int b = 0; b < 4; ++b)
               {
-                more[m][0] = At(p, RuleA[a]);
-                more[m++][1] = At(q, RuleA[b]);
-                more[m][0] = At(p, RuleB[a]);
-                more[m++][1] = At(q, RuleA[b]);
-                more[m][0] = At(p, RuleA[a]);
-                more[m++][1] = At(q, RuleB[b]);
+                from[4 * a + b] = At(p, RuleA[a]);
+                to[4 * a + b] = At(q, RuleA[b]);
               }
             }
-            Vec3 f[48], t[48];
-            for (int k = 0; k < 48; ++k)
+            Vec3 f[32], t[32];
+            for (int a = 0; a < 4; ++a)
             {
-              f[k] = more[k][0];
-              t[k] = more[k][1];
+              for (int b = 0; b < 4; ++b)
+              {
+                f[8 * a + 2 * b] = At(p, RuleA[a]);
+                t[8 * a + 2 * b] = At(q, RuleB[b]);
+                f[8 * a + 2 * b + 1] = At(p, RuleB[a]);
+                t[8 * a + 2 * b + 1] = At(q, RuleA[b]);
+              }
             }
-            this->Rays->CollectOccluders(f, t, 48, res.Blockers);
-            const std::uint32_t own[2] = { (*this->Elements)[link.Receiver].Source,
-              (*this->Elements)[link.Source].Source };
-            res.Blockers.erase(std::remove_if(res.Blockers.begin(), res.Blockers.end(),
-                                 [&](std::uint32_t b) { return b == own[0] || b == own[1]; }),
-              res.Blockers.end());
-            if (res.Blockers.size() > this->Settings.MaxBlockersPerLink)
+            this->Rays->CollectOccluders(from, to, 16, hit);
+            this->Rays->CollectOccluders(f, t, 32, hit);
+            std::sort(hit.begin(), hit.end());
+            hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
+            hit.erase(std::remove_if(hit.begin(), hit.end(),
+                        [&](std::uint32_t b) { return b == pe.Source || b == qe.Source; }),
+              hit.end());
+            if (hit.size() > this->Settings.MaxBlockersPerLink)
             {
-              res.Blockers.resize(this->Settings.MaxBlockersPerLink);
+              hit.resize(this->Settings.MaxBlockersPerLink);
             }
+            res.Blockers.swap(hit);
           }
         }
-        if (seen == 0)
-        {
-          link.Kind = HierarchicalLink::Hidden;
-          continue;
-        }
-        link.Kind = seen == 16 || res.Blockers.empty() ? HierarchicalLink::Visible
-                                                       : HierarchicalLink::Partial;
+        link.Kind = res.Blockers.empty() ? HierarchicalLink::Visible : HierarchicalLink::Partial;
         blockerCorners.clear();
         for (std::uint32_t b : res.Blockers)
         {
@@ -293,7 +309,10 @@ void HierarchicalRadiosity::ComputeLinks(
         const double distance = glm::length(
           (*this->Elements)[link.Source].Centroid - (*this->Elements)[link.Receiver].Centroid);
         const double size = this->Elements->LongestEdge(link.Receiver);
-        const int splits = distance < 1.5 * size ? 8 : distance < 4 * size ? 4 : 2;
+        const int splits = link.Kind == HierarchicalLink::Partial ? 2
+          : distance < 1.5 * size                                  ? 8
+          : distance < 4 * size                                    ? 4
+                                                                   : 2;
         double f = 0.0;
         int count = 0;
         auto accumulate = [&](double s, double t) {
@@ -316,11 +335,6 @@ void HierarchicalRadiosity::ComputeLinks(
           }
         }
         f /= count;
-        // Blocked rays without a recorded blocker: scale by the fraction seen.
-        if (seen < 16 && res.Blockers.empty())
-        {
-          f *= seen / 16.0;
-        }
         link.Factor = f;
       }
     });

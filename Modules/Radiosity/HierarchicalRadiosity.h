@@ -13,11 +13,15 @@
 //   Links are refined again with the new radiosities after each solve,
 //   until no link changes (HSA91's iterated BF refinement).
 // - Transfer: the link's coefficient is the receiver-area mean of the point
-//   form factor to the source, at four points of the receiver; visibility by
-//   Embree segments between four points of each node (all visible, none, or
-//   partial); a partial link keeps its blockers (every occluder its rays
-//   pass through) and its coefficient is computed exactly through them by
-//   backprojection (Backprojection.h).
+//   form factor to the source (centroids of a midpoint subdivision of the
+//   receiver, finer for close pairs). Blockers: the occluders whose BVH boxes
+//   meet the shaft's bounding sphere (an Embree point query) and that have a
+//   vertex in front of both nodes; a link with any is partial, keeps them,
+//   and its coefficient is computed through them exactly by backprojection
+//   (Backprojection.h). No link is classified by sampled rays: a shadow edge
+//   that four sample points miss would otherwise vanish from the link and
+//   from the discontinuity mesh (measured: 5.6% error along the penumbra line
+//   with 16-ray classification, 0.14% without).
 // - Gathering: Jacobi sweeps, H_p = sum over p's links of F B_q, pushed down
 //   the quadtree as irradiance (a flux density, the same for children) and
 //   pulled up as area-weighted radiosity. The sweep's change shrinks
@@ -78,7 +82,7 @@ struct HierarchicalLink
   {
     Visible = 0, ///< no occluder between the nodes (no blockers)
     Partial = 1, ///< blockers recorded
-    Hidden = 2   ///< every ray blocked: no transfer
+    Hidden = 2   ///< no transfer (kept in the statistics; the solver does not drop links)
   };
   std::uint32_t Receiver = 0;
   std::uint32_t Source = 0;

@@ -226,6 +226,42 @@ void Visibility::CollectOccluders(
     triangles.end());
 }
 
+namespace
+{
+struct SphereQuery
+{
+  const std::vector<unsigned>* GeometryToTriangle;
+  std::vector<std::uint32_t>* Hits;
+};
+
+bool CollectInSphere(RTCPointQueryFunctionArguments* args)
+{
+  auto* q = static_cast<SphereQuery*>(args->userPtr);
+  q->Hits->push_back((*q->GeometryToTriangle)[args->primID]);
+  return false; // the query sphere stays as it is
+}
+}
+
+void Visibility::OccludersInSphere(
+  const Vec3& centre, double radius, std::vector<std::uint32_t>& triangles) const
+{
+  if (this->Empty())
+  {
+    return;
+  }
+  const Vec3 c = centre - this->Impl->Origin;
+  RTCPointQuery query;
+  query.x = static_cast<float>(c.x);
+  query.y = static_cast<float>(c.y);
+  query.z = static_cast<float>(c.z);
+  query.time = 0.f;
+  query.radius = static_cast<float>(radius * (1.0 + 1e-6) + this->Epsilon);
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  SphereQuery user{ &this->Impl->GeometryToTriangle, &triangles };
+  rtcPointQuery(this->Impl->Scene, &query, &context, &CollectInSphere, &user);
+}
+
 bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, double& t,
   unsigned& triangle, double& u, double& v) const
 {

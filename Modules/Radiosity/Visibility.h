@@ -47,6 +47,14 @@ public:
   void CollectOccluders(
     const Vec3* from, const Vec3* to, std::size_t n, std::vector<std::uint32_t>& triangles) const;
 
+  /**
+   * Every occluder whose bounding box meets the sphere (centre, radius),
+   * appended to `triangles` (Embree point query over the BVH): a superset of
+   * the blockers of any shaft inside the sphere. Thread-safe.
+   */
+  void OccludersInSphere(
+    const Vec3& centre, double radius, std::vector<std::uint32_t>& triangles) const;
+
   /// Nearest hit of a ray, for primary rays of images; returns false on a miss.
   /// Only meaningful when built over every triangle (see `AllTriangles`).
   bool Intersect(const Vec3& origin, const Vec3& direction, double& t, unsigned& triangle,
