@@ -33,10 +33,42 @@ struct ChainSource
   const HierarchicalLink* Link;
 };
 
+/// Can triangle b hide any part of `source` from any point of `receiver`?
+/// (A link's blockers were found for the shaft of an ancestor: most of them
+/// are outside the narrower shaft of one leaf.) Conservative: bounding
+/// spheres, and the blocker must reach in front of both planes.
+bool InLeafShaft(const TriangleCorners& receiver, const Vec3& receiverNormal,
+  const TriangleCorners& source, const TriangleCorners& b)
+{
+  const Vec3 centre = (receiver[0] + receiver[1] + receiver[2] + source[0] + source[1] + source[2]) / 6.0;
+  double radius = 0.0;
+  const Vec3 bc = (b[0] + b[1] + b[2]) / 3.0;
+  double br = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    radius = std::max({ radius, glm::length(receiver[k] - centre), glm::length(source[k] - centre) });
+    br = std::max(br, glm::length(b[k] - bc));
+  }
+  if (glm::length(bc - centre) > radius + br)
+  {
+    return false;
+  }
+  const Vec3 sourceNormal = glm::cross(source[1] - source[0], source[2] - source[0]);
+  bool frontR = false, frontS = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    frontR = frontR || glm::dot(b[k] - receiver[0], receiverNormal) > 0;
+    frontS = frontS || glm::dot(b[k] - source[0], sourceNormal) > 0;
+  }
+  return frontR && frontS;
+}
+
 std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf)
 {
   const ElementMesh& mesh = s.Mesh();
   const Scene& scene = s.GetScene();
+  const TriangleCorners receiver = s.Corners(leaf);
+  const Vec3& normal = mesh[leaf].Normal;
   std::vector<ChainSource> chain;
   for (std::int32_t a = static_cast<std::int32_t>(leaf); a >= 0;
        a = mesh[static_cast<std::uint32_t>(a)].Parent)
@@ -54,13 +86,26 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
         for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
         {
           const std::uint32_t b = s.Blockers(l)[k];
-          c.Blockers.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
+          const TriangleCorners corners = { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) };
+          if (InLeafShaft(receiver, normal, c.Polygon, corners))
+          {
+            c.Blockers.push_back(corners);
+          }
         }
       }
       chain.push_back(std::move(c));
     }
   }
   return chain;
+}
+
+/// On a leaf's boundary a sample can lie in a neighbour's plane (a contact
+/// edge, the shared edge of a tessellated sphere), where the form factor of
+/// that neighbour jumps to 0; the interpolant needs the limit from inside the
+/// leaf, so samples are moved towards its centroid by a relative 1e-7.
+Vec3 Inside(const Vec3& x, const Vec3& centroid)
+{
+  return x + 1e-7 * (centroid - x);
 }
 
 RGB ChainIrradiance(const std::vector<ChainSource>& chain, const Vec3& x, const Vec3& n)
@@ -360,15 +405,16 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     }
     const std::vector<ChainSource> chain = GatherChain(s, leaves[i]);
     const Vec3& n = mesh[leaves[i]].Normal;
+    const Vec3& c = mesh[leaves[i]].Centroid;
     for (std::uint32_t k : owned[i])
     {
-      sharedValues[k] = ChainIrradiance(chain, sharedPoints[k], n);
+      sharedValues[k] = ChainIrradiance(chain, Inside(sharedPoints[k], c), n);
     }
     LeafWork& w = work[i];
     w.LocalValues.resize(w.LocalPoints.size());
     for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
     {
-      w.LocalValues[k] = ChainIrradiance(chain, w.LocalPoints[k], n);
+      w.LocalValues[k] = ChainIrradiance(chain, Inside(w.LocalPoints[k], c), n);
     }
   });
   out.PointSamples = sharedPoints.size();
