@@ -105,3 +105,37 @@ TEST(HierarchicalRadiosity, ShadowSceneRecordsBlockers)
   }
   EXPECT_GT(total, 0.0);
 }
+
+TEST(HierarchicalRadiosity, ScaleInvariance)
+{
+  // The same room at 1e-4 m and at 1e4 m: identical radiosities (the link
+  // tolerance, the minimum element size and the visibility offsets all
+  // scale with the scene).
+  std::vector<RGB> at[2];
+  const double scales[2] = { 1e-4, 1e4 };
+  for (int i = 0; i < 2; ++i)
+  {
+    Scene scene = MakeShadowScene(2, 5.0);
+    for (Material& m : scene.Materials)
+    {
+      m.Reflectance = RGB(0.6);
+    }
+    for (Vec3& p : scene.Points)
+    {
+      p *= scales[i];
+    }
+    HierarchicalRadiosity solver(scene, HierarchicalOptions());
+    const SolverStatistics stats = solver.Solve();
+    EXPECT_EQ(stats.Stop, StopReason::Converged);
+    for (std::uint32_t e : solver.Mesh().Leaves())
+    {
+      at[i].push_back(solver.Radiosity(e));
+    }
+  }
+  ASSERT_EQ(at[0].size(), at[1].size());
+  for (std::size_t k = 0; k < at[0].size(); ++k)
+  {
+    // Equal to the solver tolerance (1e-3): the same links, the same sweeps.
+    EXPECT_NEAR(at[0][k].x, at[1][k].x, 1e-3 * std::fabs(at[0][k].x) + 1e-12) << "leaf " << k;
+  }
+}
