@@ -14,7 +14,16 @@ struct Point2
 {
   double X, Y;
 };
-using Polygon2 = std::vector<Point2>;
+
+/// A convex polygon in the source plane with a fixed capacity: fragments are
+/// clipped millions of times, and heap allocation dominated the cost.
+struct Polygon2
+{
+  static constexpr int Capacity = 32;
+  Point2 V[Capacity];
+  int N = 0;
+  void Push(const Point2& p) { V[N++] = p; }
+};
 
 double Cross(const Point2& o, const Point2& a, const Point2& b)
 {
@@ -24,61 +33,64 @@ double Cross(const Point2& o, const Point2& a, const Point2& b)
 double SignedArea(const Polygon2& p)
 {
   double a = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (int i = 0; i < p.N; ++i)
   {
-    const Point2& u = p[i];
-    const Point2& v = p[(i + 1) % p.size()];
+    const Point2& u = p.V[i];
+    const Point2& v = p.V[(i + 1) % p.N];
     a += u.X * v.Y - v.X * u.Y;
   }
   return 0.5 * a;
 }
 
-// Sutherland-Hodgman against the half-plane on the `keepLeft` side of a->b.
-Polygon2 ClipHalfPlane(const Polygon2& in, const Point2& a, const Point2& b, bool keepLeft)
+// Sutherland-Hodgman against the half-plane on the `keepLeft` side of a->b;
+// false when the result would not fit (the caller stops subtracting).
+bool ClipHalfPlane(const Polygon2& in, const Point2& a, const Point2& b, bool keepLeft, Polygon2& out)
 {
-  Polygon2 out;
-  out.reserve(in.size() + 1);
+  out.N = 0;
   const double s = keepLeft ? 1.0 : -1.0;
-  for (std::size_t i = 0; i < in.size(); ++i)
+  for (int i = 0; i < in.N; ++i)
   {
-    const Point2& p = in[i];
-    const Point2& q = in[(i + 1) % in.size()];
+    const Point2& p = in.V[i];
+    const Point2& q = in.V[(i + 1) % in.N];
     const double dp = s * Cross(a, b, p);
     const double dq = s * Cross(a, b, q);
+    if (out.N + 2 > Polygon2::Capacity)
+    {
+      return false;
+    }
     if (dp >= 0)
     {
-      out.push_back(p);
+      out.Push(p);
     }
     if ((dp >= 0) != (dq >= 0))
     {
       const double t = dp / (dp - dq);
-      out.push_back({ p.X + t * (q.X - p.X), p.Y + t * (q.Y - p.Y) });
+      out.Push({ p.X + t * (q.X - p.X), p.Y + t * (q.Y - p.Y) });
     }
   }
-  return out;
+  return true;
 }
 
-// Clip of a 3D polygon to the half-space d(p) = dot(p, m) - offset >= 0.
-std::vector<Vec3> ClipPlane(const std::vector<Vec3>& in, const Vec3& m, double offset)
+// Clip of a small 3D polygon to the half-space dot(p, m) - offset >= 0.
+int ClipPlane(const Vec3* in, int n, const Vec3& m, double offset, Vec3* out)
 {
-  std::vector<Vec3> out;
-  out.reserve(in.size() + 1);
-  for (std::size_t i = 0; i < in.size(); ++i)
+  int k = 0;
+  for (int i = 0; i < n; ++i)
   {
     const Vec3& p = in[i];
-    const Vec3& q = in[(i + 1) % in.size()];
+    const Vec3& q = in[(i + 1) % n];
     const double dp = glm::dot(p, m) - offset;
     const double dq = glm::dot(q, m) - offset;
     if (dp >= 0)
     {
-      out.push_back(p);
+      out[k++] = p;
     }
     if ((dp >= 0) != (dq >= 0))
     {
-      out.push_back(p + (dp / (dp - dq)) * (q - p));
+      out[k++] = p + (dp / (dp - dq)) * (q - p);
     }
   }
-  return out;
+  return k;
 }
 
 struct Box2
@@ -86,12 +98,12 @@ struct Box2
   double X0 = 1e300, Y0 = 1e300, X1 = -1e300, Y1 = -1e300;
   explicit Box2(const Polygon2& p)
   {
-    for (const Point2& v : p)
+    for (int i = 0; i < p.N; ++i)
     {
-      X0 = std::min(X0, v.X);
-      Y0 = std::min(Y0, v.Y);
-      X1 = std::max(X1, v.X);
-      Y1 = std::max(Y1, v.Y);
+      X0 = std::min(X0, p.V[i].X);
+      Y0 = std::min(Y0, p.V[i].Y);
+      X1 = std::max(X1, p.V[i].X);
+      Y1 = std::max(Y1, p.V[i].Y);
     }
   }
   bool Overlaps(const Box2& o) const
@@ -101,21 +113,29 @@ struct Box2
 };
 
 // Fragment minus a convex counter-clockwise polygon: the parts of `piece`
-// outside each edge of `hole` in turn (disjoint by construction).
-void Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::vector<Polygon2>& out)
+// outside each edge of `hole` in turn (disjoint by construction). False when
+// a fragment outgrew its capacity (then `piece` is kept whole).
+bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::vector<Polygon2>& out)
 {
-  Polygon2 rest = piece;
-  for (std::size_t i = 0; i < hole.size() && rest.size() >= 3; ++i)
+  const std::size_t first = out.size();
+  Polygon2 rest = piece, inside, outside;
+  for (int i = 0; i < hole.N && rest.N >= 3; ++i)
   {
-    const Point2& a = hole[i];
-    const Point2& b = hole[(i + 1) % hole.size()];
-    Polygon2 outside = ClipHalfPlane(rest, a, b, false);
-    if (outside.size() >= 3 && std::abs(SignedArea(outside)) > minArea)
+    const Point2& a = hole.V[i];
+    const Point2& b = hole.V[(i + 1) % hole.N];
+    if (!ClipHalfPlane(rest, a, b, false, outside) || !ClipHalfPlane(rest, a, b, true, inside))
     {
-      out.push_back(std::move(outside));
+      out.resize(first);
+      out.push_back(piece);
+      return false;
     }
-    rest = ClipHalfPlane(rest, a, b, true);
+    if (outside.N >= 3 && std::abs(SignedArea(outside)) > minArea)
+    {
+      out.push_back(outside);
+    }
+    rest = inside;
   }
+  return true;
 }
 } // namespace
 
@@ -157,32 +177,42 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
 
   const double sourceArea = 0.5 * twiceArea;
   const double minArea = 1e-14 * sourceArea;
-  std::vector<Polygon2> visible{ Polygon2{ to2(source[0]), to2(source[1]), to2(source[2]) } };
+  thread_local std::vector<Polygon2> visible, next;
+  visible.clear();
+  {
+    Polygon2 whole;
+    whole.Push(to2(source[0]));
+    whole.Push(to2(source[1]));
+    whole.Push(to2(source[2]));
+    visible.push_back(whole);
+  }
   // Blocker parts within this distance of either plane cast no shadow worth
   // a fragment (and would project to infinity at the receiver's plane).
   const double slack = 1e-9 * height;
   const double xLevel = glm::dot(x, m);
 
-  std::vector<Polygon2> next;
   for (std::size_t b = 0; b < blockerCount && !visible.empty(); ++b)
   {
-    std::vector<Vec3> poly(blockers[b].begin(), blockers[b].end());
-    poly = ClipPlane(poly, m, planeOffset + slack);
-    if (poly.size() < 3)
+    const TriangleCorners& tri = blockers[b];
+    Vec3 poly[5], clipped[5];
+    int n = 3;
+    const double l0 = glm::dot(tri[0], m), l1 = glm::dot(tri[1], m), l2 = glm::dot(tri[2], m);
+    const double lo = planeOffset + slack, hi = xLevel - slack;
+    if (std::max({ l0, l1, l2 }) <= lo || std::min({ l0, l1, l2 }) >= hi)
     {
-      continue;
+      continue; // wholly behind the source or behind the point
     }
-    poly = ClipPlane(poly, -m, -(xLevel - slack));
-    if (poly.size() < 3)
+    n = ClipPlane(tri.data(), 3, m, lo, clipped);
+    n = ClipPlane(clipped, n, -m, -hi, poly);
+    if (n < 3)
     {
       continue;
     }
     Polygon2 shadow;
-    shadow.reserve(poly.size());
-    for (const Vec3& p : poly)
+    for (int i = 0; i < n; ++i)
     {
-      const double t = height / (xLevel - glm::dot(p, m));
-      shadow.push_back(to2(x + t * (p - x)));
+      const double t = height / (xLevel - glm::dot(poly[i], m));
+      shadow.Push(to2(x + t * (poly[i] - x)));
     }
     const double area = SignedArea(shadow);
     if (std::abs(area) <= minArea)
@@ -191,7 +221,7 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
     }
     if (area < 0)
     {
-      std::reverse(shadow.begin(), shadow.end());
+      std::reverse(shadow.V, shadow.V + shadow.N);
     }
     const Box2 shadowBox(shadow);
     next.clear();
@@ -202,7 +232,10 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
         next.push_back(piece);
         continue;
       }
-      Subtract(piece, shadow, minArea, next);
+      if (!Subtract(piece, shadow, minArea, next) && exact)
+      {
+        *exact = false;
+      }
     }
     visible.swap(next);
     if (visible.size() > fragmentsLimit)
@@ -216,22 +249,21 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
   }
 
   double factor = 0.0;
-  std::vector<Vec3> poly3;
+  Vec3 poly3[Polygon2::Capacity];
   for (const Polygon2& piece : visible)
   {
-    poly3.clear();
-    for (const Point2& p : piece)
+    for (int i = 0; i < piece.N; ++i)
     {
-      poly3.push_back(to3(p));
+      poly3[i] = to3(piece.V[i]);
     }
     // The contour kernel takes up to 8 vertices; larger convex fragments as fans.
-    if (poly3.size() <= 8)
+    if (piece.N <= 8)
     {
-      factor += PointToPolygonFormFactor(x, n, poly3.data(), poly3.size());
+      factor += PointToPolygonFormFactor(x, n, poly3, static_cast<std::size_t>(piece.N));
     }
     else
     {
-      for (std::size_t i = 1; i + 1 < poly3.size(); ++i)
+      for (int i = 1; i + 1 < piece.N; ++i)
       {
         factor += PointToTriangleFormFactor(x, n, poly3[0], poly3[i], poly3[i + 1]);
       }

@@ -33,42 +33,87 @@ struct ChainSource
   const HierarchicalLink* Link;
 };
 
-/// Can triangle b hide any part of `source` from any point of `receiver`?
-/// (A link's blockers were found for the shaft of an ancestor: most of them
-/// are outside the narrower shaft of one leaf.) Conservative: bounding
-/// spheres, and the blocker must reach in front of both planes.
-bool InLeafShaft(const TriangleCorners& receiver, const Vec3& receiverNormal,
-  const TriangleCorners& source, const TriangleCorners& b)
+/// The shaft between a leaf and a source: the face planes of the convex hull
+/// of their six corners (Haines & Wallace 1991 build shafts from such
+/// planes). A blocker with every vertex outside one of them cannot hide any
+/// part of the source from any point of the leaf; a link's blockers were
+/// found for the shaft of an ancestor, and most lie outside a leaf's.
+class Shaft
 {
-  const Vec3 centre = (receiver[0] + receiver[1] + receiver[2] + source[0] + source[1] + source[2]) / 6.0;
-  double radius = 0.0;
-  const Vec3 bc = (b[0] + b[1] + b[2]) / 3.0;
-  double br = 0.0;
-  for (int k = 0; k < 3; ++k)
+public:
+  Shaft(const TriangleCorners& receiver, const TriangleCorners& source)
   {
-    radius = std::max({ radius, glm::length(receiver[k] - centre), glm::length(source[k] - centre) });
-    br = std::max(br, glm::length(b[k] - bc));
+    const Vec3 p[6] = { receiver[0], receiver[1], receiver[2], source[0], source[1], source[2] };
+    double scale = 0.0;
+    for (const Vec3& v : p)
+    {
+      scale = std::max(scale, glm::length(v - p[0]));
+    }
+    const double tolerance = 1e-9 * scale;
+    for (int i = 0; i < 6; ++i)
+    {
+      for (int j = i + 1; j < 6; ++j)
+      {
+        for (int k = j + 1; k < 6; ++k)
+        {
+          Vec3 n = glm::cross(p[j] - p[i], p[k] - p[i]);
+          const double len = glm::length(n);
+          if (!(len > 1e-12 * scale * scale))
+          {
+            continue;
+          }
+          n /= len;
+          int above = 0, below = 0;
+          for (const Vec3& v : p)
+          {
+            const double d = glm::dot(v - p[i], n);
+            above += d > tolerance;
+            below += d < -tolerance;
+          }
+          if (above > 0 && below > 0)
+          {
+            continue;
+          }
+          if (above > 0)
+          {
+            n = -n; // outward
+          }
+          if (this->Count < MaxPlanes)
+          {
+            this->Normal[this->Count] = n;
+            this->Offset[this->Count++] = glm::dot(p[i], n) + tolerance;
+          }
+        }
+      }
+    }
   }
-  if (glm::length(bc - centre) > radius + br)
+
+  bool Excludes(const TriangleCorners& b) const
   {
+    for (int f = 0; f < this->Count; ++f)
+    {
+      if (glm::dot(b[0], this->Normal[f]) > this->Offset[f] &&
+        glm::dot(b[1], this->Normal[f]) > this->Offset[f] &&
+        glm::dot(b[2], this->Normal[f]) > this->Offset[f])
+      {
+        return true;
+      }
+    }
     return false;
   }
-  const Vec3 sourceNormal = glm::cross(source[1] - source[0], source[2] - source[0]);
-  bool frontR = false, frontS = false;
-  for (int k = 0; k < 3; ++k)
-  {
-    frontR = frontR || glm::dot(b[k] - receiver[0], receiverNormal) > 0;
-    frontS = frontS || glm::dot(b[k] - source[0], sourceNormal) > 0;
-  }
-  return frontR && frontS;
-}
+
+private:
+  static constexpr int MaxPlanes = 20;
+  Vec3 Normal[MaxPlanes];
+  double Offset[MaxPlanes];
+  int Count = 0;
+};
 
 std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf)
 {
   const ElementMesh& mesh = s.Mesh();
   const Scene& scene = s.GetScene();
   const TriangleCorners receiver = s.Corners(leaf);
-  const Vec3& normal = mesh[leaf].Normal;
   std::vector<ChainSource> chain;
   for (std::int32_t a = static_cast<std::int32_t>(leaf); a >= 0;
        a = mesh[static_cast<std::uint32_t>(a)].Parent)
@@ -83,11 +128,12 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
       ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), {}, &l };
       if (l.Kind == HierarchicalLink::Partial)
       {
+        const Shaft shaft(receiver, c.Polygon);
         for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
         {
           const std::uint32_t b = s.Blockers(l)[k];
           const TriangleCorners corners = { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) };
-          if (InLeafShaft(receiver, normal, c.Polygon, corners))
+          if (!shaft.Excludes(corners))
           {
             c.Blockers.push_back(corners);
           }
@@ -229,6 +275,17 @@ std::vector<std::array<Vec3, 2>> LeafDiscontinuities(const HierarchicalRadiosity
     entry.second.erase(std::unique(entry.second.begin(), entry.second.end()), entry.second.end());
     const TriangleCorners polygon = { scene.Vertex(source, 0), scene.Vertex(source, 1),
       scene.Vertex(source, 2) };
+    const Shaft shaft(receiver, polygon);
+    entry.second.erase(std::remove_if(entry.second.begin(), entry.second.end(),
+                         [&](std::uint32_t b) {
+                           return shaft.Excludes(
+                             { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
+                         }),
+      entry.second.end());
+    if (entry.second.empty())
+    {
+      continue;
+    }
     const std::array<bool, 3> edges = { !topology.InteriorEmitterEdge(source, 0),
       !topology.InteriorEmitterEdge(source, 1), !topology.InteriorEmitterEdge(source, 2) };
     FindCriticalSegments(receiver, mesh[leaf].Normal, polygon, entry.first,
