@@ -4,6 +4,7 @@
 #include "Radiosity/CriticalSurfaces.h"
 #include "Radiosity/FormFactor.h"
 #include "Radiosity/MeshProbeTracker.h"
+#include "Radiosity/Shaft.h"
 #include "Radiosity/Stopwatch.h"
 
 #include <tbb/global_control.h>
@@ -31,82 +32,6 @@ struct ChainSource
   RGB Radiosity;
   std::vector<TriangleCorners> Blockers; ///< empty for unoccluded links
   const HierarchicalLink* Link;
-};
-
-/// The shaft between a leaf and a source: the face planes of the convex hull
-/// of their six corners (Haines & Wallace 1991 build shafts from such
-/// planes). A blocker with every vertex outside one of them cannot hide any
-/// part of the source from any point of the leaf; a link's blockers were
-/// found for the shaft of an ancestor, and most lie outside a leaf's.
-class Shaft
-{
-public:
-  Shaft(const TriangleCorners& receiver, const TriangleCorners& source)
-  {
-    const Vec3 p[6] = { receiver[0], receiver[1], receiver[2], source[0], source[1], source[2] };
-    double scale = 0.0;
-    for (const Vec3& v : p)
-    {
-      scale = std::max(scale, glm::length(v - p[0]));
-    }
-    const double tolerance = 1e-9 * scale;
-    for (int i = 0; i < 6; ++i)
-    {
-      for (int j = i + 1; j < 6; ++j)
-      {
-        for (int k = j + 1; k < 6; ++k)
-        {
-          Vec3 n = glm::cross(p[j] - p[i], p[k] - p[i]);
-          const double len = glm::length(n);
-          if (!(len > 1e-12 * scale * scale))
-          {
-            continue;
-          }
-          n /= len;
-          int above = 0, below = 0;
-          for (const Vec3& v : p)
-          {
-            const double d = glm::dot(v - p[i], n);
-            above += d > tolerance;
-            below += d < -tolerance;
-          }
-          if (above > 0 && below > 0)
-          {
-            continue;
-          }
-          if (above > 0)
-          {
-            n = -n; // outward
-          }
-          if (this->Count < MaxPlanes)
-          {
-            this->Normal[this->Count] = n;
-            this->Offset[this->Count++] = glm::dot(p[i], n) + tolerance;
-          }
-        }
-      }
-    }
-  }
-
-  bool Excludes(const TriangleCorners& b) const
-  {
-    for (int f = 0; f < this->Count; ++f)
-    {
-      if (glm::dot(b[0], this->Normal[f]) > this->Offset[f] &&
-        glm::dot(b[1], this->Normal[f]) > this->Offset[f] &&
-        glm::dot(b[2], this->Normal[f]) > this->Offset[f])
-      {
-        return true;
-      }
-    }
-    return false;
-  }
-
-private:
-  static constexpr int MaxPlanes = 20;
-  Vec3 Normal[MaxPlanes];
-  double Offset[MaxPlanes];
-  int Count = 0;
 };
 
 std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf)

@@ -4,6 +4,7 @@
 #include "Radiosity/Stopwatch.h"
 #include "Radiosity/FormFactor.h"
 #include "Radiosity/MeshProbeTracker.h"
+#include "Radiosity/Shaft.h"
 #include "Radiosity/Visibility.h"
 
 #include <tbb/global_control.h>
@@ -221,9 +222,10 @@ void HierarchicalRadiosity::ComputeLinks(
         const TriangleCorners q = this->Corners(link.Source);
         const Vec3& n = (*this->Elements)[link.Receiver].Normal;
         // Candidate blockers: occluders near the shaft (the BVH's boxes that
-        // meet its bounding sphere) with a vertex in front of both nodes. A
-        // superset is harmless: backprojection is exact, and a candidate that
-        // hides nothing subtracts nothing.
+        // meet its bounding sphere), inside the shaft's hull planes and with a
+        // vertex in front of both nodes. A superset is harmless:
+        // backprojection is exact, and a candidate that hides nothing
+        // subtracts nothing.
         const Element& pe = (*this->Elements)[link.Receiver];
         const Element& qe = (*this->Elements)[link.Source];
         if (!this->Rays->Empty())
@@ -236,9 +238,11 @@ void HierarchicalRadiosity::ComputeLinks(
           }
           std::vector<std::uint32_t> near;
           this->Rays->OccludersInSphere(centre, radius, near);
+          const Shaft shaft(p, q);
           for (std::uint32_t b : near)
           {
-            if (b == pe.Source || b == qe.Source)
+            if (b == pe.Source || b == qe.Source ||
+              shaft.Excludes({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) }))
             {
               continue;
             }
