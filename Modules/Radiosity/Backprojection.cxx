@@ -19,7 +19,7 @@ struct Point2
 /// clipped millions of times, and heap allocation dominated the cost.
 struct Polygon2
 {
-  static constexpr int Capacity = 32;
+  static constexpr int Capacity = 16;
   Point2 V[Capacity];
   int N = 0;
   void Push(const Point2& p) { V[N++] = p; }
@@ -42,30 +42,35 @@ double SignedArea(const Polygon2& p)
   return 0.5 * a;
 }
 
-// Sutherland-Hodgman against the half-plane on the `keepLeft` side of a->b;
-// false when the result would not fit (the caller stops subtracting).
-bool ClipHalfPlane(const Polygon2& in, const Point2& a, const Point2& b, bool keepLeft, Polygon2& out)
+// Sutherland-Hodgman split by the line a->b into its left and right parts in
+// one pass; false when a part would not fit (the caller stops subtracting).
+bool SplitByLine(const Polygon2& in, const Point2& a, const Point2& b, Polygon2& left, Polygon2& right)
 {
-  out.N = 0;
-  const double s = keepLeft ? 1.0 : -1.0;
+  left.N = right.N = 0;
   for (int i = 0; i < in.N; ++i)
   {
     const Point2& p = in.V[i];
     const Point2& q = in.V[(i + 1) % in.N];
-    const double dp = s * Cross(a, b, p);
-    const double dq = s * Cross(a, b, q);
-    if (out.N + 2 > Polygon2::Capacity)
+    const double dp = Cross(a, b, p);
+    const double dq = Cross(a, b, q);
+    if (left.N + 2 > Polygon2::Capacity || right.N + 2 > Polygon2::Capacity)
     {
       return false;
     }
     if (dp >= 0)
     {
-      out.Push(p);
+      left.Push(p);
     }
-    if ((dp >= 0) != (dq >= 0))
+    if (dp <= 0)
+    {
+      right.Push(p);
+    }
+    if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0))
     {
       const double t = dp / (dp - dq);
-      out.Push({ p.X + t * (q.X - p.X), p.Y + t * (q.Y - p.Y) });
+      const Point2 x{ p.X + t * (q.X - p.X), p.Y + t * (q.Y - p.Y) };
+      left.Push(x);
+      right.Push(x);
     }
   }
   return true;
@@ -123,7 +128,7 @@ bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::
   {
     const Point2& a = hole.V[i];
     const Point2& b = hole.V[(i + 1) % hole.N];
-    if (!ClipHalfPlane(rest, a, b, false, outside) || !ClipHalfPlane(rest, a, b, true, inside))
+    if (!SplitByLine(rest, a, b, inside, outside))
     {
       out.resize(first);
       out.push_back(piece);
