@@ -3,21 +3,46 @@
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkHierarchicalRadiositySolution.h"
 #include "vtkInformation.h"
+#include "vtkInformationObjectBaseKey.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkRadiositySceneConverter.h"
 #include "vtkVersion.h"
 
+#include "Radiosity/HierarchicalRadiosity.h"
 #include "Radiosity/ProgressiveRadiosity.h"
 #include "Radiosity/SolutionMesh.h"
 
 #include <chrono>
 
 vtkStandardNewMacro(vtkRadiosityFilter);
+vtkInformationKeyMacro(vtkRadiosityFilter, HIERARCHICAL_SOLUTION, ObjectBase);
 
-vtkRadiosityFilter::vtkRadiosityFilter() = default;
+namespace
+{
+/// The hierarchical solver together with the scene it references, so that
+/// the solver handed out (an aliasing shared_ptr) keeps the scene alive.
+struct HierarchicalHolder
+{
+  std::shared_ptr<const radiosity::Scene> SceneRef;
+  radiosity::HierarchicalRadiosity Solver;
+  HierarchicalHolder(
+    std::shared_ptr<const radiosity::Scene> scene, const radiosity::HierarchicalOptions& options)
+    : SceneRef(std::move(scene))
+    , Solver(*this->SceneRef, options)
+  {
+  }
+};
+}
+
+vtkRadiosityFilter::vtkRadiosityFilter()
+  : LastScene(std::make_shared<radiosity::Scene>())
+{
+}
 vtkRadiosityFilter::~vtkRadiosityFilter() = default;
 
 const char* vtkRadiosityFilter::GetMethodName(int method)
@@ -28,6 +53,8 @@ const char* vtkRadiosityFilter::GetMethodName(int method)
       return "auto";
     case Progressive:
       return "progressive";
+    case Hierarchical:
+      return "hierarchical";
     default:
       return "unknown";
   }
@@ -55,9 +82,13 @@ int vtkRadiosityFilter::RequestData(
   this->LastError.clear();
   this->Warnings.clear();
   this->Solution.reset();
+  this->HierarchicalSolution.reset();
   this->Statistics = radiosity::SolverStatistics();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  // The data object's information outlives executions: drop a solution of
+  // an earlier hierarchical run before anything can fail.
+  output->GetInformation()->Remove(HIERARCHICAL_SOLUTION());
 
   radiosity::Scene scene;
   std::string error;
@@ -98,8 +129,75 @@ int vtkRadiosityFilter::RequestData(
     this->Warnings.push_back(w);
     vtkWarningMacro(<< w);
   }
-  this->LastScene = scene;
+  auto sharedScene = std::make_shared<const radiosity::Scene>(std::move(scene));
+  this->LastScene = sharedScene;
 
+  auto last = Clock::now();
+  auto progress = [this, &last](const radiosity::ProgressStatus& status)
+  {
+    const auto now = Clock::now();
+    if (std::chrono::duration<double>(now - last).count() > 0.05)
+    {
+      last = now;
+      this->UpdateProgress(status.Fraction);
+    }
+    if (this->StatusCallback && !this->StatusCallback(status))
+    {
+      return false;
+    }
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+    return !this->CheckAbort();
+#else
+    return !this->GetAbortExecute();
+#endif
+  };
+
+  if (this->Method == Hierarchical)
+  {
+    radiosity::HierarchicalOptions options;
+    options.Tolerance = this->Tolerance;
+    options.MaxIterations = this->MaxIterations;
+    options.MaxTimeSeconds = this->MaxTime;
+    options.Threads = this->NumberOfThreads;
+    options.RelativeLinkTolerance = this->LinkTolerance;
+    options.MinElementSize = this->MinElementSize;
+    options.MaxRefinementRounds = this->MaxRefinementRounds;
+    options.ErrorProbes = this->ErrorProbes;
+    options.ErrorReference = this->ErrorReference;
+    auto holder = std::make_shared<HierarchicalHolder>(sharedScene, options);
+    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    last = Clock::now();
+    this->Statistics = holder->Solver.Solve(progress);
+    this->HierarchicalSolution =
+      std::shared_ptr<const radiosity::HierarchicalRadiosity>(holder, &holder->Solver);
+    this->Solution =
+      std::make_unique<radiosity::SolutionMesh>(radiosity::ExtractSolution(holder->Solver.Mesh()));
+  }
+  else
+  {
+    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    this->SolveProgressive(progress);
+  }
+  this->UpdateProgress(1.0);
+  if (this->Statistics.Stop == radiosity::StopReason::Aborted)
+  {
+    vtkWarningMacro(<< "aborted after " << this->Statistics.Iterations << " iterations");
+  }
+  output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(*this->Solution, *this->LastScene));
+  output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
+  if (this->HierarchicalSolution)
+  {
+    vtkNew<vtkHierarchicalRadiositySolution> carrier;
+    carrier->SetSolution(this->HierarchicalSolution);
+    output->GetInformation()->Set(HIERARCHICAL_SOLUTION(), carrier);
+  }
+  return 1;
+}
+
+void vtkRadiosityFilter::SolveProgressive(const radiosity::ProgressCallback& progress)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
   radiosity::ProgressiveOptions options;
   options.Tolerance = this->Tolerance;
   options.MaxIterations = this->MaxIterations;
@@ -115,38 +213,11 @@ int vtkRadiosityFilter::RequestData(
   options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
   options.ErrorProbes = this->ErrorProbes;
   options.ErrorReference = this->ErrorReference;
-  radiosity::ProgressiveRadiosity solver(this->LastScene, options);
-  this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  radiosity::ProgressiveRadiosity solver(*this->LastScene, options);
+  this->PreprocessSeconds += std::chrono::duration<double>(Clock::now() - start).count();
 
-  auto last = Clock::now();
-  this->Statistics = solver.Solve(
-    [this, &last](const radiosity::ProgressStatus& status)
-    {
-      const auto now = Clock::now();
-      if (std::chrono::duration<double>(now - last).count() > 0.05)
-      {
-        last = now;
-        this->UpdateProgress(status.Fraction);
-      }
-      if (this->StatusCallback && !this->StatusCallback(status))
-      {
-        return false;
-      }
-#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
-      return !this->CheckAbort();
-#else
-      return !this->GetAbortExecute();
-#endif
-    });
-  this->UpdateProgress(1.0);
-  if (this->Statistics.Stop == radiosity::StopReason::Aborted)
-  {
-    vtkWarningMacro(<< "aborted after " << this->Statistics.Iterations << " iterations");
-  }
+  this->Statistics = solver.Solve(progress);
   this->Solution = std::make_unique<radiosity::SolutionMesh>(radiosity::ExtractSolution(solver.Mesh()));
-  output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(*this->Solution, this->LastScene));
-  output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
-  return 1;
 }
 
 void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -165,6 +236,10 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FormFactorTolerance: " << this->FormFactorTolerance << "\n";
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
   os << indent << "IndirectVisibilitySamples: " << this->IndirectVisibilitySamples << "\n";
+  os << indent << "LinkTolerance: " << this->LinkTolerance << "\n";
+  os << indent << "MinElementSize: " << this->MinElementSize << "\n";
+  os << indent << "MaxRefinementRounds: " << this->MaxRefinementRounds << "\n";
+  os << indent << "HierarchicalSolution: " << (this->HierarchicalSolution ? "yes" : "none") << "\n";
   os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";
   os << indent << "LastError: " << this->LastError << "\n";
 }

@@ -8,7 +8,15 @@
  * `Level` on cells, and the field data array `ConvergenceHistory`.
  *
  * Methods: Progressive (progressive refinement radiosity with adaptive
- * quadtrees, Coombe et al. 2004 on the CPU); Auto picks the best available.
+ * quadtrees, Coombe et al. 2004 on the CPU); Hierarchical (hierarchical
+ * radiosity with BF refinement and the blockers of every partially visible
+ * link, the solver of Hardt & Teller); Auto picks progressive.
+ *
+ * With Method Hierarchical the output's information carries the solver under
+ * HIERARCHICAL_SOLUTION() (a vtkHierarchicalRadiositySolution), from which
+ * vtkDiscontinuityMeshFilter builds the discontinuity mesh and its quadratic
+ * interpolants; other methods remove that key.
+ *
  * Bad input gives an error naming the array, cell or point and an empty
  * output (GetLastError() keeps the message). Progress events during the solve;
  * AbortExecute stops it (VTK then empties the output; the solution so far
@@ -24,7 +32,7 @@
 #include "Radiosity/Scene.h"       // for radiosity::SceneCleanupReport
 #include "Radiosity/SolverTypes.h" // for radiosity::SolverStatistics
 
-#include <memory> // for std::unique_ptr
+#include <memory> // for std::unique_ptr, std::shared_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -32,7 +40,9 @@ namespace radiosity
 {
 struct SolutionMesh;
 struct SceneAnalysis;
+class HierarchicalRadiosity;
 }
+class vtkInformationObjectBaseKey;
 
 class RADIOSITYFILTERS_EXPORT vtkRadiosityFilter : public vtkPolyDataAlgorithm
 {
@@ -44,26 +54,30 @@ public:
   enum Methods
   {
     Auto = 0,
-    Progressive = 1
+    Progressive = 1,
+    Hierarchical = 2
   };
 
   ///@{
-  /// The solution method. Default Auto (progressive, the only one so far).
-  vtkSetClampMacro(Method, int, Auto, Progressive);
+  /// The solution method. Default Auto (progressive).
+  vtkSetClampMacro(Method, int, Auto, Hierarchical);
   vtkGetMacro(Method, int);
   void SetMethodToAuto() { this->SetMethod(Auto); }
   void SetMethodToProgressive() { this->SetMethod(Progressive); }
+  void SetMethodToHierarchical() { this->SetMethod(Hierarchical); }
   static const char* GetMethodName(int method);
   ///@}
 
   ///@{
-  /// Stop when the unshot power falls to this fraction of the emitted power. Default 1e-3.
+  /// Stop when the unshot power falls to this fraction of the emitted power
+  /// (hierarchical: when the estimated remaining change of the gather sweeps
+  /// falls to this fraction of the total power). Default 1e-3.
   vtkSetClampMacro(Tolerance, double, 1e-12, 1.0);
   vtkGetMacro(Tolerance, double);
   ///@}
 
   ///@{
-  /// Stop after this many shots. Default 200000.
+  /// Stop after this many shots (hierarchical: gather sweeps). Default 200000.
   vtkSetClampMacro(MaxIterations, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(MaxIterations, vtkIdType);
   ///@}
@@ -136,7 +150,7 @@ public:
   /// Statistics of the last solve (history, counts, times).
   const radiosity::SolverStatistics& GetStatistics() const { return this->Statistics; }
   /// The last scene as the solver saw it and what was dropped from it.
-  const radiosity::Scene& GetScene() const { return this->LastScene; }
+  const radiosity::Scene& GetScene() const { return *this->LastScene; }
   const radiosity::SceneCleanupReport& GetCleanupReport() const { return this->Cleanup; }
   /// The last solution in the core's form (for probes and images); null before a solve.
   const radiosity::SolutionMesh* GetSolution() const { return this->Solution.get(); }
@@ -154,6 +168,45 @@ public:
     this->ErrorReference = irradiance;
     this->Modified();
   }
+
+  ///@{
+  /**
+   * Hierarchical: the link refinement threshold epsilon on B F, relative to
+   * the scene's mean irradiance (emitted power over total area over one minus
+   * the mean reflectance). Smaller refines more. Default 0.05.
+   */
+  vtkSetClampMacro(LinkTolerance, double, 1e-6, 10.0);
+  vtkGetMacro(LinkTolerance, double);
+  ///@}
+
+  ///@{
+  /// Hierarchical: quadtree nodes whose longest edge is at or below this
+  /// fraction of the scene diagonal are not split. Default 1/64.
+  vtkSetClampMacro(MinElementSize, double, 1e-6, 1.0);
+  vtkGetMacro(MinElementSize, double);
+  ///@}
+
+  ///@{
+  /// Hierarchical: BF refinement passes with the new radiosities after the
+  /// first solve. Default 4.
+  vtkSetClampMacro(MaxRefinementRounds, int, 0, 100);
+  vtkGetMacro(MaxRefinementRounds, int);
+  ///@}
+
+  /**
+   * The last hierarchical solution (quadtrees, links, blockers; it keeps its
+   * scene alive); null before a solve and for other methods.
+   */
+  std::shared_ptr<const radiosity::HierarchicalRadiosity> GetHierarchicalSolution() const
+  {
+    return this->HierarchicalSolution;
+  }
+
+  /**
+   * Key of the output's information (output->GetInformation()) under which
+   * Method Hierarchical stores a vtkHierarchicalRadiositySolution.
+   */
+  static vtkInformationObjectBaseKey* HIERARCHICAL_SOLUTION();
 
   /// Called with the solver's phase, iteration and residual besides the
   /// progress events (for terminal progress bars); returning false aborts.
@@ -179,17 +232,23 @@ protected:
   double FormFactorTolerance = 2e-3;
   int VisibilitySamples = 16;
   int IndirectVisibilitySamples = 1;
+  double LinkTolerance = 0.05;
+  double MinElementSize = 1.0 / 64.0;
+  int MaxRefinementRounds = 4;
 
 private:
   vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;
   void operator=(const vtkRadiosityFilter&) = delete;
 
   bool Fail(const std::string& message);
+  void SolveProgressive(const radiosity::ProgressCallback& progress);
 
   std::string LastError;
   std::vector<std::string> Warnings;
   radiosity::SolverStatistics Statistics;
-  radiosity::Scene LastScene;
+  /// Shared with the hierarchical solution, which references it.
+  std::shared_ptr<const radiosity::Scene> LastScene;
+  std::shared_ptr<const radiosity::HierarchicalRadiosity> HierarchicalSolution;
   radiosity::SceneCleanupReport Cleanup;
   std::unique_ptr<radiosity::SolutionMesh> Solution;
   double PreprocessSeconds = 0.0;

@@ -1,0 +1,133 @@
+// A close-up of a penumbra: a square area light above a square blocker over a
+// grey floor (radiosity::MakeShadowScene with a reflecting floor), solved by
+// hierarchical radiosity and discontinuity meshed. One window, two halves with
+// the same camera: left, the hierarchical solution's quadtree leaves drawn with
+// Gouraud interpolation of the point Radiosity (vtkRadiosityView's Gouraud
+// path); right, the discontinuity mesh drawn with its per-pixel quadratic
+// interpolants. The two halves must differ visibly.
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDiscontinuityMeshFilter.h"
+#include "vtkFloatingPointExceptions.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityView.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "Radiosity/SceneGenerators.h"
+
+#include <cmath>
+#include <iostream>
+
+int TestShadowBoundaryCloseUp(int argc, char* argv[])
+{
+  vtkFloatingPointExceptions::Disable();
+  // Emitter [-0.25, 0.25]^2 at z = 1 facing down, blocker [-0.05, 0.35] x
+  // [-0.2, 0.2] at z = 0.5, floor [-1, 1]^2: umbra x in [0.15, 0.45], penumbra
+  // from x = -0.35. The floor reflects (object 0); the rest stays black, so the
+  // floor sees the direct light only.
+  vtkSmartPointer<vtkPolyData> scene =
+    vtkRadiositySceneConverter::FromScene(radiosity::MakeShadowScene(4, 10.0));
+  vtkDataArray* reflectance = scene->GetCellData()->GetArray("Reflectance");
+  vtkDataArray* objects = scene->GetCellData()->GetArray("ObjectId");
+  if (!reflectance || !objects)
+  {
+    std::cerr << "FromScene gave no Reflectance or ObjectId\n";
+    return EXIT_FAILURE;
+  }
+  for (vtkIdType c = 0; c < scene->GetNumberOfCells(); ++c)
+  {
+    if (objects->GetComponent(c, 0) == 0)
+    {
+      reflectance->SetTuple3(c, 0.75, 0.7, 0.6);
+    }
+  }
+
+  vtkNew<vtkRadiosityFilter> radiosity;
+  radiosity->SetInputData(scene);
+  radiosity->SetMethodToHierarchical();
+  vtkNew<vtkDiscontinuityMeshFilter> dm;
+  dm->SetInputConnection(radiosity->GetOutputPort());
+  dm->Update();
+  vtkPolyData* leaves = radiosity->GetOutput();
+  vtkPolyData* meshed = dm->GetOutput();
+  if (!radiosity->GetLastError().empty() || !dm->GetLastError().empty() ||
+    meshed->GetNumberOfCells() <= leaves->GetNumberOfCells())
+  {
+    std::cerr << "solve or meshing failed: " << radiosity->GetLastError() << dm->GetLastError()
+              << "\n";
+    return EXIT_FAILURE;
+  }
+  std::cout << leaves->GetNumberOfCells() << " leaves, " << meshed->GetNumberOfCells()
+            << " triangles, " << dm->GetMesh().LeavesMeshed << " leaves meshed, "
+            << dm->GetMesh().SegmentsKept << " segments\n";
+
+  // Straight down from just under the blocker (z = 0.45) at the umbra's
+  // corner (0.15, -0.15): the umbra top right, the penumbrae of its -x and -y
+  // edges across the rest (the floor from about (-0.38, -0.58) to (0.38, 0.18)).
+  const double position[3] = { 0.0, -0.2, 0.45 };
+  const double focal[3] = { 0.0, -0.2, 0.0 };
+  const double up[3] = { 0.0, 1.0, 0.0 };
+  const int width = 400, height = 400;
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(2 * width, height);
+  vtkNew<vtkRadiosityView> gouraud;
+  gouraud->SetInputData(leaves);
+  vtkNew<vtkRadiosityView> quadratic;
+  quadratic->SetInputData(meshed);
+  int half = 0;
+  for (vtkRadiosityView* view : { gouraud.Get(), quadratic.Get() })
+  {
+    view->SetRenderWindow(window);
+    view->SetSize(2 * width, height);
+    view->SetCamera(position, focal, up, 80.0);
+    view->SetExposure(4.0);
+    view->GetRenderer()->SetViewport(0.5 * half, 0.0, 0.5 * (half + 1), 1.0);
+    ++half;
+  }
+  if (gouraud->UsesInterpolantMapper() || !quadratic->UsesInterpolantMapper())
+  {
+    std::cerr << "wrong display paths\n";
+    return EXIT_FAILURE;
+  }
+  if (!gouraud->Render() || !quadratic->Render())
+  {
+    return EXIT_FAILURE;
+  }
+
+  // The halves differ: mean absolute difference of corresponding pixels.
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(0, 0, 2 * width - 1, height - 1, 1, pixels);
+  double difference = 0.0, left = 0.0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const double a = pixels->GetValue(4 * (y * 2 * width + x) + c);
+        const double b = pixels->GetValue(4 * (y * 2 * width + x + width) + c);
+        difference += std::fabs(a - b);
+        left += a;
+      }
+    }
+  }
+  difference /= 3.0 * width * height;
+  left /= 3.0 * width * height;
+  std::cout << "mean pixel difference between the halves " << difference << ", left mean "
+            << left << "\n";
+  if (left < 10.0 || difference < 0.5)
+  {
+    std::cerr << "the image is dark or the halves do not differ\n";
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
