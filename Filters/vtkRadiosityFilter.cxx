@@ -185,7 +185,9 @@ int vtkRadiosityFilter::RequestData(
   }
   output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(*this->Solution, *this->LastScene));
   output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
-  if (this->HierarchicalSolution)
+  // An aborted solve is not a solution to mesh downstream (VTK empties the
+  // output; GetHierarchicalSolution() still gives the partial one).
+  if (this->HierarchicalSolution && this->Statistics.Stop != radiosity::StopReason::Aborted)
   {
     vtkNew<vtkHierarchicalRadiositySolution> carrier;
     carrier->SetSolution(this->HierarchicalSolution);
