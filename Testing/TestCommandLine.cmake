@@ -104,6 +104,86 @@ if (NOT kind MATCHES "^path traced: 4096 paths per probe" OR NOT EXISTS "${WORK}
 endif ()
 expect_exit(2 "${PROGRAM}" solve shadow --reference-exr "${WORK}/bad.exr")
 
+# Hierarchical radiosity (Hardt & Teller): discontinuity-meshed by default,
+# the .vtp carries the quadratic interpolants, the probes come from them
+# (exact penumbra scene, analytic reference), the report names the meshing.
+expect_exit(0 "${PROGRAM}" solve shadow --method hierarchical --probes "${DATA}/shadow_probes.csv"
+  --reference analytic --probe-output "${WORK}/h_values.csv" --output "${WORK}/h.vtp"
+  --report "${WORK}/h.json" --history "${WORK}/h_history.csv" --image "${WORK}/h.png"
+  --exr "${WORK}/h.exr" --size 64 --link-tolerance 0.1 --discontinuities-per-leaf 8)
+foreach (f h.vtp h.png h.exr h.json h_values.csv h_history.csv)
+  if (NOT EXISTS "${WORK}/${f}")
+    message(FATAL_ERROR "hierarchical: missing output ${f}")
+  endif ()
+endforeach ()
+file(STRINGS "${WORK}/h.vtp" interpolant REGEX "Name=\"QuadraticInterpolant\" [^>]*NumberOfComponents=\"18\"")
+if (NOT interpolant)
+  message(FATAL_ERROR "hierarchical: h.vtp has no 18-component QuadraticInterpolant cell array")
+endif ()
+file(STRINGS "${WORK}/h_values.csv" rows)
+list(LENGTH rows n)
+if (NOT n EQUAL 32 OR rows MATCHES "nan")
+  message(FATAL_ERROR "hierarchical probe output: ${n} lines (expected a header and 31 rows)")
+endif ()
+file(READ "${WORK}/h.json" h)
+string(JSON method GET "${h}" method)
+string(JSON meshing GET "${h}" time meshing_s)
+string(JSON linkTolerance GET "${h}" parameters link_tolerance)
+string(JSON perLeaf GET "${h}" parameters discontinuities_per_leaf)
+string(JSON links GET "${h}" solution links)
+string(JSON partial GET "${h}" solution partial_links)
+string(JSON triangles GET "${h}" discontinuity_mesh triangles)
+string(JSON kept GET "${h}" discontinuity_mesh segments_kept)
+string(JSON rms GET "${h}" error rms_relative_error)
+string(JSON leafRms GET "${h}" error leaves_rms_relative_error)
+if (NOT method STREQUAL "hierarchical" OR NOT meshing GREATER 0 OR NOT linkTolerance EQUAL 0.1
+    OR NOT perLeaf EQUAL 8 OR NOT links GREATER 0 OR NOT partial GREATER 0
+    OR NOT triangles GREATER 0 OR NOT kept GREATER 0)
+  message(FATAL_ERROR "hierarchical report: method ${method}, meshing ${meshing} s, link "
+    "tolerance ${linkTolerance}, k ${perLeaf}, links ${links} (${partial} partial), "
+    "${triangles} triangles, ${kept} segments")
+endif ()
+# The interpolants resolve the penumbra that the constant leaves cannot.
+if (rms GREATER 0.05 OR NOT rms LESS leafRms)
+  message(FATAL_ERROR "hierarchical error: interpolants ${rms}, leaves ${leafRms}")
+endif ()
+set(meshedRms "${rms}")
+file(STRINGS "${WORK}/h_history.csv" history LIMIT_COUNT 2)
+list(GET history 1 first)
+if (first MATCHES "nan")
+  message(FATAL_ERROR "hierarchical history has no error figures: ${first}")
+endif ()
+# Without meshing: the leaves, no interpolants, probes from the constant leaves.
+expect_exit(0 "${PROGRAM}" solve shadow --method hierarchical --no-discontinuity-meshing
+  --probes "${DATA}/shadow_probes.csv" --reference analytic --probe-output "${WORK}/hl_values.csv"
+  --output "${WORK}/hl.vtp" --report "${WORK}/hl.json")
+file(STRINGS "${WORK}/hl.vtp" interpolant REGEX "QuadraticInterpolant")
+if (interpolant)
+  message(FATAL_ERROR "--no-discontinuity-meshing: the .vtp has interpolants")
+endif ()
+file(STRINGS "${WORK}/hl_values.csv" rows)
+list(LENGTH rows n)
+file(READ "${WORK}/hl.json" hl)
+string(JSON meshing GET "${hl}" parameters discontinuity_meshing)
+string(JSON rms GET "${hl}" error rms_relative_error)
+if (NOT n EQUAL 32 OR meshing OR NOT rms GREATER meshedRms)
+  message(FATAL_ERROR "--no-discontinuity-meshing: ${n} lines, meshing ${meshing}, rms ${rms} "
+    "(interpolants of the meshed run: ${meshedRms})")
+endif ()
+# A room from a file, the sensor in mid-air included (gathered from the leaves).
+expect_exit(0 "${PROGRAM}" solve "${DATA}/room.obj" --method hierarchical --max-time 20
+  --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/hroom_values.csv")
+file(STRINGS "${WORK}/hroom_values.csv" rows)
+list(LENGTH rows n)
+list(GET rows 1 centre)
+string(REPLACE "," ";" centre "${centre}")
+list(GET centre 3 er)
+if (NOT n EQUAL 5 OR rows MATCHES "nan" OR er LESS 1 OR er GREATER 30)
+  message(FATAL_ERROR "hierarchical room probes: ${rows}")
+endif ()
+expect_exit(2 "${PROGRAM}" solve shadow --method hierarchical --link-tolerance 0
+  --output "${WORK}/bad.vtp")
+
 expect_exit(2 "${PROGRAM}" solve shadow --probes "${DATA}/room_probes.csv"
   --reference "${WORK}/shadow_values.csv" --output "${WORK}/bad.vtp")
 expect_exit(2 "${PROGRAM}" solve cornell --probes "${DATA}/room_probes.csv"

@@ -4,12 +4,15 @@
 
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkRadiosityConvergenceChart.h"
 #include "vtkTable.h"
 
 #include "Radiosity/AnalyticReference.h"
 #include "Radiosity/BunnyScene.h"
+#include "Radiosity/DiscontinuityMesher.h"
 #include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/HierarchicalRadiosity.h"
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/ProgressiveRadiosity.h"
 #include "Radiosity/SceneGenerators.h"
@@ -20,6 +23,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -39,6 +43,10 @@ struct StandardScene
   /// Sensor points; empty means a sample of triangle centroids.
   std::function<std::vector<Probe>(const Scene&)> Probes;
   bool FullOnly = false; ///< too slow for --quick
+  /// Hierarchical radiosity links every pair of input triangles first: the
+  /// sphere (1280 triangles, 1.6 million links) is left out of --quick, the
+  /// bunny (235k triangles, 2.8e10 initial links) out of every run.
+  bool HierarchicalInQuick = true;
 };
 
 std::vector<Probe> CentroidSample(const Scene& scene)
@@ -76,7 +84,8 @@ std::vector<StandardScene> StandardScenes()
         }
         return p;
       } },
-    { "sphere", [] { return MakeSphereInterior(1.0, 3, 0.9, RGB(10.0)); }, CentroidSample },
+    { "sphere", [] { return MakeSphereInterior(1.0, 3, 0.9, RGB(10.0)); }, CentroidSample, false,
+      false },
     { "closed-room-0.99", [] { return MakeClosedCube(1.0, 2, 0.99, 1.0); }, CentroidSample },
     { "closed-room-0.999", [] { return MakeClosedCube(1.0, 2, 0.999, 1.0); }, CentroidSample },
 #ifdef RADIOSITY_BUNNY_JS
@@ -93,6 +102,75 @@ struct Setting
   double Tolerance;
 };
 
+/// One hierarchical solve at a link tolerance, then its discontinuity mesh:
+/// the error of the constant leaves (the solver's last history row) and of
+/// the quadratic interpolants at the same probes.
+struct HierarchicalPoint
+{
+  double LinkTolerance = 0.0;
+  SolverStatistics Stats;
+  double SolveSeconds = 0.0; ///< construction (scene analysis, BVH) and Solve
+  double MeshSeconds = 0.0;
+  std::size_t Leaves = 0, Triangles = 0, LeavesMeshed = 0, SegmentsKept = 0, PointSamples = 0;
+  ErrorFigures Leaf, Mesh;
+  std::size_t ProbesOnMesh = 0;
+};
+
+HierarchicalPoint RunHierarchical(const Scene& scene, const std::vector<Probe>& probes,
+  const std::vector<RGB>& reference, double linkTolerance, double maxSeconds)
+{
+  HierarchicalPoint point;
+  point.LinkTolerance = linkTolerance;
+  HierarchicalOptions options;
+  options.RelativeLinkTolerance = linkTolerance;
+  options.ErrorProbes = probes;
+  options.ErrorReference = reference;
+  options.MaxTimeSeconds = maxSeconds;
+  const auto start = std::chrono::steady_clock::now();
+  HierarchicalRadiosity solver(scene, options);
+  point.Stats = solver.Solve();
+  point.SolveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  point.Leaves = point.Stats.Elements;
+  const ConvergenceRow& last = point.Stats.History.Rows.back();
+  point.Leaf.Rms = last.RmsError;
+  point.Leaf.Max = last.MaxRelError;
+  point.Leaf.Counted = point.Stats.ErrorProbesTracked;
+  DiscontinuityMeshOptions meshOptions; // k = 10, w_min = 0.05 (SPEC defaults)
+  const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, meshOptions);
+  point.MeshSeconds = mesh.Seconds;
+  point.Triangles = mesh.Triangles.size();
+  point.LeavesMeshed = mesh.LeavesMeshed;
+  point.SegmentsKept = mesh.SegmentsKept;
+  point.PointSamples = mesh.PointSamples;
+  const std::vector<RGB> values =
+    EvaluateInterpolants(mesh, probes, 1e-6 * solver.Analysis().Diagonal);
+  point.Mesh = RelativeErrors(values, reference);
+  for (const RGB& v : values)
+  {
+    point.ProbesOnMesh += std::isfinite(Luminance(v)) ? 1 : 0;
+  }
+  return point;
+}
+
+vtkSmartPointer<vtkTable> CurveTable()
+{
+  auto table = vtkSmartPointer<vtkTable>::New();
+  for (const char* name : { "time_s", "rms_error", "max_rel_error" })
+  {
+    vtkNew<vtkDoubleArray> column;
+    column->SetName(name);
+    table->AddColumn(column);
+  }
+  return table;
+}
+
+void AddCurvePoint(vtkTable* table, double time, double rms, double worst)
+{
+  vtkDoubleArray::SafeDownCast(table->GetColumn(0))->InsertNextValue(std::max(time, 1e-6));
+  vtkDoubleArray::SafeDownCast(table->GetColumn(1))->InsertNextValue(rms);
+  vtkDoubleArray::SafeDownCast(table->GetColumn(2))->InsertNextValue(worst);
+}
+
 }
 
 int RunBench(const std::string& outputDir, bool quick)
@@ -102,13 +180,21 @@ int RunBench(const std::string& outputDir, bool quick)
     ? std::vector<Setting>{ { "coarse", 1.0 / 8, 1e-2 }, { "default", 1.0 / 16, 1e-3 } }
     : std::vector<Setting>{ { "coarse", 1.0 / 8, 1e-2 }, { "default", 1.0 / 16, 1e-3 },
         { "fine", 1.0 / 24, 1e-3 }, { "finer", 1.0 / 32, 1e-4 } };
+  // Hardt & Teller hierarchical radiosity: a sweep over the relative link tolerance.
+  const std::vector<double> linkTolerances = quick ? std::vector<double>{ 0.2 }
+                                                   : std::vector<double>{ 0.2, 0.1, 0.05, 0.025 };
   std::ostringstream md;
   md << "# Error against run time\n\nMachine: " << CpuModel() << ", "
      << std::thread::hardware_concurrency() << " hardware threads. Mode: "
      << (quick ? "quick" : "full") << ".\n\n"
      << "Errors are relative irradiance errors at the scene's probes against the analytic "
         "reference, or the path-traced one where there is no closed form (RMS and maximum over "
-        "probes).\n\n";
+        "probes).\n\n"
+        "Hierarchical radiosity is swept over the relative link tolerance (`--link-tolerance`; "
+        "minimum element 1/64 of the diagonal, gathering tolerance 1e-3, 4 refinement rounds). "
+        "`hierarchical` is the solver's own constant leaves; `hierarchical+DM` is the same "
+        "solution discontinuity-meshed (k = 10 per leaf, w_min = 0.05) with the probes evaluated "
+        "from the quadratic interpolants, and its time is solve plus meshing.\n\n";
   for (const StandardScene& standard : StandardScenes())
   {
     if (quick && standard.FullOnly)
@@ -139,7 +225,9 @@ int RunBench(const std::string& outputDir, bool quick)
     }
     std::ostringstream csv;
     csv << "method,setting,element_size,tolerance,preprocess_s,solve_s,peak_memory_bytes,"
-           "elements,rays,iterations,stop,relative_unshot,rms_error,max_rel_error\n";
+           "elements,rays,iterations,stop,relative_unshot,rms_error,max_rel_error,link_tolerance,"
+           "meshing_s,links,partial_links,hidden_links,triangles,leaves_meshed,segments_kept,"
+           "point_samples\n";
     md << "## " << standard.Name << " (" << reference.Kind << ", " << probes.size()
        << " probes, " << scene.Triangles.size() << " triangles)\n\n"
        << "| method | setting | solve (s) | stop | iterations | elements | rays | RMS error | "
@@ -182,7 +270,7 @@ int RunBench(const std::string& outputDir, bool quick)
       char line[512];
       const double unshot = stats.UnshotPowerW / stats.EmittedPowerW;
       std::snprintf(line, sizeof line,
-        "progressive,%s,%g,%g,%.6f,%.6f,%.0f,%zu,%zu,%lld,%s,%.3e,%.6e,%.6e\n",
+        "progressive,%s,%g,%g,%.6f,%.6f,%.0f,%zu,%zu,%lld,%s,%.3e,%.6e,%.6e,,,,,,,,,\n",
         setting.Name.c_str(), setting.ElementSize, setting.Tolerance, preprocess,
         stats.SolveSeconds, PeakMemoryBytes(), stats.Elements, stats.RaysCast, stats.Iterations,
         ToString(stats.Stop), unshot, last.RmsError, last.MaxRelError);
@@ -208,6 +296,59 @@ int RunBench(const std::string& outputDir, bool quick)
       worst->InsertNextValue(last.MaxRelError);
     }
     md << "\n";
+
+    vtkSmartPointer<vtkTable> leafCurve = CurveTable(), meshCurve = CurveTable();
+    const bool hierarchical = !standard.FullOnly && (!quick || standard.HierarchicalInQuick);
+    if (!hierarchical)
+    {
+      md << "Hierarchical radiosity: not run on this scene in this mode (its initial linking "
+            "is quadratic in the input triangles).\n\n";
+    }
+    else
+    {
+    md << "| method | link tolerance | solve (s) | meshing (s) | total (s) | stop | iterations | "
+          "links (partial) | leaves | triangles | RMS error | max error |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (double linkTolerance : linkTolerances)
+    {
+      const HierarchicalPoint h =
+        RunHierarchical(scene, probes, reference.Irradiance, linkTolerance, 120.0);
+      const SolverStatistics& stats = h.Stats;
+      const double relative = stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0;
+      for (int meshed = 0; meshed < 2; ++meshed)
+      {
+        const char* variant = meshed ? "hierarchical+DM" : "hierarchical";
+        const ErrorFigures& e = meshed ? h.Mesh : h.Leaf;
+        const double total = h.SolveSeconds + (meshed ? h.MeshSeconds : 0.0);
+        char meshing[32] = "-", triangles[32] = "-";
+        if (meshed)
+        {
+          std::snprintf(meshing, sizeof meshing, "%.3f", h.MeshSeconds);
+          std::snprintf(triangles, sizeof triangles, "%zu", h.Triangles);
+        }
+        char line[640];
+        std::snprintf(line, sizeof line,
+          "%s,link %g,%g,%g,%.6f,%.6f,%.0f,%zu,%zu,%lld,%s,%.3e,%.6e,%.6e,%g,%.6f,%zu,%zu,%zu,%zu,"
+          "%zu,%zu,%zu\n",
+          variant, linkTolerance, 1.0 / 64, 1e-3, stats.PreprocessSeconds, total,
+          PeakMemoryBytes(), h.Leaves, stats.RaysCast, stats.Iterations, ToString(stats.Stop),
+          relative, e.Rms, e.Max, linkTolerance, meshed ? h.MeshSeconds : 0.0, stats.Links,
+          stats.PartialLinks, stats.HiddenLinks, meshed ? h.Triangles : h.Leaves,
+          meshed ? h.LeavesMeshed : 0, meshed ? h.SegmentsKept : 0, meshed ? h.PointSamples : 0);
+        csv << line;
+        std::snprintf(line, sizeof line,
+          "| %s | %g | %.3f | %s | %.3f | %s | %lld | %zu (%zu) | %zu | %s | %.2e | %.2e |\n",
+          variant, linkTolerance, h.SolveSeconds, meshing, total, ToString(stats.Stop),
+          stats.Iterations, stats.Links, stats.PartialLinks, h.Leaves, triangles, e.Rms, e.Max);
+        md << line;
+        AddCurvePoint(meshed ? meshCurve : leafCurve, total, e.Rms, e.Max);
+      }
+      std::cout << "bench: " << standard.Name << " hierarchical link " << linkTolerance << ": "
+                << ToString(stats.Stop) << ", " << h.SolveSeconds << " s + meshing "
+                << h.MeshSeconds << " s\n";
+    }
+    md << "\n";
+    }
     std::string error;
     if (!WriteFileAtomically(outputDir + "/" + standard.Name + ".csv", csv.str(), error))
     {
@@ -220,6 +361,11 @@ int RunBench(const std::string& outputDir, bool quick)
     vtkNew<vtkRadiosityConvergenceChart> chart;
     chart->AddInputData(curve, "progressive, end of each setting");
     chart->AddInputData(during, "progressive, default setting while it runs");
+    if (hierarchical)
+    {
+      chart->AddInputData(leafCurve, "hierarchical, constant leaves, per link tolerance");
+      chart->AddInputData(meshCurve, "hierarchical + discontinuity mesh, interpolants");
+    }
     chart->RemoveAllColumns();
     chart->AddColumn("rms_error", "RMS relative error");
     chart->AddColumn("max_rel_error", "max relative error");
@@ -231,12 +377,16 @@ int RunBench(const std::string& outputDir, bool quick)
       fastest = std::min(fastest, time->GetValue(i));
       slowest = std::max(slowest, time->GetValue(i));
     }
-    vtkDataArray* runTime = vtkDataArray::SafeDownCast(during->GetColumn(0));
-    for (vtkIdType i = 0; i < runTime->GetNumberOfTuples(); ++i)
+    for (vtkTable* table : { static_cast<vtkTable*>(during), leafCurve.Get(), meshCurve.Get() })
     {
-      if (runTime->GetComponent(i, 0) > 0.0)
+      vtkDataArray* runTime = vtkDataArray::SafeDownCast(table->GetColumn(0));
+      for (vtkIdType i = 0; i < runTime->GetNumberOfTuples(); ++i)
       {
-        fastest = std::min(fastest, runTime->GetComponent(i, 0));
+        if (runTime->GetComponent(i, 0) > 0.0)
+        {
+          fastest = std::min(fastest, runTime->GetComponent(i, 0));
+          slowest = std::max(slowest, runTime->GetComponent(i, 0));
+        }
       }
     }
     chart->SetLogTime(slowest > 3.0 * fastest);

@@ -4,6 +4,7 @@
 // Exit status: 0 success, 2 bad input (nothing written), 1 internal failure.
 #include "Bench.h"
 #include "ExrWriter.h"
+#include "InterpolantSolution.h"
 #include "ProbeIO.h"
 #include "ProgressBar.h"
 #include "Report.h"
@@ -12,6 +13,7 @@
 #include "vtkCamera.h"
 #include "vtkCornellBoxSource.h"
 #include "vtkDoubleArray.h"
+#include "vtkCellData.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -24,6 +26,8 @@
 #include "vtkXMLPolyDataWriter.h"
 
 #include "Radiosity/AnalyticReference.h"
+#include "Radiosity/DiscontinuityMesher.h"
+#include "Radiosity/HierarchicalRadiosity.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
@@ -70,6 +74,13 @@ struct SolveArguments
   bool NoOvershooting = false;
   double ElementSize = 1.0 / 16.0;
   double ShooterSize = 0.25;
+  // --method hierarchical
+  double LinkTolerance = 0.05;   ///< relative to the scene's mean irradiance
+  double MinElementSize = 1.0 / 64.0;
+  int MaxRefinementRounds = 4;
+  bool NoDiscontinuityMeshing = false;
+  int DiscontinuitiesPerLeaf = 10;
+  double MinDiscontinuityWeight = 0.05; ///< relative to the brightest emitter
 };
 
 double Since(Clock::time_point t)
@@ -127,13 +138,411 @@ std::vector<Probe> CornellDemoProbes()
   return probes;
 }
 
+void WriteVtp(vtkPolyData* data, const std::string& file)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  const std::string temporary = file + ".partial.vtp";
+  writer->SetFileName(temporary.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToAppended();
+  Check(writer->Write() == 1 && std::rename(temporary.c_str(), file.c_str()) == 0,
+    "cannot write " + file);
+}
+
+/// --image through vtkRadiosityView (which draws the quadratic interpolants
+/// per pixel when the polydata has them) and --exr by ray casting `radiance`
+/// from the same camera; --reference-exr path traces that view.
+void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
+  const Scene& scene)
+{
+  if (args.Image.empty() && args.Exr.empty())
+  {
+    return;
+  }
+  std::string error;
+  vtkNew<vtkRadiosityView> view;
+  view->SetInputData(solved);
+  view->SetSize(args.Width, args.Height);
+  if (args.Scene == "cornell")
+  {
+    double position[3], focal[3], up[3], angle;
+    vtkCornellBoxSource::GetCamera(position, focal, up, angle);
+    view->SetCamera(position, focal, up, angle);
+  }
+  Check(view->Render(), "cannot render the solution");
+  if (!args.Image.empty())
+  {
+    const std::string temporary = args.Image + ".partial.png";
+    Check(view->WritePNG(temporary.c_str()) &&
+        std::rename(temporary.c_str(), args.Image.c_str()) == 0,
+      "cannot write " + args.Image);
+  }
+  if (!args.Exr.empty())
+  {
+    // Same camera as the PNG, linear radiance by ray casting the solution.
+    vtkCamera* camera = view->GetRenderer()->GetActiveCamera();
+    PinholeCamera pinhole;
+    double v[3];
+    camera->GetPosition(v);
+    pinhole.Position = Vec3(v[0], v[1], v[2]);
+    camera->GetFocalPoint(v);
+    pinhole.FocalPoint = Vec3(v[0], v[1], v[2]);
+    camera->GetViewUp(v);
+    pinhole.ViewUp = Vec3(v[0], v[1], v[2]);
+    pinhole.ViewAngleDegrees = camera->GetViewAngle();
+    const RadianceImage image = RenderRadiance(radiance, pinhole, args.Width, args.Height);
+    Check(cli::WriteExrHalf(args.Exr, image, error), error);
+    if (!args.ReferenceExr.empty())
+    {
+      // The path-traced reference of the same view, pixel for pixel.
+      PathTracerOptions options;
+      const PathTracer tracer(scene, options);
+      const RadianceImage truth =
+        tracer.Render(pinhole, args.Width, args.Height, args.ReferencePixelSamples);
+      Check(cli::WriteExrHalf(args.ReferenceExr, truth, error), error);
+    }
+  }
+}
+
+void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
+  const std::string& title)
+{
+  vtkNew<vtkRadiosityConvergenceChart> chart;
+  chart->SetInputData(HistoryTable(history));
+  chart->SetTitle(title.c_str());
+  chart->RemoveAllColumns();
+  chart->AddColumn("unshot_power_W", "unshot power (W)");
+  chart->AddColumn("overshoot_power_W", "power shot in advance by overshooting (W)");
+  chart->AddColumn("energy_balance", "|energy balance| (relative)");
+  chart->AddColumn("rms_error", "RMS relative irradiance error at the probes");
+  chart->AddColumn("max_rel_error", "max relative irradiance error");
+  const std::string temporary = file + ".partial.png";
+  Check(chart->WritePNG(temporary.c_str(), 900, 500) &&
+      std::rename(temporary.c_str(), file.c_str()) == 0,
+    "cannot write " + file);
+}
+
+nlohmann::json Finite(double v)
+{
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+/// The discontinuity mesh as polydata: the SPEC output arrays (cell values
+/// the interpolants' means, point values the accurate samples) and the cell
+/// array QuadraticInterpolant (18 components, channel-major: 6c + k is
+/// coefficient k of channel c, in the triangle's point order).
+vtkSmartPointer<vtkPolyData> MeshPolyData(const DiscontinuityMesh& mesh, const Scene& scene)
+{
+  SolutionMesh s;
+  s.Points = mesh.Points;
+  s.Triangles = mesh.Triangles;
+  s.PointIrradiance = mesh.PointIrradiance;
+  s.PointIrradiance.resize(mesh.Points.size(), RGB(0.0));
+  s.ElementId = mesh.Leaf;
+  s.Level = mesh.Level;
+  s.SourceTriangle = mesh.SourceTriangle;
+  s.Normals = mesh.Normals;
+  std::vector<RGB> radiosity(mesh.Points.size(), RGB(0.0));
+  std::vector<double> weight(mesh.Points.size(), 0.0);
+  for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+  {
+    const Material& m = scene.Materials[mesh.SourceTriangle[t]];
+    const QuadraticInterpolant& q = mesh.Interpolants[t];
+    const RGB mean = q.Mean();
+    s.CellIrradiance.push_back(mean);
+    s.CellRadiosity.push_back(m.Emission + m.Reflectance * mean);
+    ElementSamples samples;
+    samples.Corner = { q.Evaluate(0, 0), q.Evaluate(1, 0), q.Evaluate(0, 1) };
+    samples.Centre = q.Evaluate(1.0 / 3.0, 1.0 / 3.0);
+    s.Samples.push_back(samples);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t p = mesh.Triangles[t].V[k];
+      radiosity[p] += m.Emission + m.Reflectance * samples.Corner[k];
+      weight[p] += 1.0;
+    }
+  }
+  for (std::size_t p = 0; p < radiosity.size(); ++p)
+  {
+    s.PointRadiosity.push_back(weight[p] > 0 ? radiosity[p] / weight[p] : RGB(0.0));
+  }
+  vtkSmartPointer<vtkPolyData> data = vtkRadiositySceneConverter::FromSolution(s, scene);
+  vtkNew<vtkDoubleArray> coefficients;
+  coefficients->SetName("QuadraticInterpolant");
+  coefficients->SetNumberOfComponents(18);
+  coefficients->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Interpolants.size()));
+  for (std::size_t t = 0; t < mesh.Interpolants.size(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int k = 0; k < 6; ++k)
+      {
+        coefficients->SetComponent(
+          static_cast<vtkIdType>(t), 6 * c + k, mesh.Interpolants[t].Coefficients[k][c]);
+      }
+    }
+  }
+  data->GetCellData()->AddArray(coefficients);
+  return data;
+}
+
+/// --method hierarchical: Hardt & Teller's hierarchical radiosity with
+/// discontinuity meshing (SPEC), on the core classes.
+int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
+  const std::vector<RGB>& reference, const std::string& referenceKind, vtkDataObject* input,
+  double loadSeconds, Clock::time_point start)
+{
+  if (!(args.LinkTolerance > 0.0))
+  {
+    throw BadInput("--link-tolerance must be positive");
+  }
+  std::string error;
+  std::vector<std::string> warnings;
+  Scene scene;
+  if (!vtkRadiositySceneConverter::ToScene(input, scene, error, warnings))
+  {
+    throw BadInput(error);
+  }
+  try
+  {
+    ValidateScene(scene);
+  }
+  catch (const SceneError& e)
+  {
+    throw BadInput(e.what());
+  }
+  const SceneCleanupReport cleanup = DropDegenerateTriangles(scene);
+  if (cleanup.DegenerateTrianglesDropped > 0)
+  {
+    warnings.push_back("dropped " + std::to_string(cleanup.DegenerateTrianglesDropped) +
+      " degenerate (zero-area) triangles");
+  }
+  if (scene.Triangles.empty())
+  {
+    throw BadInput("the scene has no triangle of non-zero area");
+  }
+  if (!scene.HasEmitters())
+  {
+    warnings.push_back("the scene has no emitter: the solution is zero");
+  }
+  for (const auto& w : warnings)
+  {
+    std::cerr << "warning: " << w << "\n";
+  }
+
+  HierarchicalOptions options;
+  options.Tolerance = args.Tolerance;
+  options.MaxIterations = args.MaxIterations;
+  options.MaxTimeSeconds = args.MaxTime;
+  options.Threads = args.Threads;
+  options.RelativeLinkTolerance = args.LinkTolerance;
+  options.MinElementSize = args.MinElementSize;
+  options.MaxRefinementRounds = args.MaxRefinementRounds;
+  if (!reference.empty())
+  {
+    options.ErrorProbes = probes;
+    options.ErrorReference = reference;
+  }
+  const auto preprocessStart = Clock::now();
+  HierarchicalRadiosity solver(scene, options);
+  const double preprocessSeconds = Since(preprocessStart);
+  cli::ProgressBar bar;
+  const ProgressCallback progress = [&bar](const ProgressStatus& status) { return bar.Update(status); };
+  const SolverStatistics stats = solver.Solve(progress);
+  ProgressStatus done;
+  done.Phase = "solved";
+  done.Iteration = stats.Iterations;
+  done.Residual = stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0;
+  done.Fraction = 1.0;
+  bar.Update(done);
+
+  const bool meshing = !args.NoDiscontinuityMeshing && stats.Stop != StopReason::Aborted;
+  DiscontinuityMeshOptions meshOptions;
+  meshOptions.MaxPerLeaf = args.DiscontinuitiesPerLeaf;
+  meshOptions.MinWeight = args.MinDiscontinuityWeight;
+  meshOptions.Threads = args.Threads;
+  DiscontinuityMesh mesh;
+  if (meshing)
+  {
+    mesh = BuildDiscontinuityMesh(solver, meshOptions, progress);
+  }
+  bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
+
+  const SolutionMesh leaves = ExtractSolution(solver.Mesh());
+  vtkSmartPointer<vtkPolyData> solved =
+    meshing ? MeshPolyData(mesh, scene) : vtkRadiositySceneConverter::FromSolution(leaves, scene);
+  solved->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(stats.History));
+
+  nlohmann::json phases;
+  phases["load_s"] = loadSeconds;
+  phases["preprocessing_s"] = preprocessSeconds;
+  phases["solve_s"] = stats.SolveSeconds;
+  phases["meshing_s"] = meshing ? nlohmann::json(mesh.Seconds) : nlohmann::json();
+  if (!args.Output.empty())
+  {
+    WriteVtp(solved, args.Output);
+  }
+  const auto renderStart = Clock::now();
+  RenderOutputs(args, solved,
+    meshing ? cli::InterpolantSolution(mesh, scene) : leaves, scene);
+  phases["render_s"] = Since(renderStart);
+
+  // Probes: from the interpolants (meshing) or the constant leaves; a probe
+  // on no surface is gathered from the leaves' radiosity.
+  std::size_t gathered = 0, onMesh = 0;
+  std::vector<RGB> probeValues;
+  if (!args.ProbeOutput.empty() || !reference.empty())
+  {
+    std::vector<Probe> rest;
+    std::vector<std::size_t> restIndex;
+    if (meshing)
+    {
+      probeValues = EvaluateInterpolants(mesh, probes, 1e-6 * solver.Analysis().Diagonal);
+      for (std::size_t i = 0; i < probes.size(); ++i)
+      {
+        if (std::isfinite(Luminance(probeValues[i])))
+        {
+          ++onMesh;
+        }
+        else
+        {
+          rest.push_back(probes[i]);
+          restIndex.push_back(i);
+        }
+      }
+    }
+    else
+    {
+      probeValues.assign(probes.size(), RGB(0.0));
+      rest = probes;
+      for (std::size_t i = 0; i < probes.size(); ++i)
+      {
+        restIndex.push_back(i);
+      }
+    }
+    if (!rest.empty())
+    {
+      ProbeEvaluator evaluator(leaves, scene);
+      const std::vector<RGB> values = evaluator.Evaluate(rest);
+      gathered = evaluator.GatheredCount();
+      for (std::size_t i = 0; i < rest.size(); ++i)
+      {
+        probeValues[restIndex[i]] = values[i];
+      }
+    }
+  }
+  if (!args.ProbeOutput.empty())
+  {
+    Check(cli::WriteProbeValues(args.ProbeOutput, probes, probeValues, error), error);
+  }
+  if (!args.HistoryCsv.empty())
+  {
+    Check(cli::WriteFileAtomically(args.HistoryCsv, cli::HistoryCsv(stats.History), error), error);
+  }
+  if (!args.HistoryPng.empty())
+  {
+    WriteHistoryPlot(stats.History, args.HistoryPng,
+      "Convergence: " + args.Scene + ", hierarchical radiosity");
+  }
+
+  if (!args.Report.empty())
+  {
+    nlohmann::json report;
+    report["method"] = "hierarchical";
+    report["parameters"] = { { "tolerance", options.Tolerance },
+      { "max_iterations", options.MaxIterations }, { "max_time_s", options.MaxTimeSeconds },
+      { "threads", options.Threads }, { "link_tolerance", options.RelativeLinkTolerance },
+      { "link_tolerance_W_m2", solver.GetLinkTolerance() },
+      { "min_element_size", options.MinElementSize },
+      { "max_refinement_rounds", options.MaxRefinementRounds },
+      { "max_blockers_per_link", options.MaxBlockersPerLink },
+      { "discontinuity_meshing", meshing },
+      { "discontinuities", meshOptions.Discontinuities },
+      { "discontinuities_per_leaf", meshOptions.MaxPerLeaf },
+      { "min_discontinuity_weight", meshOptions.MinWeight } };
+    std::size_t emitters = 0;
+    for (const auto& m : scene.Materials)
+    {
+      emitters += MaxComponent(m.Emission) > 0 ? 1 : 0;
+    }
+    report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
+      { "objects", scene.ObjectNames.size() }, { "emitters", emitters },
+      { "emitted_power_W", stats.EmittedPowerW }, { "warnings", warnings },
+      { "left_out",
+        { { "degenerate_triangles_dropped", cleanup.DegenerateTrianglesDropped },
+          { "solve_skipped_no_emitters", stats.Stop == StopReason::NoEmitters } } } };
+    report["solution"] = { { "stop", ToString(stats.Stop) }, { "iterations", stats.Iterations },
+      { "leaves", stats.Elements }, { "nodes", solver.Mesh().Elements().size() },
+      { "links", stats.Links }, { "partial_links", stats.PartialLinks },
+      { "hidden_links", stats.HiddenLinks }, { "rays", stats.RaysCast },
+      { "relative_unshot_power",
+        stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0 },
+      { "absorbed_power_W", stats.AbsorbedPowerW }, { "escaped_power_W", stats.EscapedPowerW },
+      { "probes", probes.size() }, { "probes_on_the_mesh", onMesh },
+      { "probes_gathered_off_surface", gathered } };
+    if (meshing)
+    {
+      report["discontinuity_mesh"] = { { "leaves_meshed", mesh.LeavesMeshed },
+        { "segments_found", mesh.SegmentsFound }, { "segments_kept", mesh.SegmentsKept },
+        { "point_samples", mesh.PointSamples }, { "points", mesh.Points.size() },
+        { "triangles", mesh.Triangles.size() }, { "interpolants", mesh.Interpolants.size() },
+        { "seconds", mesh.Seconds } };
+    }
+    else
+    {
+      report["discontinuity_mesh"] = nullptr;
+    }
+    report["time"] = phases;
+    report["time"]["total_s"] = Since(start);
+    report["peak_memory_bytes"] = PeakMemoryBytes();
+    report["convergence_history"] = cli::HistoryJson(stats.History);
+    if (reference.empty())
+    {
+      report["error"] = nullptr; // no reference known
+    }
+    else
+    {
+      const ConvergenceRow& last = stats.History.Rows.back();
+      nlohmann::json e;
+      e["reference"] = referenceKind;
+      e["probes"] = probes.size();
+      e["probes_on_a_surface"] = stats.ErrorProbesTracked;
+      // The representation the user sees: the interpolants with meshing
+      // (probes on the mesh), the constant leaves without.
+      const ErrorFigures seen = meshing
+        ? RelativeErrors(EvaluateInterpolants(mesh, probes, 1e-6 * solver.Analysis().Diagonal), reference)
+        : ErrorFigures{ last.RmsError, last.MaxRelError, stats.ErrorProbesTracked };
+      e["evaluated_from"] = meshing ? "quadratic interpolants" : "constant leaves";
+      e["rms_relative_error"] = Finite(seen.Rms);
+      e["max_relative_error"] = Finite(seen.Max);
+      e["leaves_rms_relative_error"] = Finite(last.RmsError);
+      e["leaves_max_relative_error"] = Finite(last.MaxRelError);
+      const ErrorFigures all = RelativeErrors(probeValues, reference);
+      e["probe_output_rms_relative_error"] = Finite(all.Rms);
+      e["probe_output_max_relative_error"] = Finite(all.Max);
+      report["error"] = e;
+    }
+    Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
+  }
+  std::cerr << "solved " << args.Scene << ": " << stats.Elements << " leaves, " << stats.Links
+            << " links (" << stats.PartialLinks << " partial), " << stats.Iterations
+            << " sweeps, " << stats.SolveSeconds << " s";
+  if (meshing)
+  {
+    std::cerr << "; discontinuity mesh: " << mesh.Triangles.size() << " triangles, "
+              << mesh.LeavesMeshed << " leaves meshed, " << mesh.Seconds << " s";
+  }
+  std::cerr << "\n";
+  return 0;
+}
+
 int RunSolve(const SolveArguments& args)
 {
   const auto start = Clock::now();
-  if (args.Method != "auto" && args.Method != "progressive")
+  if (args.Method != "auto" && args.Method != "progressive" && args.Method != "hierarchical")
   {
     throw BadInput("--method " + args.Method +
-      ": not available in this version (available: progressive, auto)");
+      ": not available in this version (available: progressive, hierarchical, auto)");
   }
   if (!args.ReferenceExr.empty() && args.Exr.empty())
   {
@@ -235,6 +644,11 @@ int RunSolve(const SolveArguments& args)
     referenceKind = "file: " + args.Reference;
   }
 
+  if (args.Method == "hierarchical")
+  {
+    return RunHierarchicalSolve(args, probes, reference, referenceKind, input, loadSeconds, start);
+  }
+
   vtkNew<vtkRadiosityFilter> filter;
   filter->SetInputData(input);
   filter->SetMethod(vtkRadiosityFilter::Progressive);
@@ -277,60 +691,10 @@ int RunSolve(const SolveArguments& args)
 
   if (!args.Output.empty())
   {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    const std::string temporary = args.Output + ".partial.vtp";
-    writer->SetFileName(temporary.c_str());
-    writer->SetInputData(solved);
-    writer->SetDataModeToAppended();
-    Check(writer->Write() == 1 && std::rename(temporary.c_str(), args.Output.c_str()) == 0,
-      "cannot write " + args.Output);
+    WriteVtp(solved, args.Output);
   }
   const auto renderStart = Clock::now();
-  if (!args.Image.empty() || !args.Exr.empty())
-  {
-    vtkNew<vtkRadiosityView> view;
-    view->SetInputData(solved);
-    view->SetSize(args.Width, args.Height);
-    if (args.Scene == "cornell")
-    {
-      double position[3], focal[3], up[3], angle;
-      vtkCornellBoxSource::GetCamera(position, focal, up, angle);
-      view->SetCamera(position, focal, up, angle);
-    }
-    Check(view->Render(), "cannot render the solution");
-    if (!args.Image.empty())
-    {
-      const std::string temporary = args.Image + ".partial.png";
-      Check(view->WritePNG(temporary.c_str()) &&
-          std::rename(temporary.c_str(), args.Image.c_str()) == 0,
-        "cannot write " + args.Image);
-    }
-    if (!args.Exr.empty())
-    {
-      // Same camera as the PNG, linear radiance by ray casting the solution.
-      vtkCamera* camera = view->GetRenderer()->GetActiveCamera();
-      PinholeCamera pinhole;
-      double v[3];
-      camera->GetPosition(v);
-      pinhole.Position = Vec3(v[0], v[1], v[2]);
-      camera->GetFocalPoint(v);
-      pinhole.FocalPoint = Vec3(v[0], v[1], v[2]);
-      camera->GetViewUp(v);
-      pinhole.ViewUp = Vec3(v[0], v[1], v[2]);
-      pinhole.ViewAngleDegrees = camera->GetViewAngle();
-      const RadianceImage radiance = RenderRadiance(solution, pinhole, args.Width, args.Height);
-      Check(cli::WriteExrHalf(args.Exr, radiance, error), error);
-      if (!args.ReferenceExr.empty())
-      {
-        // The path-traced reference of the same view, pixel for pixel.
-        PathTracerOptions options;
-        const PathTracer tracer(filter->GetScene(), options);
-        const RadianceImage truth =
-          tracer.Render(pinhole, args.Width, args.Height, args.ReferencePixelSamples);
-        Check(cli::WriteExrHalf(args.ReferenceExr, truth, error), error);
-      }
-    }
-  }
+  RenderOutputs(args, solved, solution, filter->GetScene());
   phases["render_s"] = Since(renderStart);
 
   std::size_t gathered = 0;
@@ -351,19 +715,8 @@ int RunSolve(const SolveArguments& args)
   }
   if (!args.HistoryPng.empty())
   {
-    vtkNew<vtkRadiosityConvergenceChart> chart;
-    chart->SetInputData(HistoryTable(stats.History));
-    chart->SetTitle(("Convergence: " + args.Scene + ", progressive refinement").c_str());
-    chart->RemoveAllColumns();
-    chart->AddColumn("unshot_power_W", "unshot power (W)");
-    chart->AddColumn("overshoot_power_W", "power shot in advance by overshooting (W)");
-    chart->AddColumn("energy_balance", "|energy balance| (relative)");
-    chart->AddColumn("rms_error", "RMS relative irradiance error at the probes");
-    chart->AddColumn("max_rel_error", "max relative irradiance error");
-    const std::string temporary = args.HistoryPng + ".partial.png";
-    Check(chart->WritePNG(temporary.c_str(), 900, 500) &&
-        std::rename(temporary.c_str(), args.HistoryPng.c_str()) == 0,
-      "cannot write " + args.HistoryPng);
+    WriteHistoryPlot(stats.History, args.HistoryPng,
+      "Convergence: " + args.Scene + ", progressive refinement");
   }
 
   if (!args.Report.empty())
@@ -462,6 +815,24 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--size", solve.Width, "image width and height in pixels")
     ->check(CLI::Range(16, 8192));
   solveCommand->add_flag("--no-overshooting", solve.NoOvershooting);
+  solveCommand->add_option("--link-tolerance", solve.LinkTolerance,
+    "hierarchical: link refinement threshold on B F, relative to the scene's mean irradiance "
+    "(default 0.05)")
+    ->check(CLI::NonNegativeNumber);
+  solveCommand->add_option("--min-element-size", solve.MinElementSize,
+    "hierarchical: smallest quadtree node edge, fraction of the scene diagonal (default 1/64)")
+    ->check(CLI::Range(1e-6, 1.0));
+  solveCommand->add_option("--max-refinement-rounds", solve.MaxRefinementRounds,
+    "hierarchical: BF refinement passes after the first solve (default 4)")
+    ->check(CLI::Range(0, 100));
+  solveCommand->add_flag("--no-discontinuity-meshing", solve.NoDiscontinuityMeshing,
+    "hierarchical: output and probes from the constant quadtree leaves");
+  solveCommand->add_option("--discontinuities-per-leaf", solve.DiscontinuitiesPerLeaf,
+    "hierarchical: the k strongest discontinuities meshed per leaf (default 10)")
+    ->check(CLI::Range(0, 10000));
+  solveCommand->add_option("--min-discontinuity-weight", solve.MinDiscontinuityWeight,
+    "hierarchical: w_min, relative to the brightest emitter's exitance (default 0.05)")
+    ->check(CLI::NonNegativeNumber);
   solveCommand->add_option("--reference-exr", solve.ReferenceExr,
     "path-traced OpenEXR of the --exr view (linear radiance, the reference per pixel)");
   solveCommand->add_option("--reference-pixel-samples", solve.ReferencePixelSamples,
