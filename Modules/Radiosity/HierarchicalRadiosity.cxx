@@ -313,10 +313,7 @@ void HierarchicalRadiosity::ComputeLinks(
         const double distance = glm::length(
           (*this->Elements)[link.Source].Centroid - (*this->Elements)[link.Receiver].Centroid);
         const double size = this->Elements->LongestEdge(link.Receiver);
-        const int splits = link.Kind == HierarchicalLink::Partial ? 2
-          : distance < 1.5 * size                                  ? 8
-          : distance < 4 * size                                    ? 4
-                                                                   : 2;
+        const int splits = distance < 1.5 * size ? 8 : distance < 4 * size ? 4 : 2;
         double f = 0.0;
         int count = 0;
         auto accumulate = [&](double s, double t) {
