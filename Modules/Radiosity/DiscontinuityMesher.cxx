@@ -6,8 +6,8 @@
 #include "Radiosity/MeshProbeTracker.h"
 #include "Radiosity/Shaft.h"
 #include "Radiosity/Stopwatch.h"
+#include "Radiosity/ThreadLimit.h"
 
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -262,12 +262,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
   const DiscontinuityMeshOptions& options, const ProgressCallback& progress)
 {
   const Stopwatch clock;
-  std::unique_ptr<tbb::global_control> threads;
-  if (options.Threads > 0)
-  {
-    threads = std::make_unique<tbb::global_control>(
-      tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(options.Threads));
-  }
+  const auto threads = LimitThreads(options.Threads);
   DiscontinuityMesh out;
   const ElementMesh& mesh = s.Mesh();
   const Scene& scene = s.GetScene();

@@ -7,6 +7,7 @@
 #include "Radiosity/ElementMesh.h"
 #include "Radiosity/ProbeEvaluator.h"
 
+#include <memory>
 #include <vector>
 
 namespace radiosity
@@ -17,6 +18,18 @@ public:
   /// Locates each probe on the mesh (within `tolerance` of a surface whose
   /// normal is within 25 degrees of the probe's); others are not tracked.
   MeshProbeTracker(const ElementMesh& mesh, const std::vector<Probe>& probes, double tolerance);
+
+  /// A tracker for a solver's error reference (probes within 1e-6 of the
+  /// scene diagonal of a surface), or null when there is no usable reference.
+  static std::unique_ptr<MeshProbeTracker> ForReference(const ElementMesh& mesh,
+    const std::vector<Probe>& probes, const std::vector<RGB>& reference, double diagonal)
+  {
+    if (probes.empty() || reference.size() != probes.size())
+    {
+      return nullptr;
+    }
+    return std::make_unique<MeshProbeTracker>(mesh, probes, 1e-6 * diagonal);
+  }
 
   /// The current irradiance at every probe (NaN for untracked ones).
   std::vector<RGB> Evaluate();

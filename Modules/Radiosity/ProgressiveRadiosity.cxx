@@ -2,13 +2,13 @@
 
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/Stopwatch.h"
+#include "Radiosity/ThreadLimit.h"
 #include "Radiosity/FormFactor.h"
 #include "Radiosity/MeshProbeTracker.h"
 #include "Radiosity/ShooterSamples.h"
 #include "Radiosity/Visibility.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -530,12 +530,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
   const Stopwatch start;
-  std::unique_ptr<tbb::global_control> threads;
-  if (this->Settings.Threads > 0)
-  {
-    threads = std::make_unique<tbb::global_control>(
-      tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(this->Settings.Threads));
-  }
+  const auto threads = LimitThreads(this->Settings.Threads);
   ElementMesh& mesh = *this->Elements;
   stats.Occluders = this->SceneInfo.Occluders;
   double emitted = 0.0;
@@ -563,14 +558,9 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
   // Cohen 1988's interreflection factor R = 1 / (1 - mean reflectance).
   const RGB interreflection = RGB(1.0) / (RGB(1.0) - rhoMean);
 
-  std::unique_ptr<MeshProbeTracker> tracker;
-  if (!this->Settings.ErrorProbes.empty() &&
-    this->Settings.ErrorReference.size() == this->Settings.ErrorProbes.size())
-  {
-    tracker = std::make_unique<MeshProbeTracker>(
-      mesh, this->Settings.ErrorProbes, 1e-6 * this->SceneInfo.Diagonal);
-    stats.ErrorProbesTracked = tracker->Tracked();
-  }
+  const std::unique_ptr<MeshProbeTracker> tracker = MeshProbeTracker::ForReference(mesh,
+    this->Settings.ErrorProbes, this->Settings.ErrorReference, this->SceneInfo.Diagonal);
+  stats.ErrorProbesTracked = tracker ? tracker->Tracked() : 0;
   std::vector<RGB> nodePower(mesh.Elements().size(), RGB(0.0));
   stats.Stop = StopReason::IterationLimit;
   for (long long iteration = 0;; ++iteration)
