@@ -77,6 +77,7 @@ int vtkDiscontinuityMeshFilter::RequestData(
   options.MaxPerLeaf = this->MaxDiscontinuitiesPerLeaf;
   options.MinWeight = this->MinDiscontinuityWeight;
   options.Threads = this->NumberOfThreads;
+  options.Conforming = this->ConformingBoundaries;
   auto last = Clock::now() - std::chrono::seconds(1);
   bool aborted = false;
   this->Mesh = radiosity::BuildDiscontinuityMesh(*solution, options,
@@ -212,6 +213,7 @@ void vtkDiscontinuityMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Discontinuities: " << (this->Discontinuities ? "On" : "Off") << "\n";
   os << indent << "MaxDiscontinuitiesPerLeaf: " << this->MaxDiscontinuitiesPerLeaf << "\n";
   os << indent << "MinDiscontinuityWeight: " << this->MinDiscontinuityWeight << "\n";
+  os << indent << "ConformingBoundaries: " << (this->ConformingBoundaries ? "On" : "Off") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "Triangles: " << this->Mesh.Triangles.size() << "\n";
   os << indent << "LeavesMeshed: " << this->Mesh.LeavesMeshed << "\n";

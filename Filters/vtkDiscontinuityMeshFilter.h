@@ -64,6 +64,16 @@ public:
   ///@}
 
   ///@{
+  /// Insert into every leaf the vertices of its neighbours that lie on its
+  /// edges, so that the mesh has no T-junction and the per-pixel rendering no
+  /// crack. Off: the paper's hybrid mesh as it is (a leaf without
+  /// discontinuities stays one triangle). Default on.
+  vtkSetMacro(ConformingBoundaries, bool);
+  vtkGetMacro(ConformingBoundaries, bool);
+  vtkBooleanMacro(ConformingBoundaries, bool);
+  ///@}
+
+  ///@{
   /// Worker threads; 0 uses every core. Default 0.
   vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
   vtkGetMacro(NumberOfThreads, int);
@@ -84,6 +94,7 @@ protected:
 
   bool Discontinuities = true;
   int MaxDiscontinuitiesPerLeaf = 10;
+  bool ConformingBoundaries = true;
   double MinDiscontinuityWeight = 0.05;
   int NumberOfThreads = 0;
 

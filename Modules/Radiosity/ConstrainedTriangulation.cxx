@@ -190,8 +190,8 @@ PlanarTriangulation DomainOnly(const std::array<Vec3, 3>& domain)
 }
 } // namespace constrained_triangulation_detail
 
-PlanarTriangulation TriangulateWithConstraints(
-  const std::array<Vec3, 3>& domain, const std::vector<std::array<Vec3, 2>>& constraints)
+PlanarTriangulation TriangulateWithConstraints(const std::array<Vec3, 3>& domain,
+  const std::vector<std::array<Vec3, 2>>& constraints, const std::vector<Vec3>& boundaryPoints)
 {
   namespace detail = constrained_triangulation_detail;
   using detail::Vec2;
@@ -343,7 +343,22 @@ PlanarTriangulation TriangulateWithConstraints(
       addSegment(ip, iq);
     }
   }
-  if (segments.empty())
+  // Vertices of neighbours on the edges: snapped exactly onto their edge.
+  std::vector<std::size_t> onEdges;
+  for (const Vec3& b : boundaryPoints)
+  {
+    if (!detail::IsFinite(b))
+    {
+      continue;
+    }
+    const detail::Endpoint e = detail::Snap(d, to2(b), tol);
+    const unsigned m = e.EdgeMask;
+    if (m == 1u || m == 2u || m == 4u) // on exactly one edge: not a corner, not inside
+    {
+      onEdges.push_back(resolve(e));
+    }
+  }
+  if (segments.empty() && onEdges.empty())
   {
     return detail::DomainOnly(domain);
   }
@@ -360,6 +375,10 @@ PlanarTriangulation TriangulateWithConstraints(
     for (int i = 0; i < 3; ++i)
     {
       cdt.insert_constraint(corners[i], corners[(i + 1) % 3]);
+    }
+    for (std::size_t k : onEdges)
+    {
+      cdt.insert(points[k].Exact); // splits the constrained domain edge there
     }
     for (const auto& s : segments)
     {

@@ -22,6 +22,11 @@ struct PlanarTriangulation
 };
 
 /**
+ * `boundaryPoints` are extra vertices on the domain's edges (the vertices of
+ * neighbouring meshes there, so that neighbours share their boundary vertices
+ * and no T-junction leaves a crack when the meshes are rasterised); points
+ * not within the tolerance of an edge, or at a corner, are ignored.
+ *
  * Triangulates `domain` with every segment of `constraints` as a constraint.
  * Segments are clipped to the domain first (parts outside are ignored, points
  * are projected into the domain's plane). The result covers the domain
@@ -40,8 +45,9 @@ struct PlanarTriangulation
  * Points are moved by less than tol. A degenerate or non-finite domain is
  * returned as is.
  */
-PlanarTriangulation TriangulateWithConstraints(
-  const std::array<Vec3, 3>& domain, const std::vector<std::array<Vec3, 2>>& constraints);
+PlanarTriangulation TriangulateWithConstraints(const std::array<Vec3, 3>& domain,
+  const std::vector<std::array<Vec3, 2>>& constraints,
+  const std::vector<Vec3>& boundaryPoints = {});
 } // namespace radiosity
 
 #endif

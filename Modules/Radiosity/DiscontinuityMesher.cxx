@@ -244,12 +244,158 @@ struct SampleRef
 
 struct LeafWork
 {
+  std::vector<std::array<Vec3, 2>> Segments;
   PlanarTriangulation Mesh;
   std::vector<Vec3> LocalPoints;
   std::vector<RGB> LocalValues;
   std::vector<std::array<SampleRef, 6>> TriangleSamples; ///< r0..r5 per triangle
   std::vector<SampleRef> VertexSamples;
 };
+/// Distance from p to the segment ab, and whether p projects strictly inside it.
+double EdgeDistance(const Vec3& p, const Vec3& a, const Vec3& b, bool& inside, double margin)
+{
+  const Vec3 ab = b - a;
+  const double len2 = glm::dot(ab, ab);
+  const double t = len2 > 0 ? glm::dot(p - a, ab) / len2 : 0.0;
+  const double m = len2 > 0 ? margin / std::sqrt(len2) : 1.0;
+  inside = t > m && t < 1.0 - m;
+  return glm::length(p - (a + std::clamp(t, 0.0, 1.0) * ab));
+}
+
+/**
+ * Neighbouring leaves of different levels, or with discontinuity segments
+ * ending on their common edge, do not share their boundary vertices: the
+ * T-junctions leave pixel cracks when the meshes are rasterised. Every vertex
+ * that lies on a leaf's edge is inserted into that leaf's triangulation (a
+ * spatial hash of all boundary vertices, walked along each edge), so the
+ * hybrid mesh is conforming.
+ */
+std::size_t ConformBoundaries(
+  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, std::vector<LeafWork>& work)
+{
+  const ElementMesh& mesh = s.Mesh();
+  if (leaves.empty())
+  {
+    return 0;
+  }
+  double meanEdge = 0.0;
+  for (std::uint32_t leaf : leaves)
+  {
+    meanEdge += mesh.LongestEdge(leaf);
+  }
+  const double h = meanEdge / static_cast<double>(leaves.size());
+  if (!(h > 0))
+  {
+    return 0;
+  }
+  auto cellOf = [h](const Vec3& p) {
+    return std::array<std::int64_t, 3>{ static_cast<std::int64_t>(std::floor(p.x / h)),
+      static_cast<std::int64_t>(std::floor(p.y / h)), static_cast<std::int64_t>(std::floor(p.z / h)) };
+  };
+  auto keyOf = [](const std::array<std::int64_t, 3>& c) {
+    return static_cast<std::uint64_t>(c[0]) * 73856093u ^ static_cast<std::uint64_t>(c[1]) * 19349663u ^
+      static_cast<std::uint64_t>(c[2]) * 83492791u;
+  };
+  // Boundary vertices of every leaf's current triangulation.
+  std::vector<Vec3> points;
+  std::vector<std::uint32_t> owner;
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+  {
+    const TriangleCorners c = s.Corners(leaves[i]);
+    const double tol = 1e-7 * mesh.LongestEdge(leaves[i]);
+    for (std::size_t v = 0; v < work[i].Mesh.Points.size(); ++v)
+    {
+      const Vec3& p = work[i].Mesh.Points[v];
+      bool inside = false, onEdge = v < 3;
+      for (int k = 0; k < 3 && !onEdge; ++k)
+      {
+        onEdge = EdgeDistance(p, c[k], c[(k + 1) % 3], inside, 0.0) < tol;
+      }
+      if (onEdge)
+      {
+        points.push_back(p);
+        owner.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+  }
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+  for (std::uint32_t k = 0; k < points.size(); ++k)
+  {
+    grid[keyOf(cellOf(points[k]))].push_back(k);
+  }
+  std::vector<unsigned char> conformed(leaves.size(), 0);
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+    const TriangleCorners c = s.Corners(leaves[i]);
+    const double longest = mesh.LongestEdge(leaves[i]);
+    const double tol = 1e-7 * longest;
+    std::vector<Vec3> extra;
+    std::vector<std::uint64_t> visited;
+    for (int e = 0; e < 3; ++e)
+    {
+      const Vec3& a = c[e];
+      const Vec3& b = c[(e + 1) % 3];
+      const double length = glm::length(b - a);
+      const int steps = 1 + static_cast<int>(2.0 * length / h);
+      visited.clear();
+      for (int t = 0; t <= steps; ++t)
+      {
+        const auto centre = cellOf(a + (static_cast<double>(t) / steps) * (b - a));
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          for (int dy = -1; dy <= 1; ++dy)
+          {
+            for (int dz = -1; dz <= 1; ++dz)
+            {
+              const std::uint64_t key = keyOf({ centre[0] + dx, centre[1] + dy, centre[2] + dz });
+              if (std::find(visited.begin(), visited.end(), key) != visited.end())
+              {
+                continue;
+              }
+              visited.push_back(key);
+              const auto it = grid.find(key);
+              if (it == grid.end())
+              {
+                continue;
+              }
+              for (std::uint32_t k : it->second)
+              {
+                bool inside = false;
+                if (owner[k] != i && EdgeDistance(points[k], a, b, inside, 10.0 * tol) < tol && inside)
+                {
+                  extra.push_back(points[k]);
+                }
+              }
+            }
+          }
+        }
+      }
+    }
+    // Only points the leaf does not have yet.
+    std::vector<Vec3> missing;
+    for (const Vec3& p : extra)
+    {
+      bool known = false;
+      for (const Vec3& q : work[i].Mesh.Points)
+      {
+        known = known || glm::length(p - q) < tol;
+      }
+      for (const Vec3& q : missing)
+      {
+        known = known || glm::length(p - q) < tol;
+      }
+      if (!known)
+      {
+        missing.push_back(p);
+      }
+    }
+    if (!missing.empty())
+    {
+      work[i].Mesh = TriangulateWithConstraints(c, work[i].Segments, missing);
+      conformed[i] = 1;
+    }
+  });
+  return static_cast<std::size_t>(std::count(conformed.begin(), conformed.end(), 1));
+}
 } // namespace
 
 RGB AccuratePointIrradiance(
@@ -300,7 +446,12 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     work[i].Mesh = segments.empty()
       ? PlanarTriangulation{ { corners[0], corners[1], corners[2] }, { { 0u, 1u, 2u } } }
       : TriangulateWithConstraints(corners, segments);
+    work[i].Segments = std::move(segments);
   });
+  if (options.Conforming)
+  {
+    out.LeavesConformed = ConformBoundaries(s, leaves, work);
+  }
   if (!report("meshing", 0.3))
   {
     return out;
@@ -314,7 +465,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
   {
     const Element& el = mesh[leaves[i]];
     LeafWork& w = work[i];
-    out.LeavesMeshed += w.Mesh.Triangles.size() > 1;
+    out.LeavesMeshed += kept[i] > 0;
     out.SegmentsFound += found[i];
     out.SegmentsKept += kept[i];
     auto shared = [&](std::uint32_t a, std::uint32_t b) {

@@ -35,6 +35,11 @@ struct DiscontinuityMeshOptions
   /// that the default does not depend on the emission's units.
   double MinWeight = 0.05;
   int Threads = 0;         ///< 0: all cores
+  /// Insert every vertex lying on a leaf's edge into that leaf (neighbours of
+  /// other levels, discontinuities ending on the edge), so that the mesh has
+  /// no T-junction and its rasterisation no crack. Off: the paper's hybrid
+  /// mesh as it is, a leaf without discontinuities being one triangle.
+  bool Conforming = true;
 };
 
 struct DiscontinuityMesh
@@ -49,6 +54,7 @@ struct DiscontinuityMesh
   std::vector<Vec3> Normals; ///< per triangle
 
   std::size_t LeavesMeshed = 0;      ///< leaves split by at least one discontinuity
+  std::size_t LeavesConformed = 0;   ///< leaves that took in neighbours' boundary vertices
   std::size_t SegmentsFound = 0;     ///< EV/VE traces on leaves before ranking
   std::size_t SegmentsKept = 0;
   std::size_t PointSamples = 0;      ///< accurate point irradiance evaluations
