@@ -4,6 +4,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkHierarchicalRadiositySolution.h"
+#include "vtkMeshlessRadiositySolution.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseKey.h"
 #include "vtkInformationVector.h"
@@ -14,29 +15,34 @@
 #include "vtkVersion.h"
 
 #include "Radiosity/HierarchicalRadiosity.h"
+#include "Radiosity/MeshlessRadiosity.h"
 #include "Radiosity/ProgressiveRadiosity.h"
 #include "Radiosity/SolutionMesh.h"
 
+#include <algorithm>
 #include <chrono>
 
 vtkStandardNewMacro(vtkRadiosityFilter);
 vtkInformationKeyMacro(vtkRadiosityFilter, HIERARCHICAL_SOLUTION, ObjectBase);
+vtkInformationKeyMacro(vtkRadiosityFilter, MESHLESS_SOLUTION, ObjectBase);
 
 namespace
 {
-/// The hierarchical solver together with the scene it references, so that
-/// the solver handed out (an aliasing shared_ptr) keeps the scene alive.
-struct HierarchicalHolder
+/// A solver together with the scene it references, so that the solver
+/// handed out (an aliasing shared_ptr) keeps the scene alive.
+template <typename Solver, typename Options>
+struct SolverHolder
 {
   std::shared_ptr<const radiosity::Scene> SceneRef;
-  radiosity::HierarchicalRadiosity Solver;
-  HierarchicalHolder(
-    std::shared_ptr<const radiosity::Scene> scene, const radiosity::HierarchicalOptions& options)
+  Solver Instance;
+  SolverHolder(std::shared_ptr<const radiosity::Scene> scene, const Options& options)
     : SceneRef(std::move(scene))
-    , Solver(*this->SceneRef, options)
+    , Instance(*this->SceneRef, options)
   {
   }
 };
+using HierarchicalHolder = SolverHolder<radiosity::HierarchicalRadiosity, radiosity::HierarchicalOptions>;
+using MeshlessHolder = SolverHolder<radiosity::MeshlessRadiosity, radiosity::MeshlessOptions>;
 }
 
 vtkRadiosityFilter::vtkRadiosityFilter()
@@ -55,6 +61,8 @@ const char* vtkRadiosityFilter::GetMethodName(int method)
       return "progressive";
     case Hierarchical:
       return "hierarchical";
+    case Meshless:
+      return "meshless";
     default:
       return "unknown";
   }
@@ -83,12 +91,14 @@ int vtkRadiosityFilter::RequestData(
   this->Warnings.clear();
   this->Solution.reset();
   this->HierarchicalSolution.reset();
+  this->MeshlessSolution.reset();
   this->Statistics = radiosity::SolverStatistics();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   // The data object's information outlives executions: drop a solution of
   // an earlier hierarchical run before anything can fail.
   output->GetInformation()->Remove(HIERARCHICAL_SOLUTION());
+  output->GetInformation()->Remove(MESHLESS_SOLUTION());
 
   radiosity::Scene scene;
   std::string error;
@@ -167,11 +177,41 @@ int vtkRadiosityFilter::RequestData(
     auto holder = std::make_shared<HierarchicalHolder>(sharedScene, options);
     this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     last = Clock::now();
-    this->Statistics = holder->Solver.Solve(progress);
+    this->Statistics = holder->Instance.Solve(progress);
     this->HierarchicalSolution =
-      std::shared_ptr<const radiosity::HierarchicalRadiosity>(holder, &holder->Solver);
+      std::shared_ptr<const radiosity::HierarchicalRadiosity>(holder, &holder->Instance);
     this->Solution =
-      std::make_unique<radiosity::SolutionMesh>(radiosity::ExtractSolution(holder->Solver.Mesh()));
+      std::make_unique<radiosity::SolutionMesh>(radiosity::ExtractSolution(holder->Instance.Mesh()));
+  }
+  else if (this->Method == Meshless)
+  {
+    radiosity::MeshlessOptions options;
+    options.Tolerance = this->Tolerance;
+    options.MaxBounces = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
+    options.MaxTimeSeconds = this->MaxTime;
+    options.Threads = this->NumberOfThreads;
+    options.Placement.InitialRadius = this->PointRadius;
+    options.Placement.Levels = this->PointLevels;
+    options.GatherRays = this->GatherRays;
+    options.VariationThreshold = this->VariationThreshold;
+    options.SolidAngleThreshold = this->SolidAngleThreshold;
+    options.ErrorProbes = this->ErrorProbes;
+    options.ErrorReference = this->ErrorReference;
+    auto holder = std::make_shared<MeshlessHolder>(sharedScene, options);
+    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    last = Clock::now();
+    try
+    {
+      this->Statistics = holder->Instance.Solve(progress);
+    }
+    catch (const radiosity::SceneError& e)
+    {
+      this->Fail(std::string("bad input: ") + e.what());
+      return 1;
+    }
+    this->MeshlessSolution =
+      std::shared_ptr<const radiosity::MeshlessRadiosity>(holder, &holder->Instance);
+    this->Solution = std::make_unique<radiosity::SolutionMesh>(holder->Instance.Surface());
   }
   else
   {
@@ -192,6 +232,12 @@ int vtkRadiosityFilter::RequestData(
     vtkNew<vtkHierarchicalRadiositySolution> carrier;
     carrier->SetSolution(this->HierarchicalSolution);
     output->GetInformation()->Set(HIERARCHICAL_SOLUTION(), carrier);
+  }
+  if (this->MeshlessSolution && this->Statistics.Stop != radiosity::StopReason::Aborted)
+  {
+    vtkNew<vtkMeshlessRadiositySolution> carrier;
+    carrier->SetSolution(this->MeshlessSolution);
+    output->GetInformation()->Set(MESHLESS_SOLUTION(), carrier);
   }
   return 1;
 }
@@ -241,6 +287,11 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LinkTolerance: " << this->LinkTolerance << "\n";
   os << indent << "MinElementSize: " << this->MinElementSize << "\n";
   os << indent << "MaxRefinementRounds: " << this->MaxRefinementRounds << "\n";
+  os << indent << "PointRadius: " << this->PointRadius << "\n";
+  os << indent << "PointLevels: " << this->PointLevels << "\n";
+  os << indent << "GatherRays: " << this->GatherRays << "\n";
+  os << indent << "VariationThreshold: " << this->VariationThreshold << "\n";
+  os << indent << "SolidAngleThreshold: " << this->SolidAngleThreshold << "\n";
   os << indent << "HierarchicalSolution: " << (this->HierarchicalSolution ? "yes" : "none") << "\n";
   os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";
   os << indent << "LastError: " << this->LastError << "\n";

@@ -41,6 +41,7 @@ namespace radiosity
 struct SolutionMesh;
 struct SceneAnalysis;
 class HierarchicalRadiosity;
+class MeshlessRadiosity;
 }
 class vtkInformationObjectBaseKey;
 
@@ -55,16 +56,18 @@ public:
   {
     Auto = 0,
     Progressive = 1,
-    Hierarchical = 2
+    Hierarchical = 2,
+    Meshless = 3
   };
 
   ///@{
   /// The solution method. Default Auto (progressive).
-  vtkSetClampMacro(Method, int, Auto, Hierarchical);
+  vtkSetClampMacro(Method, int, Auto, Meshless);
   vtkGetMacro(Method, int);
   void SetMethodToAuto() { this->SetMethod(Auto); }
   void SetMethodToProgressive() { this->SetMethod(Progressive); }
   void SetMethodToHierarchical() { this->SetMethod(Hierarchical); }
+  void SetMethodToMeshless() { this->SetMethod(Meshless); }
   static const char* GetMethodName(int method);
   ///@}
 
@@ -193,6 +196,51 @@ public:
   vtkGetMacro(MaxRefinementRounds, int);
   ///@}
 
+  ///@{
+  /// Meshless: the coarsest Poisson-disk radius, a fraction of the scene
+  /// diagonal (halved per level). Default 0.1.
+  vtkSetClampMacro(PointRadius, double, 1e-6, 1.0);
+  vtkGetMacro(PointRadius, double);
+  ///@}
+
+  ///@{
+  /// Meshless: levels of the point hierarchy. Default 5.
+  vtkSetClampMacro(PointLevels, int, 1, 12);
+  vtkGetMacro(PointLevels, int);
+  ///@}
+
+  ///@{
+  /// Meshless: hemisphere rays per gather (the paper: 512). Default 256.
+  vtkSetClampMacro(GatherRays, int, 1, 65536);
+  vtkGetMacro(GatherRays, int);
+  ///@}
+
+  ///@{
+  /// Meshless: epsilon_E, the receiver refinement threshold relative to the
+  /// largest direct irradiance. Default 0.01.
+  vtkSetClampMacro(VariationThreshold, double, 0.0, 1e6);
+  vtkGetMacro(VariationThreshold, double);
+  ///@}
+
+  ///@{
+  /// Meshless: epsilon_Omega, the solid angle (sr) below which the sender
+  /// level is fine enough. Default pi/10.
+  vtkSetClampMacro(SolidAngleThreshold, double, 1e-9, 12.6);
+  vtkGetMacro(SolidAngleThreshold, double);
+  ///@}
+
+  /// The last meshless solution (point hierarchy and fields); null otherwise.
+  std::shared_ptr<const radiosity::MeshlessRadiosity> GetMeshlessSolution() const
+  {
+    return this->MeshlessSolution;
+  }
+
+  /**
+   * Key of the output's information under which Method Meshless stores a
+   * vtkMeshlessRadiositySolution (read by vtkMeshlessFieldFilter).
+   */
+  static vtkInformationObjectBaseKey* MESHLESS_SOLUTION();
+
   /**
    * The last hierarchical solution (quadtrees, links, blockers; it keeps its
    * scene alive); null before a solve and for other methods.
@@ -235,6 +283,11 @@ protected:
   double LinkTolerance = 0.05;
   double MinElementSize = 1.0 / 64.0;
   int MaxRefinementRounds = 4;
+  double PointRadius = 0.1;
+  int PointLevels = 5;
+  int GatherRays = 256;
+  double VariationThreshold = 0.01;
+  double SolidAngleThreshold = 3.14159265358979323846 / 10.0;
 
 private:
   vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;
@@ -249,6 +302,7 @@ private:
   /// Shared with the hierarchical solution, which references it.
   std::shared_ptr<const radiosity::Scene> LastScene;
   std::shared_ptr<const radiosity::HierarchicalRadiosity> HierarchicalSolution;
+  std::shared_ptr<const radiosity::MeshlessRadiosity> MeshlessSolution;
   radiosity::SceneCleanupReport Cleanup;
   std::unique_ptr<radiosity::SolutionMesh> Solution;
   double PreprocessSeconds = 0.0;
