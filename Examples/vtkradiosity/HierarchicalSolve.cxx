@@ -1,0 +1,298 @@
+#include "SolveCommon.h"
+
+#include "Bench.h"
+#include "ExrWriter.h"
+#include "InterpolantSolution.h"
+#include "ProbeIO.h"
+#include "ProgressBar.h"
+#include "Report.h"
+#include "SceneLoader.h"
+
+#include "vtkCamera.h"
+#include "vtkCornellBoxSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkCellData.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityConvergenceChart.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityView.h"
+#include "vtkRenderer.h"
+#include "vtkTable.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include "Radiosity/AnalyticReference.h"
+#include "Radiosity/DiscontinuityMesher.h"
+#include "Radiosity/HierarchicalRadiosity.h"
+#include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/PathTracer.h"
+#include "Radiosity/SceneGenerators.h"
+#include "Radiosity/SystemInfo.h"
+#include "Radiosity/ProbeEvaluator.h"
+#include "Radiosity/RadianceImage.h"
+#include "Radiosity/SolutionMesh.h"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+#include <sys/stat.h>
+
+namespace solve
+{
+/// --method hierarchical: Hardt & Teller's hierarchical radiosity with
+/// discontinuity meshing (SPEC), on the core classes.
+int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
+  const std::vector<RGB>& reference, const std::string& referenceKind, vtkDataObject* input,
+  double loadSeconds, Clock::time_point start)
+{
+  if (!(args.LinkTolerance > 0.0))
+  {
+    throw BadInput("--link-tolerance must be positive");
+  }
+  std::string error;
+  std::vector<std::string> warnings;
+  Scene scene;
+  if (!vtkRadiositySceneConverter::ToScene(input, scene, error, warnings))
+  {
+    throw BadInput(error);
+  }
+  try
+  {
+    ValidateScene(scene);
+  }
+  catch (const SceneError& e)
+  {
+    throw BadInput(e.what());
+  }
+  const SceneCleanupReport cleanup = DropDegenerateTriangles(scene);
+  if (cleanup.DegenerateTrianglesDropped > 0)
+  {
+    warnings.push_back("dropped " + std::to_string(cleanup.DegenerateTrianglesDropped) +
+      " degenerate (zero-area) triangles");
+  }
+  if (scene.Triangles.empty())
+  {
+    throw BadInput("the scene has no triangle of non-zero area");
+  }
+  if (!scene.HasEmitters())
+  {
+    warnings.push_back("the scene has no emitter: the solution is zero");
+  }
+  for (const auto& w : warnings)
+  {
+    std::cerr << "warning: " << w << "\n";
+  }
+
+  HierarchicalOptions options;
+  options.Tolerance = args.Tolerance;
+  options.MaxIterations = args.MaxIterations;
+  options.MaxTimeSeconds = args.MaxTime;
+  options.Threads = args.Threads;
+  options.RelativeLinkTolerance = args.LinkTolerance;
+  options.MinElementSize = args.MinElementSize;
+  options.MaxRefinementRounds = args.MaxRefinementRounds;
+  if (!reference.empty())
+  {
+    options.ErrorProbes = probes;
+    options.ErrorReference = reference;
+  }
+  const auto preprocessStart = Clock::now();
+  HierarchicalRadiosity solver(scene, options);
+  const double preprocessSeconds = Since(preprocessStart);
+  cli::ProgressBar bar;
+  const ProgressCallback progress = [&bar](const ProgressStatus& status) { return bar.Update(status); };
+  const SolverStatistics stats = solver.Solve(progress);
+  ProgressStatus done;
+  done.Phase = "solved";
+  done.Iteration = stats.Iterations;
+  done.Residual = stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0;
+  done.Fraction = 1.0;
+  bar.Update(done);
+
+  const bool meshing = !args.NoDiscontinuityMeshing && stats.Stop != StopReason::Aborted;
+  DiscontinuityMeshOptions meshOptions;
+  meshOptions.MaxPerLeaf = args.DiscontinuitiesPerLeaf;
+  meshOptions.MinWeight = args.MinDiscontinuityWeight;
+  meshOptions.Threads = args.Threads;
+  DiscontinuityMesh mesh;
+  if (meshing)
+  {
+    mesh = BuildDiscontinuityMesh(solver, meshOptions, progress);
+  }
+  bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
+
+  const SolutionMesh leaves = ExtractSolution(solver.Mesh());
+  vtkSmartPointer<vtkPolyData> solved =
+    meshing ? MeshPolyData(mesh, scene) : vtkRadiositySceneConverter::FromSolution(leaves, scene);
+  solved->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(stats.History));
+
+  nlohmann::json phases;
+  phases["load_s"] = loadSeconds;
+  phases["preprocessing_s"] = preprocessSeconds;
+  phases["solve_s"] = stats.SolveSeconds;
+  phases["meshing_s"] = meshing ? nlohmann::json(mesh.Seconds) : nlohmann::json();
+  if (!args.Output.empty())
+  {
+    WriteVtp(solved, args.Output);
+  }
+  const auto renderStart = Clock::now();
+  RenderOutputs(args, solved,
+    meshing ? cli::InterpolantSolution(mesh, scene) : leaves, scene);
+  phases["render_s"] = Since(renderStart);
+
+  // Probes: from the interpolants (meshing) or the constant leaves; a probe
+  // on no surface is gathered from the leaves' radiosity.
+  std::size_t gathered = 0, onMesh = 0;
+  std::vector<RGB> probeValues;
+  if (!args.ProbeOutput.empty() || !reference.empty())
+  {
+    std::vector<Probe> rest;
+    std::vector<std::size_t> restIndex;
+    if (meshing)
+    {
+      probeValues = EvaluateInterpolants(mesh, probes, 1e-6 * solver.Analysis().Diagonal);
+      for (std::size_t i = 0; i < probes.size(); ++i)
+      {
+        if (std::isfinite(Luminance(probeValues[i])))
+        {
+          ++onMesh;
+        }
+        else
+        {
+          rest.push_back(probes[i]);
+          restIndex.push_back(i);
+        }
+      }
+    }
+    else
+    {
+      probeValues.assign(probes.size(), RGB(0.0));
+      rest = probes;
+      for (std::size_t i = 0; i < probes.size(); ++i)
+      {
+        restIndex.push_back(i);
+      }
+    }
+    if (!rest.empty())
+    {
+      ProbeEvaluator evaluator(leaves, scene);
+      const std::vector<RGB> values = evaluator.Evaluate(rest);
+      gathered = evaluator.GatheredCount();
+      for (std::size_t i = 0; i < rest.size(); ++i)
+      {
+        probeValues[restIndex[i]] = values[i];
+      }
+    }
+  }
+  if (!args.ProbeOutput.empty())
+  {
+    Check(cli::WriteProbeValues(args.ProbeOutput, probes, probeValues, error), error);
+  }
+  if (!args.HistoryCsv.empty())
+  {
+    Check(cli::WriteFileAtomically(args.HistoryCsv, cli::HistoryCsv(stats.History), error), error);
+  }
+  if (!args.HistoryPng.empty())
+  {
+    WriteHistoryPlot(stats.History, args.HistoryPng,
+      "Convergence: " + args.Scene + ", hierarchical radiosity");
+  }
+
+  if (!args.Report.empty())
+  {
+    nlohmann::json report;
+    report["method"] = "hierarchical";
+    report["parameters"] = { { "tolerance", options.Tolerance },
+      { "max_iterations", options.MaxIterations }, { "max_time_s", options.MaxTimeSeconds },
+      { "threads", options.Threads }, { "link_tolerance", options.RelativeLinkTolerance },
+      { "link_tolerance_W_m2", solver.GetLinkTolerance() },
+      { "min_element_size", options.MinElementSize },
+      { "max_refinement_rounds", options.MaxRefinementRounds },
+      { "max_blockers_per_link", options.MaxBlockersPerLink },
+      { "discontinuity_meshing", meshing },
+      { "discontinuities", meshOptions.Discontinuities },
+      { "discontinuities_per_leaf", meshOptions.MaxPerLeaf },
+      { "min_discontinuity_weight", meshOptions.MinWeight } };
+    std::size_t emitters = 0;
+    for (const auto& m : scene.Materials)
+    {
+      emitters += MaxComponent(m.Emission) > 0 ? 1 : 0;
+    }
+    report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
+      { "objects", scene.ObjectNames.size() }, { "emitters", emitters },
+      { "emitted_power_W", stats.EmittedPowerW }, { "warnings", warnings },
+      { "left_out",
+        { { "degenerate_triangles_dropped", cleanup.DegenerateTrianglesDropped },
+          { "solve_skipped_no_emitters", stats.Stop == StopReason::NoEmitters } } } };
+    report["solution"] = { { "stop", ToString(stats.Stop) }, { "iterations", stats.Iterations },
+      { "leaves", stats.Elements }, { "nodes", solver.Mesh().Elements().size() },
+      { "links", stats.Links }, { "partial_links", stats.PartialLinks },
+      { "hidden_links", stats.HiddenLinks }, { "rays", stats.RaysCast },
+      { "relative_unshot_power",
+        stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0 },
+      { "absorbed_power_W", stats.AbsorbedPowerW }, { "escaped_power_W", stats.EscapedPowerW },
+      { "probes", probes.size() }, { "probes_on_the_mesh", onMesh },
+      { "probes_gathered_off_surface", gathered } };
+    if (meshing)
+    {
+      report["discontinuity_mesh"] = { { "leaves_meshed", mesh.LeavesMeshed },
+        { "segments_found", mesh.SegmentsFound }, { "segments_kept", mesh.SegmentsKept },
+        { "point_samples", mesh.PointSamples }, { "points", mesh.Points.size() },
+        { "triangles", mesh.Triangles.size() }, { "interpolants", mesh.Interpolants.size() },
+        { "seconds", mesh.Seconds } };
+    }
+    else
+    {
+      report["discontinuity_mesh"] = nullptr;
+    }
+    report["time"] = phases;
+    report["time"]["total_s"] = Since(start);
+    report["peak_memory_bytes"] = PeakMemoryBytes();
+    report["convergence_history"] = cli::HistoryJson(stats.History);
+    if (reference.empty())
+    {
+      report["error"] = nullptr; // no reference known
+    }
+    else
+    {
+      const ConvergenceRow& last = stats.History.Rows.back();
+      nlohmann::json e;
+      e["reference"] = referenceKind;
+      e["probes"] = probes.size();
+      e["probes_on_a_surface"] = stats.ErrorProbesTracked;
+      // The representation the user sees: the interpolants with meshing
+      // (probes on the mesh), the constant leaves without.
+      const ErrorFigures seen = meshing
+        ? RelativeErrors(EvaluateInterpolants(mesh, probes, 1e-6 * solver.Analysis().Diagonal), reference)
+        : ErrorFigures{ last.RmsError, last.MaxRelError, stats.ErrorProbesTracked };
+      e["evaluated_from"] = meshing ? "quadratic interpolants" : "constant leaves";
+      e["rms_relative_error"] = Finite(seen.Rms);
+      e["max_relative_error"] = Finite(seen.Max);
+      e["leaves_rms_relative_error"] = Finite(last.RmsError);
+      e["leaves_max_relative_error"] = Finite(last.MaxRelError);
+      const ErrorFigures all = RelativeErrors(probeValues, reference);
+      e["probe_output_rms_relative_error"] = Finite(all.Rms);
+      e["probe_output_max_relative_error"] = Finite(all.Max);
+      report["error"] = e;
+    }
+    Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
+  }
+  std::cerr << "solved " << args.Scene << ": " << stats.Elements << " leaves, " << stats.Links
+            << " links (" << stats.PartialLinks << " partial), " << stats.Iterations
+            << " sweeps, " << stats.SolveSeconds << " s";
+  if (meshing)
+  {
+    std::cerr << "; discontinuity mesh: " << mesh.Triangles.size() << " triangles, "
+              << mesh.LeavesMeshed << " leaves meshed, " << mesh.Seconds << " s";
+  }
+  std::cerr << "\n";
+  return 0;
+}
+
+} // namespace solve

@@ -1,0 +1,251 @@
+#include "SolveCommon.h"
+
+#include "Bench.h"
+#include "ExrWriter.h"
+#include "InterpolantSolution.h"
+#include "ProbeIO.h"
+#include "ProgressBar.h"
+#include "Report.h"
+#include "SceneLoader.h"
+
+#include "vtkCamera.h"
+#include "vtkCornellBoxSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkCellData.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityConvergenceChart.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityView.h"
+#include "vtkRenderer.h"
+#include "vtkTable.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include "Radiosity/AnalyticReference.h"
+#include "Radiosity/DiscontinuityMesher.h"
+#include "Radiosity/HierarchicalRadiosity.h"
+#include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/PathTracer.h"
+#include "Radiosity/SceneGenerators.h"
+#include "Radiosity/SystemInfo.h"
+#include "Radiosity/ProbeEvaluator.h"
+#include "Radiosity/RadianceImage.h"
+#include "Radiosity/SolutionMesh.h"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+#include <sys/stat.h>
+
+namespace solve
+{
+double Since(Clock::time_point t)
+{
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+vtkSmartPointer<vtkTable> HistoryTable(const ConvergenceHistory& history)
+{
+  auto table = vtkSmartPointer<vtkTable>::New();
+  const auto names = ConvergenceHistory::ColumnNames();
+  std::vector<vtkSmartPointer<vtkDoubleArray>> columns;
+  for (const auto& name : names)
+  {
+    auto c = vtkSmartPointer<vtkDoubleArray>::New();
+    c->SetName(name.c_str());
+    c->SetNumberOfTuples(static_cast<vtkIdType>(history.Rows.size()));
+    columns.push_back(c);
+    table->AddColumn(c);
+  }
+  for (std::size_t i = 0; i < history.Rows.size(); ++i)
+  {
+    const ConvergenceRow& r = history.Rows[i];
+    const double row[7] = { static_cast<double>(r.Iteration), r.TimeSeconds, r.UnshotPowerW,
+      r.EnergyBalance, r.RmsError, r.MaxRelError, r.OvershootPowerW };
+    for (std::size_t c = 0; c < columns.size(); ++c)
+    {
+      columns[c]->SetValue(static_cast<vtkIdType>(i), row[c]);
+    }
+  }
+  return table;
+}
+
+void Check(bool ok, const std::string& error)
+{
+  if (!ok)
+  {
+    throw std::runtime_error(error);
+  }
+}
+
+/// Sensors for the demo's error curve: the centre of every input triangle of
+/// the Cornell box but the light's, facing the way the triangle does.
+std::vector<Probe> CornellDemoProbes()
+{
+  const Scene box = MakeCornellBox();
+  std::vector<Probe> probes;
+  for (std::size_t t = 0; t < box.Triangles.size(); ++t)
+  {
+    if (MaxComponent(box.Materials[t].Emission) == 0.0)
+    {
+      probes.push_back(Probe{ box.Centroid(t), box.Normal(t) });
+    }
+  }
+  return probes;
+}
+
+void WriteVtp(vtkPolyData* data, const std::string& file)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  const std::string temporary = file + ".partial.vtp";
+  writer->SetFileName(temporary.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToAppended();
+  Check(writer->Write() == 1 && std::rename(temporary.c_str(), file.c_str()) == 0,
+    "cannot write " + file);
+}
+
+/// --image through vtkRadiosityView (which draws the quadratic interpolants
+/// per pixel when the polydata has them) and --exr by ray casting `radiance`
+/// from the same camera; --reference-exr path traces that view.
+void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
+  const Scene& scene)
+{
+  if (args.Image.empty() && args.Exr.empty())
+  {
+    return;
+  }
+  std::string error;
+  vtkNew<vtkRadiosityView> view;
+  view->SetInputData(solved);
+  view->SetSize(args.Width, args.Height);
+  if (args.Scene == "cornell")
+  {
+    double position[3], focal[3], up[3], angle;
+    vtkCornellBoxSource::GetCamera(position, focal, up, angle);
+    view->SetCamera(position, focal, up, angle);
+  }
+  Check(view->Render(), "cannot render the solution");
+  if (!args.Image.empty())
+  {
+    const std::string temporary = args.Image + ".partial.png";
+    Check(view->WritePNG(temporary.c_str()) &&
+        std::rename(temporary.c_str(), args.Image.c_str()) == 0,
+      "cannot write " + args.Image);
+  }
+  if (!args.Exr.empty())
+  {
+    // Same camera as the PNG, linear radiance by ray casting the solution.
+    vtkCamera* camera = view->GetRenderer()->GetActiveCamera();
+    PinholeCamera pinhole;
+    double v[3];
+    camera->GetPosition(v);
+    pinhole.Position = Vec3(v[0], v[1], v[2]);
+    camera->GetFocalPoint(v);
+    pinhole.FocalPoint = Vec3(v[0], v[1], v[2]);
+    camera->GetViewUp(v);
+    pinhole.ViewUp = Vec3(v[0], v[1], v[2]);
+    pinhole.ViewAngleDegrees = camera->GetViewAngle();
+    const RadianceImage image = RenderRadiance(radiance, pinhole, args.Width, args.Height);
+    Check(cli::WriteExrHalf(args.Exr, image, error), error);
+    if (!args.ReferenceExr.empty())
+    {
+      // The path-traced reference of the same view, pixel for pixel.
+      PathTracerOptions options;
+      const PathTracer tracer(scene, options);
+      const RadianceImage truth =
+        tracer.Render(pinhole, args.Width, args.Height, args.ReferencePixelSamples);
+      Check(cli::WriteExrHalf(args.ReferenceExr, truth, error), error);
+    }
+  }
+}
+
+void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
+  const std::string& title)
+{
+  vtkNew<vtkRadiosityConvergenceChart> chart;
+  chart->SetInputData(HistoryTable(history));
+  chart->SetTitle(title.c_str());
+  chart->RemoveAllColumns();
+  chart->AddColumn("unshot_power_W", "unshot power (W)");
+  chart->AddColumn("overshoot_power_W", "power shot in advance by overshooting (W)");
+  chart->AddColumn("energy_balance", "|energy balance| (relative)");
+  chart->AddColumn("rms_error", "RMS relative irradiance error at the probes");
+  chart->AddColumn("max_rel_error", "max relative irradiance error");
+  const std::string temporary = file + ".partial.png";
+  Check(chart->WritePNG(temporary.c_str(), 900, 500) &&
+      std::rename(temporary.c_str(), file.c_str()) == 0,
+    "cannot write " + file);
+}
+
+nlohmann::json Finite(double v)
+{
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+/// The discontinuity mesh as polydata: the SPEC output arrays (cell values
+/// the interpolants' means, point values the accurate samples) and the cell
+/// array QuadraticInterpolant (18 components, channel-major: 6c + k is
+/// coefficient k of channel c, in the triangle's point order).
+vtkSmartPointer<vtkPolyData> MeshPolyData(const DiscontinuityMesh& mesh, const Scene& scene)
+{
+  SolutionMesh s;
+  s.Points = mesh.Points;
+  s.Triangles = mesh.Triangles;
+  s.PointIrradiance = mesh.PointIrradiance;
+  s.PointIrradiance.resize(mesh.Points.size(), RGB(0.0));
+  s.ElementId = mesh.Leaf;
+  s.Level = mesh.Level;
+  s.SourceTriangle = mesh.SourceTriangle;
+  s.Normals = mesh.Normals;
+  std::vector<RGB> radiosity(mesh.Points.size(), RGB(0.0));
+  std::vector<double> weight(mesh.Points.size(), 0.0);
+  for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+  {
+    const Material& m = scene.Materials[mesh.SourceTriangle[t]];
+    const QuadraticInterpolant& q = mesh.Interpolants[t];
+    const RGB mean = q.Mean();
+    s.CellIrradiance.push_back(mean);
+    s.CellRadiosity.push_back(m.Emission + m.Reflectance * mean);
+    ElementSamples samples;
+    samples.Corner = { q.Evaluate(0, 0), q.Evaluate(1, 0), q.Evaluate(0, 1) };
+    samples.Centre = q.Evaluate(1.0 / 3.0, 1.0 / 3.0);
+    s.Samples.push_back(samples);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t p = mesh.Triangles[t].V[k];
+      radiosity[p] += m.Emission + m.Reflectance * samples.Corner[k];
+      weight[p] += 1.0;
+    }
+  }
+  for (std::size_t p = 0; p < radiosity.size(); ++p)
+  {
+    s.PointRadiosity.push_back(weight[p] > 0 ? radiosity[p] / weight[p] : RGB(0.0));
+  }
+  vtkSmartPointer<vtkPolyData> data = vtkRadiositySceneConverter::FromSolution(s, scene);
+  vtkNew<vtkDoubleArray> coefficients;
+  coefficients->SetName("QuadraticInterpolant");
+  coefficients->SetNumberOfComponents(18);
+  coefficients->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Interpolants.size()));
+  for (std::size_t t = 0; t < mesh.Interpolants.size(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int k = 0; k < 6; ++k)
+      {
+        coefficients->SetComponent(
+          static_cast<vtkIdType>(t), 6 * c + k, mesh.Interpolants[t].Coefficients[k][c]);
+      }
+    }
+  }
+  data->GetCellData()->AddArray(coefficients);
+  return data;
+}
+
+} // namespace solve

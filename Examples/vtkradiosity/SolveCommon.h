@@ -1,0 +1,82 @@
+// What the solve paths of the vtkradiosity program share: its arguments,
+// bad-input errors, and the writers of outputs, images and histories.
+#ifndef vtkradiosity_SolveCommon_h
+#define vtkradiosity_SolveCommon_h
+
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTable.h"
+
+#include "Radiosity/ConvergenceHistory.h"
+#include "Radiosity/DiscontinuityMesher.h"
+#include "Radiosity/ProbeEvaluator.h"
+#include "Radiosity/Scene.h"
+#include "Radiosity/SolutionMesh.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+class vtkDataObject;
+
+namespace solve
+{
+using Clock = std::chrono::steady_clock;
+using namespace radiosity;
+
+/// Bad input: exit status 2, message on stderr, nothing written.
+struct BadInput : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct SolveArguments
+{
+  std::string Scene;
+  std::string Method = "auto";
+  double Tolerance = 1e-3;
+  long long MaxIterations = 200000;
+  double MaxTime = 0.0;
+  int Threads = 0;
+  std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
+  std::string Reference;
+  std::size_t ReferenceSamples = 16384;
+  std::string ReferenceExr;
+  std::size_t ReferencePixelSamples = 64;
+  bool DemoProbes = false; ///< the demo's fixed sensors with a path-traced reference
+  int Width = 800, Height = 800;
+  bool NoOvershooting = false;
+  double ElementSize = 1.0 / 16.0;
+  double ShooterSize = 0.25;
+  // --method hierarchical
+  double LinkTolerance = 0.05;   ///< relative to the scene's mean irradiance
+  double MinElementSize = 1.0 / 64.0;
+  int MaxRefinementRounds = 4;
+  bool NoDiscontinuityMeshing = false;
+  int DiscontinuitiesPerLeaf = 10;
+  double MinDiscontinuityWeight = 0.05; ///< relative to the brightest emitter
+};
+
+double Since(Clock::time_point t);
+vtkSmartPointer<vtkTable> HistoryTable(const ConvergenceHistory& history);
+void Check(bool ok, const std::string& error);
+std::vector<Probe> CornellDemoProbes();
+void WriteVtp(vtkPolyData* data, const std::string& file);
+void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
+  const Scene& scene);
+void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
+  const std::string& title);
+nlohmann::json Finite(double v);
+vtkSmartPointer<vtkPolyData> MeshPolyData(const DiscontinuityMesh& mesh, const Scene& scene);
+
+/// `solve --method hierarchical` (called by the solve command once the
+/// probes, the reference and the scene are read and checked).
+int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
+  const std::vector<RGB>& reference, const std::string& referenceKind, vtkDataObject* input,
+  double loadSeconds, Clock::time_point start);
+} // namespace solve
+
+#endif
