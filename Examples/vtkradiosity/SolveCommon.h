@@ -58,6 +58,11 @@ struct SolveArguments
   bool NoDiscontinuityMeshing = false;
   int DiscontinuitiesPerLeaf = 10;
   double MinDiscontinuityWeight = 0.05; ///< relative to the brightest emitter
+  // --method meshless
+  double PointRadius = 0.1; ///< coarsest Poisson-disk radius, fraction of the diagonal
+  int PointLevels = 5;
+  int GatherRays = 256;
+  double VariationThreshold = 0.01;
 };
 
 double Since(Clock::time_point t);

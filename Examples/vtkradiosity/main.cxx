@@ -29,6 +29,7 @@
 #include "Radiosity/AnalyticReference.h"
 #include "Radiosity/DiscontinuityMesher.h"
 #include "Radiosity/HierarchicalRadiosity.h"
+#include "Radiosity/MeshlessRadiosity.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
@@ -53,11 +54,13 @@ using namespace solve;
 int RunSolve(const SolveArguments& args)
 {
   const auto start = Clock::now();
-  if (args.Method != "auto" && args.Method != "progressive" && args.Method != "hierarchical")
+  if (args.Method != "auto" && args.Method != "progressive" && args.Method != "hierarchical" &&
+    args.Method != "meshless")
   {
     throw BadInput("--method " + args.Method +
-      ": not available in this version (available: progressive, hierarchical, auto)");
+      ": not available in this version (available: progressive, hierarchical, meshless, auto)");
   }
+  const bool meshless = args.Method == "meshless";
   if (!args.ReferenceExr.empty() && args.Exr.empty())
   {
     throw BadInput("--reference-exr needs --exr (the same view, path traced)");
@@ -165,7 +168,11 @@ int RunSolve(const SolveArguments& args)
 
   vtkNew<vtkRadiosityFilter> filter;
   filter->SetInputData(input);
-  filter->SetMethod(vtkRadiosityFilter::Progressive);
+  filter->SetMethod(meshless ? vtkRadiosityFilter::Meshless : vtkRadiosityFilter::Progressive);
+  filter->SetPointRadius(args.PointRadius);
+  filter->SetPointLevels(args.PointLevels);
+  filter->SetGatherRays(args.GatherRays);
+  filter->SetVariationThreshold(args.VariationThreshold);
   filter->SetTolerance(args.Tolerance);
   filter->SetMaxIterations(args.MaxIterations);
   filter->SetMaxTime(args.MaxTime);
@@ -213,7 +220,12 @@ int RunSolve(const SolveArguments& args)
 
   std::size_t gathered = 0;
   std::vector<RGB> probeValues;
-  if (!args.ProbeOutput.empty() || !reference.empty())
+  if ((!args.ProbeOutput.empty() || !reference.empty()) && meshless)
+  {
+    // SPEC: the meshless method's probes come from its Shepard field.
+    probeValues = filter->GetMeshlessSolution()->Evaluate(probes);
+  }
+  else if (!args.ProbeOutput.empty() || !reference.empty())
   {
     ProbeEvaluator evaluator(solution, filter->GetScene());
     probeValues = evaluator.Evaluate(probes);
@@ -230,14 +242,14 @@ int RunSolve(const SolveArguments& args)
   if (!args.HistoryPng.empty())
   {
     WriteHistoryPlot(stats.History, args.HistoryPng,
-      "Convergence: " + args.Scene + ", progressive refinement");
+      "Convergence: " + args.Scene + (meshless ? ", meshless radiosity" : ", progressive refinement"));
   }
 
   if (!args.Report.empty())
   {
     const Scene& scene = filter->GetScene();
     nlohmann::json report;
-    report["method"] = "progressive";
+    report["method"] = meshless ? "meshless" : "progressive";
     report["parameters"] = { { "tolerance", filter->GetTolerance() },
       { "max_iterations", filter->GetMaxIterations() }, { "max_time_s", filter->GetMaxTime() },
       { "threads", filter->GetNumberOfThreads() }, { "overshooting", filter->GetOvershooting() },
@@ -271,6 +283,23 @@ int RunSolve(const SolveArguments& args)
         stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0 },
       { "absorbed_power_W", stats.AbsorbedPowerW }, { "escaped_power_W", stats.EscapedPowerW },
       { "probes", probes.size() }, { "probes_gathered_off_surface", gathered } };
+    if (meshless)
+    {
+      // The columns of Lehtinen et al.'s Table 1.
+      const MeshlessStatistics& t = filter->GetMeshlessSolution()->Statistics();
+      report["parameters"]["point_radius"] = args.PointRadius;
+      report["parameters"]["point_levels"] = args.PointLevels;
+      report["parameters"]["gather_rays"] = args.GatherRays;
+      report["parameters"]["variation_threshold"] = args.VariationThreshold;
+      report["parameters"]["solid_angle_threshold_sr"] = filter->GetSolidAngleThreshold();
+      report["meshless"] = { { "samples_generated", t.SamplesGenerated },
+        { "samples_gathered_to", t.SamplesGatheredTo }, { "gather_operations", t.GatherOperations },
+        { "visibility_rays", t.VisibilityRays }, { "hierarchy_levels", t.Levels },
+        { "samples_at_coarsest_level", t.CoarsestSamples }, { "memory_bytes", t.MemoryBytes } };
+      phases["point_placement_s"] = t.PlacementSeconds;
+      phases["direct_light_s"] = t.DirectSeconds;
+      phases["bounces_s"] = t.BounceSeconds;
+    }
     report["time"] = phases;
     report["time"]["total_s"] = Since(start);
     report["peak_memory_bytes"] = PeakMemoryBytes();
@@ -329,6 +358,18 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--size", solve.Width, "image width and height in pixels")
     ->check(CLI::Range(16, 8192));
   solveCommand->add_flag("--no-overshooting", solve.NoOvershooting);
+  solveCommand->add_option("--point-radius", solve.PointRadius,
+    "meshless: coarsest Poisson-disk radius, fraction of the scene diagonal (default 0.1)")
+    ->check(CLI::Range(1e-6, 1.0));
+  solveCommand->add_option("--point-levels", solve.PointLevels,
+    "meshless: levels of the point hierarchy (default 5)")
+    ->check(CLI::Range(1, 12));
+  solveCommand->add_option("--gather-rays", solve.GatherRays,
+    "meshless: hemisphere rays per gather (default 256)")
+    ->check(CLI::Range(1, 65536));
+  solveCommand->add_option("--variation-threshold", solve.VariationThreshold,
+    "meshless: receiver refinement threshold relative to the largest direct irradiance (default 0.01)")
+    ->check(CLI::Range(0.0, 1e6));
   solveCommand->add_option("--link-tolerance", solve.LinkTolerance,
     "hierarchical: link refinement threshold on B F, relative to the scene's mean irradiance "
     "(default 0.05)")
