@@ -184,6 +184,25 @@ endif ()
 expect_exit(2 "${PROGRAM}" solve shadow --method hierarchical --link-tolerance 0
   --output "${WORK}/bad.vtp")
 
+# Meshless: the contact scene against its closed form, probes from the Shepard
+# field, the Table 1 columns in the report.
+file(WRITE "${WORK}/contact_probes.csv" "x,y,z,nx,ny,nz\n0.05,0.5,0,0,0,1\n0.3,0.5,0,0,0,1\n1.0,0.5,0,0,0,1\n")
+expect_exit(0 "${PROGRAM}" solve contact --method meshless --point-levels 4
+  --probes "${WORK}/contact_probes.csv" --reference analytic --probe-output "${WORK}/ml_values.csv"
+  --output "${WORK}/ml.vtp" --report "${WORK}/ml.json")
+file(STRINGS "${WORK}/ml_values.csv" rows)
+list(LENGTH rows n)
+file(READ "${WORK}/ml.json" ml)
+string(JSON method GET "${ml}" method)
+string(JSON generated GET "${ml}" meshless samples_generated)
+string(JSON gathered GET "${ml}" meshless samples_gathered_to)
+string(JSON rms GET "${ml}" error rms_relative_error)
+if (NOT n EQUAL 4 OR rows MATCHES "nan" OR NOT method STREQUAL "meshless" OR NOT generated GREATER gathered
+    OR NOT gathered GREATER 0 OR NOT rms LESS 0.02)
+  message(FATAL_ERROR "meshless: ${n} rows, method ${method}, samples ${generated}/${gathered}, rms ${rms}")
+endif ()
+expect_exit(2 "${PROGRAM}" solve contact --method meshless --point-levels 0 --output "${WORK}/bad.vtp")
+
 expect_exit(2 "${PROGRAM}" solve shadow --probes "${DATA}/room_probes.csv"
   --reference "${WORK}/shadow_values.csv" --output "${WORK}/bad.vtp")
 expect_exit(2 "${PROGRAM}" solve cornell --probes "${DATA}/room_probes.csv"
