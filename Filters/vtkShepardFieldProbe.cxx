@@ -155,6 +155,7 @@ int vtkShepardFieldProbe::RequestData(
     return 1;
   }
   // Per point: a cell using it, for the group and the materials.
+  vtkDataArray* pointObjectId = Array(input->GetPointData(), "ObjectId", 1);
   vtkDataArray* objectId = Array(input->GetCellData(), "ObjectId", 1);
   vtkDataArray* rho = Array(input->GetCellData(), "Reflectance", 3);
   vtkDataArray* emission = Array(input->GetCellData(), "Emission", 3);
@@ -188,7 +189,11 @@ int vtkShepardFieldProbe::RequestData(
       // The group: the owning cell's object, else the nearest facing field point's.
       std::int64_t g = -1;
       const vtkIdType cell = owner[static_cast<std::size_t>(i)];
-      if (objectId && cell >= 0)
+      if (pointObjectId)
+      {
+        g = static_cast<std::int64_t>(pointObjectId->GetTuple1(i));
+      }
+      else if (objectId && cell >= 0)
       {
         g = static_cast<std::int64_t>(objectId->GetTuple1(cell));
       }

@@ -12,8 +12,8 @@
  * K(|x - x_j| / r_j) max(0, n . n_j) (eqs. 12, 13), summed over the levels.
  * Point normals come from the point array `Normals`, or for polydata from
  * vtkPolyDataNormals (no splitting, orientation kept). The group of a point is
- * the cell array `ObjectId` of a cell using it when present, else the group of
- * the nearest facing field point. Output: the input with the point arrays
+ * the point array `ObjectId` when present, else the cell array `ObjectId` of a
+ * cell using it, else the group of the nearest facing field point. Output: the input with the point arrays
  * `Irradiance` and, when the input has the cell arrays `Reflectance` and
  * `Emission`, `Radiosity` = E + rho H (materials of a cell using the point).
  */
