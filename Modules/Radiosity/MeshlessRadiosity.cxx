@@ -87,14 +87,22 @@ RGB MeshlessRadiosity::DirectAt(std::uint32_t receiver) const
     const Vec3 a = this->SourceScene.Vertex(t, 0), b = this->SourceScene.Vertex(t, 1),
                c = this->SourceScene.Vertex(t, 2);
     const Vec3 emitterNormal = this->SourceScene.Normal(t);
-    // A receiver in the emitter's own plane (on it, or on a coplanar
-    // neighbour) sees none of it; the contour integral around a point inside
-    // the polygon would count the whole hemisphere instead.
-    if (!(glm::dot(p.Position - a, emitterNormal) > this->Rays->Offset()))
+    // A receiver on a surface coplanar with the emitter (the emitter itself,
+    // a neighbour) sees none of it: the contour integral around a point
+    // inside the polygon would count the whole hemisphere instead. A receiver
+    // on another surface that touches the emitter's plane (a floor at the foot
+    // of an emitting wall) takes the limit from the emitter's front.
+    const double height = glm::dot(p.Position - a, emitterNormal);
+    Vec3 x = p.Position;
+    if (height <= this->Rays->Offset())
     {
-      continue;
+      if (glm::dot(p.Normal, emitterNormal) > 1.0 - 1e-6 || height < -this->Rays->Offset())
+      {
+        continue;
+      }
+      x += (this->Rays->Offset() - height) * emitterNormal;
     }
-    const double f = PointToTriangleFormFactor(p.Position, p.Normal, a, b, c);
+    const double f = PointToTriangleFormFactor(x, p.Normal, a, b, c);
     if (!(f > 0))
     {
       continue;
