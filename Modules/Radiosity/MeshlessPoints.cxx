@@ -11,7 +11,8 @@
 
 namespace radiosity
 {
-namespace
+// Named (not anonymous): PointHierarchy::Index holds these types.
+namespace meshless_points_detail
 {
 /// nanoflann's view of a set of points.
 struct Cloud
@@ -40,6 +41,12 @@ struct Cloud
 };
 using Tree =
   nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3, std::size_t>;
+} // namespace meshless_points_detail
+
+namespace
+{
+using meshless_points_detail::Cloud;
+using meshless_points_detail::Tree;
 
 /// Accepted points of one group in a uniform grid of the current disk radius.
 class AcceptanceGrid
