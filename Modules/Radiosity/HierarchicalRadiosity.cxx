@@ -539,17 +539,7 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
     this->Settings.ErrorProbes, this->Settings.ErrorReference, this->SceneInfo.Diagonal);
   stats.ErrorProbesTracked = tracker ? tracker->Tracked() : 0;
   auto report = [&](const char* phase, long long iteration, double residual) {
-    if (!progress)
-    {
-      return true;
-    }
-    ProgressStatus status;
-    status.Phase = phase;
-    status.Iteration = iteration;
-    status.Residual = residual;
-    status.Fraction = std::clamp(
-      std::log(std::max(residual, 1e-300)) / std::log(this->Settings.Tolerance), 0.0, 1.0);
-    return progress(status);
+    return ReportProgress(progress, phase, iteration, residual, this->Settings.Tolerance);
   };
 
   std::vector<PendingLink> pending;

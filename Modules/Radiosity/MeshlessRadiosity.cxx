@@ -432,17 +432,7 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     return stats;
   }
   auto report = [&](const char* phase, long long iteration, double residual) {
-    if (!progress)
-    {
-      return true;
-    }
-    ProgressStatus status;
-    status.Phase = phase;
-    status.Iteration = iteration;
-    status.Residual = residual;
-    status.Fraction = std::clamp(
-      std::log(std::max(residual, 1e-300)) / std::log(this->Settings.Tolerance), 0.0, 1.0);
-    return progress(status);
+    return ReportProgress(progress, phase, iteration, residual, this->Settings.Tolerance);
   };
   if (!report("placing points", 0, 1.0))
   {

@@ -5,6 +5,8 @@
 
 #include "Radiosity/ConvergenceHistory.h"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -20,6 +22,24 @@ struct ProgressStatus
 
 /// Called from the solver's thread; return false to abort.
 using ProgressCallback = std::function<bool(const ProgressStatus&)>;
+
+/// Reports a phase and residual to `progress` (when set), the fraction done
+/// estimated on a log scale from 1 down to `tolerance`; false means abort.
+inline bool ReportProgress(const ProgressCallback& progress, const char* phase,
+  long long iteration, double residual, double tolerance)
+{
+  if (!progress)
+  {
+    return true;
+  }
+  ProgressStatus status;
+  status.Phase = phase;
+  status.Iteration = iteration;
+  status.Residual = residual;
+  const double done = std::log(std::max(residual, 1e-300)) / std::log(tolerance);
+  status.Fraction = done < 0 ? 0.0 : (done > 1 ? 1.0 : done);
+  return progress(status);
+}
 
 enum class StopReason
 {
