@@ -457,40 +457,78 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     return out;
   }
 
-  // Phase 2: sample keys; leaf corners and whole leaf edges are shared.
-  std::unordered_map<std::uint64_t, std::uint32_t> sharedIndex;
+  // Phase 2: sample keys. Every sample on a leaf's boundary (corners, edge
+  // midpoints, vertices of neighbours inserted by the conforming step) is
+  // shared by position between the leaves that meet there: computed once, and
+  // neighbouring interpolants agree along their common edges.
+  const double quantum = 1e-9 * std::max(s.Analysis().Diagonal, 1e-300);
+  // The key is the position and the surface's normal: a point on a contact
+  // line belongs to both surfaces, with a different irradiance on each.
+  using SampleKey = std::array<std::int64_t, 6>;
+  struct PositionHash
+  {
+    std::size_t operator()(const SampleKey& k) const
+    {
+      std::size_t h = 0;
+      for (std::int64_t v : k)
+      {
+        h = h * 1000003u ^ static_cast<std::size_t>(v);
+      }
+      return h;
+    }
+  };
+  std::unordered_map<SampleKey, std::uint32_t, PositionHash> sharedIndex;
   std::vector<Vec3> sharedPoints;
   std::vector<std::uint32_t> sharedOwner; ///< the leaf whose links evaluate it
   for (std::size_t i = 0; i < leaves.size(); ++i)
   {
-    const Element& el = mesh[leaves[i]];
     LeafWork& w = work[i];
-    out.LeavesMeshed += kept[i] > 0;
+    const TriangleCorners corners = s.Corners(leaves[i]);
+    const double tolerance = 1e-7 * mesh.LongestEdge(leaves[i]);
     out.SegmentsFound += found[i];
     out.SegmentsKept += kept[i];
-    auto shared = [&](std::uint32_t a, std::uint32_t b) {
-      const std::uint64_t key = EdgeKey(el.V[a], el.V[b]);
+    out.LeavesMeshed += kept[i] > 0;
+    const Vec3& normal = mesh[leaves[i]].Normal;
+    auto shared = [&](const Vec3& x) {
+      const SampleKey key = { std::llround(x.x / quantum), std::llround(x.y / quantum),
+        std::llround(x.z / quantum), std::llround(normal.x * 1e6), std::llround(normal.y * 1e6),
+        std::llround(normal.z * 1e6) };
       auto it = sharedIndex.find(key);
       if (it == sharedIndex.end())
       {
         it = sharedIndex.emplace(key, static_cast<std::uint32_t>(sharedPoints.size())).first;
-        sharedPoints.push_back(0.5 * (mesh.Points()[el.V[a]] + mesh.Points()[el.V[b]]));
+        sharedPoints.push_back(x);
         sharedOwner.push_back(static_cast<std::uint32_t>(i));
       }
       return SampleRef{ true, it->second };
     };
+    // The leaf edge a point lies on, or -1.
+    auto edgeOf = [&](const Vec3& x) {
+      for (int k = 0; k < 3; ++k)
+      {
+        bool inside = false;
+        if (EdgeDistance(x, corners[k], corners[(k + 1) % 3], inside, 0.0) < tolerance)
+        {
+          return k;
+        }
+      }
+      return -1;
+    };
+    std::vector<int> edge(w.Mesh.Points.size(), -1);
     std::map<std::uint64_t, std::uint32_t> localMid;
     w.VertexSamples.resize(w.Mesh.Points.size());
     for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
     {
-      if (v < 3)
+      const Vec3& x = w.Mesh.Points[v];
+      edge[v] = v < 3 ? 3 : edgeOf(x); // corners are on two edges: 3 marks them
+      if (edge[v] >= 0)
       {
-        w.VertexSamples[v] = shared(v, v);
+        w.VertexSamples[v] = shared(x);
       }
       else
       {
         w.VertexSamples[v] = { false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
-        w.LocalPoints.push_back(w.Mesh.Points[v]);
+        w.LocalPoints.push_back(x);
       }
     }
     for (const auto& t : w.Mesh.Triangles)
@@ -500,9 +538,10 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       {
         const std::uint32_t a = t[k], b = t[(k + 1) % 3];
         r[2 * k] = w.VertexSamples[a];
-        if (a < 3 && b < 3)
+        const Vec3 mid = 0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]);
+        if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
         {
-          r[2 * k + 1] = shared(a, b);
+          r[2 * k + 1] = shared(mid); // a piece of the leaf's boundary
         }
         else
         {
@@ -510,7 +549,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
           if (it == localMid.end())
           {
             it = localMid.emplace(EdgeKey(a, b), static_cast<std::uint32_t>(w.LocalPoints.size())).first;
-            w.LocalPoints.push_back(0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]));
+            w.LocalPoints.push_back(mid);
           }
           r[2 * k + 1] = { false, it->second };
         }
