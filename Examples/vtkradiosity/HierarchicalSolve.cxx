@@ -1,5 +1,7 @@
 #include "SolveCommon.h"
 
+#include "vtkDiscontinuityMeshFilter.h"
+
 #include "Bench.h"
 #include "ExrWriter.h"
 #include "InterpolantSolution.h"
@@ -46,7 +48,8 @@
 namespace solve
 {
 /// --method hierarchical: Hardt & Teller's hierarchical radiosity with
-/// discontinuity meshing (SPEC), on the core classes.
+/// discontinuity meshing (SPEC), through vtkRadiosityFilter and
+/// vtkDiscontinuityMeshFilter.
 int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
   const std::vector<RGB>& reference, const std::string& referenceKind, vtkDataObject* input,
   double loadSeconds, Clock::time_point start)
@@ -55,59 +58,37 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   {
     throw BadInput("--link-tolerance must be positive");
   }
-  std::string error;
-  std::vector<std::string> warnings;
-  Scene scene;
-  if (!vtkRadiositySceneConverter::ToScene(input, scene, error, warnings))
+  // The VTK pipeline: the radiosity filter (hierarchical), then the
+  // discontinuity mesh filter, which finds the solution on its input.
+  vtkNew<vtkRadiosityFilter> filter;
+  filter->SetInputData(input);
+  filter->SetMethodToHierarchical();
+  filter->SetTolerance(args.Tolerance);
+  filter->SetMaxIterations(args.MaxIterations);
+  filter->SetMaxTime(args.MaxTime);
+  filter->SetNumberOfThreads(args.Threads);
+  filter->SetLinkTolerance(args.LinkTolerance);
+  filter->SetMinElementSize(args.MinElementSize);
+  filter->SetMaxRefinementRounds(args.MaxRefinementRounds);
+  filter->SetErrorReference(reference.empty() ? std::vector<Probe>() : probes, reference);
+  filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
+  cli::ProgressBar bar;
+  filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
+  filter->Update();
+  filter->GlobalWarningDisplayOn();
+  if (!filter->GetLastError().empty())
   {
-    throw BadInput(error);
+    throw BadInput(filter->GetLastError());
   }
-  try
-  {
-    ValidateScene(scene);
-  }
-  catch (const SceneError& e)
-  {
-    throw BadInput(e.what());
-  }
-  const SceneCleanupReport cleanup = DropDegenerateTriangles(scene);
-  if (cleanup.DegenerateTrianglesDropped > 0)
-  {
-    warnings.push_back("dropped " + std::to_string(cleanup.DegenerateTrianglesDropped) +
-      " degenerate (zero-area) triangles");
-  }
-  if (scene.Triangles.empty())
-  {
-    throw BadInput("the scene has no triangle of non-zero area");
-  }
-  if (!scene.HasEmitters())
-  {
-    warnings.push_back("the scene has no emitter: the solution is zero");
-  }
+  const std::vector<std::string>& warnings = filter->GetWarnings();
   for (const auto& w : warnings)
   {
     std::cerr << "warning: " << w << "\n";
   }
-
-  HierarchicalOptions options;
-  options.Tolerance = args.Tolerance;
-  options.MaxIterations = args.MaxIterations;
-  options.MaxTimeSeconds = args.MaxTime;
-  options.Threads = args.Threads;
-  options.RelativeLinkTolerance = args.LinkTolerance;
-  options.MinElementSize = args.MinElementSize;
-  options.MaxRefinementRounds = args.MaxRefinementRounds;
-  if (!reference.empty())
-  {
-    options.ErrorProbes = probes;
-    options.ErrorReference = reference;
-  }
-  const auto preprocessStart = Clock::now();
-  HierarchicalRadiosity solver(scene, options);
-  const double preprocessSeconds = Since(preprocessStart);
-  cli::ProgressBar bar;
-  const ProgressCallback progress = [&bar](const ProgressStatus& status) { return bar.Update(status); };
-  const SolverStatistics stats = solver.Solve(progress);
+  const SceneCleanupReport& cleanup = filter->GetCleanupReport();
+  const Scene& scene = filter->GetScene();
+  const SolverStatistics& stats = filter->GetStatistics();
+  const double preprocessSeconds = filter->GetPreprocessSeconds();
   ProgressStatus done;
   done.Phase = "solved";
   done.Iteration = stats.Iterations;
@@ -115,22 +96,32 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   done.Fraction = 1.0;
   bar.Update(done);
 
-  const bool meshing = !args.NoDiscontinuityMeshing && stats.Stop != StopReason::Aborted;
-  DiscontinuityMeshOptions meshOptions;
-  meshOptions.MaxPerLeaf = args.DiscontinuitiesPerLeaf;
-  meshOptions.MinWeight = args.MinDiscontinuityWeight;
-  meshOptions.Threads = args.Threads;
-  DiscontinuityMesh mesh;
+  const bool meshing = !args.NoDiscontinuityMeshing && stats.Stop != StopReason::Aborted &&
+    filter->GetHierarchicalSolution() != nullptr;
+  vtkNew<vtkDiscontinuityMeshFilter> meshFilter;
+  meshFilter->SetInputConnection(filter->GetOutputPort());
+  meshFilter->SetMaxDiscontinuitiesPerLeaf(args.DiscontinuitiesPerLeaf);
+  meshFilter->SetMinDiscontinuityWeight(args.MinDiscontinuityWeight);
+  meshFilter->SetNumberOfThreads(args.Threads);
   if (meshing)
   {
-    mesh = BuildDiscontinuityMesh(solver, meshOptions, progress);
+    meshFilter->Update();
+    if (!meshFilter->GetLastError().empty())
+    {
+      throw BadInput(meshFilter->GetLastError());
+    }
   }
   bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
-
-  const SolutionMesh leaves = ExtractSolution(solver.Mesh());
-  vtkSmartPointer<vtkPolyData> solved =
-    meshing ? MeshPolyData(mesh, scene) : vtkRadiositySceneConverter::FromSolution(leaves, scene);
-  solved->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(stats.History));
+  const DiscontinuityMesh& mesh = meshFilter->GetMesh();
+  const SolutionMesh& leaves = *filter->GetSolution();
+  vtkPolyData* solved = meshing ? meshFilter->GetOutput() : filter->GetOutput();
+  if (!filter->GetHierarchicalSolution())
+  {
+    throw BadInput("the hierarchical solve produced no solution");
+  }
+  const HierarchicalRadiosity& solver = *filter->GetHierarchicalSolution();
+  const HierarchicalOptions& options = solver.Options();
+  std::string error;
 
   nlohmann::json phases;
   phases["load_s"] = loadSeconds;
@@ -216,9 +207,10 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       { "max_refinement_rounds", options.MaxRefinementRounds },
       { "max_blockers_per_link", options.MaxBlockersPerLink },
       { "discontinuity_meshing", meshing },
-      { "discontinuities", meshOptions.Discontinuities },
-      { "discontinuities_per_leaf", meshOptions.MaxPerLeaf },
-      { "min_discontinuity_weight", meshOptions.MinWeight } };
+      { "discontinuities", meshFilter->GetDiscontinuities() },
+      { "discontinuities_per_leaf", meshFilter->GetMaxDiscontinuitiesPerLeaf() },
+      { "min_discontinuity_weight", meshFilter->GetMinDiscontinuityWeight() },
+      { "conforming_boundaries", meshFilter->GetConformingBoundaries() } };
     std::size_t emitters = 0;
     for (const auto& m : scene.Materials)
     {

@@ -75,7 +75,6 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const Soluti
 void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
   const std::string& title);
 nlohmann::json Finite(double v);
-vtkSmartPointer<vtkPolyData> MeshPolyData(const DiscontinuityMesh& mesh, const Scene& scene);
 
 /// `solve --method hierarchical` (called by the solve command once the
 /// probes, the reference and the scene are read and checked).
