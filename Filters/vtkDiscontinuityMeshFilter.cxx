@@ -17,6 +17,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRadiosityFilter.h"
+#include "vtkRadiositySceneConverter.h"
 #include "vtkVersion.h"
 
 #include "Radiosity/HierarchicalRadiosity.h"
@@ -32,11 +33,7 @@ namespace
 {
 vtkSmartPointer<vtkDoubleArray> DoubleArray(const char* name, int components, vtkIdType tuples)
 {
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(components);
-  a->SetNumberOfTuples(tuples);
-  return a;
+  return vtkRadiositySceneConverter::NewDoubleArray(name, components, tuples);
 }
 
 void SetColour(vtkDoubleArray* a, vtkIdType i, const radiosity::RGB& c)

@@ -12,6 +12,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRadiosityFilter.h"
+#include "vtkRadiositySceneConverter.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "Radiosity/MeshlessRadiosity.h"
@@ -25,11 +26,7 @@ namespace
 {
 vtkSmartPointer<vtkDoubleArray> Named(const char* name, int components, vtkIdType tuples)
 {
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(components);
-  a->SetNumberOfTuples(tuples);
-  return a;
+  return vtkRadiositySceneConverter::NewDoubleArray(name, components, tuples);
 }
 }
 

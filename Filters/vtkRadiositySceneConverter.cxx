@@ -279,6 +279,16 @@ bool vtkRadiositySceneConverter::ToScene(vtkDataObject* input, radiosity::Scene&
   return true;
 }
 
+vtkSmartPointer<vtkDoubleArray> vtkRadiositySceneConverter::NewDoubleArray(
+  const char* name, int components, vtkIdType tuples)
+{
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
+  return a;
+}
+
 namespace
 {
 /// A one-component array of `n` tuples named `name`.
@@ -293,11 +303,7 @@ vtkSmartPointer<ArrayT> NamedArray(const char* name, vtkIdType n)
 
 vtkSmartPointer<vtkDoubleArray> ColourArray(const char* name, vtkIdType n)
 {
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(3);
-  a->SetNumberOfTuples(n);
-  return a;
+  return vtkRadiositySceneConverter::NewDoubleArray(name, 3, n);
 }
 
 void SetColour(vtkDoubleArray* a, vtkIdType i, const RGB& c)

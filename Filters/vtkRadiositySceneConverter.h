@@ -51,6 +51,10 @@ public:
   static vtkSmartPointer<vtkPolyData> FromSolution(
     const radiosity::SolutionMesh& solution, const radiosity::Scene& scene);
 
+  /// A double array named `name` with `components` components and `tuples` tuples.
+  static vtkSmartPointer<vtkDoubleArray> NewDoubleArray(
+    const char* name, int components, vtkIdType tuples);
+
   /// `ConvergenceHistory`: one tuple per row, one named component per SPEC column.
   static vtkSmartPointer<vtkDoubleArray> FromHistory(const radiosity::ConvergenceHistory& history);
 

@@ -243,10 +243,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
     {
       report["discontinuity_mesh"] = nullptr;
     }
-    report["time"] = phases;
-    report["time"]["total_s"] = Since(start);
-    report["peak_memory_bytes"] = PeakMemoryBytes();
-    report["convergence_history"] = cli::HistoryJson(stats.History);
+    ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {
       report["error"] = nullptr; // no reference known
@@ -254,10 +251,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
     else
     {
       const ConvergenceRow& last = stats.History.Rows.back();
-      nlohmann::json e;
-      e["reference"] = referenceKind;
-      e["probes"] = probes.size();
-      e["probes_on_a_surface"] = stats.ErrorProbesTracked;
+      nlohmann::json e = ErrorHead(referenceKind, probes.size(), stats.ErrorProbesTracked);
       // The representation the user sees: the interpolants with meshing
       // (probes on the mesh), the constant leaves without.
       const ErrorFigures seen = meshing

@@ -193,4 +193,21 @@ nlohmann::json Finite(double v)
 /// the interpolants' means, point values the accurate samples) and the cell
 /// array QuadraticInterpolant (18 components, channel-major: 6c + k is
 /// coefficient k of channel c, in the triangle's point order).
+void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,
+  Clock::time_point start, const SolverStatistics& stats)
+{
+  report["time"] = phases;
+  report["time"]["total_s"] = Since(start);
+  report["peak_memory_bytes"] = PeakMemoryBytes();
+  report["convergence_history"] = cli::HistoryJson(stats.History);
+}
+
+nlohmann::json ErrorHead(const std::string& referenceKind, std::size_t probes, std::size_t onSurface)
+{
+  nlohmann::json e;
+  e["reference"] = referenceKind;
+  e["probes"] = probes;
+  e["probes_on_a_surface"] = onSurface;
+  return e;
+}
 } // namespace solve

@@ -12,6 +12,7 @@
 #include "Radiosity/ProbeEvaluator.h"
 #include "Radiosity/Scene.h"
 #include "Radiosity/SolutionMesh.h"
+#include "Radiosity/SolverTypes.h"
 
 #include <nlohmann/json.hpp>
 
@@ -75,6 +76,12 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const Soluti
 void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
   const std::string& title);
 nlohmann::json Finite(double v);
+/// The report's run figures every method shares: time per phase and in all,
+/// peak memory, the convergence history.
+void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,
+  Clock::time_point start, const SolverStatistics& stats);
+/// The head of the report's error section: the reference and the probes.
+nlohmann::json ErrorHead(const std::string& referenceKind, std::size_t probes, std::size_t onSurface);
 
 /// `solve --method hierarchical` (called by the solve command once the
 /// probes, the reference and the scene are read and checked).

@@ -300,10 +300,7 @@ int RunSolve(const SolveArguments& args)
       phases["direct_light_s"] = t.DirectSeconds;
       phases["bounces_s"] = t.BounceSeconds;
     }
-    report["time"] = phases;
-    report["time"]["total_s"] = Since(start);
-    report["peak_memory_bytes"] = PeakMemoryBytes();
-    report["convergence_history"] = cli::HistoryJson(stats.History);
+    ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {
       report["error"] = nullptr; // no reference known
@@ -311,10 +308,7 @@ int RunSolve(const SolveArguments& args)
     else
     {
       const ConvergenceRow& last = stats.History.Rows.back();
-      nlohmann::json e;
-      e["reference"] = referenceKind;
-      e["probes"] = probes.size();
-      e["probes_on_a_surface"] = stats.ErrorProbesTracked;
+      nlohmann::json e = ErrorHead(referenceKind, probes.size(), stats.ErrorProbesTracked);
       e["rms_relative_error"] = std::isfinite(last.RmsError) ? nlohmann::json(last.RmsError) : nlohmann::json();
       e["max_relative_error"] = std::isfinite(last.MaxRelError) ? nlohmann::json(last.MaxRelError) : nlohmann::json();
       if (!probeValues.empty())
