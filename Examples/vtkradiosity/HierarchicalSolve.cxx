@@ -63,38 +63,16 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   vtkNew<vtkRadiosityFilter> filter;
   filter->SetInputData(input);
   filter->SetMethodToHierarchical();
-  filter->SetTolerance(args.Tolerance);
-  filter->SetMaxIterations(args.MaxIterations);
-  filter->SetMaxTime(args.MaxTime);
-  filter->SetNumberOfThreads(args.Threads);
   filter->SetLinkTolerance(args.LinkTolerance);
   filter->SetMinElementSize(args.MinElementSize);
   filter->SetMaxRefinementRounds(args.MaxRefinementRounds);
-  filter->SetErrorReference(reference.empty() ? std::vector<Probe>() : probes, reference);
-  filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
   cli::ProgressBar bar;
-  filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
-  filter->Update();
-  filter->GlobalWarningDisplayOn();
-  if (!filter->GetLastError().empty())
-  {
-    throw BadInput(filter->GetLastError());
-  }
+  RunRadiosityFilter(filter, args, probes, reference, bar);
   const std::vector<std::string>& warnings = filter->GetWarnings();
-  for (const auto& w : warnings)
-  {
-    std::cerr << "warning: " << w << "\n";
-  }
   const SceneCleanupReport& cleanup = filter->GetCleanupReport();
   const Scene& scene = filter->GetScene();
   const SolverStatistics& stats = filter->GetStatistics();
   const double preprocessSeconds = filter->GetPreprocessSeconds();
-  ProgressStatus done;
-  done.Phase = "solved";
-  done.Iteration = stats.Iterations;
-  done.Residual = stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0;
-  done.Fraction = 1.0;
-  bar.Update(done);
 
   const bool meshing = !args.NoDiscontinuityMeshing && stats.Stop != StopReason::Aborted &&
     filter->GetHierarchicalSolution() != nullptr;

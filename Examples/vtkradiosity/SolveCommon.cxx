@@ -193,6 +193,35 @@ nlohmann::json Finite(double v)
 /// the interpolants' means, point values the accurate samples) and the cell
 /// array QuadraticInterpolant (18 components, channel-major: 6c + k is
 /// coefficient k of channel c, in the triangle's point order).
+void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
+  const std::vector<Probe>& probes, const std::vector<RGB>& reference, cli::ProgressBar& bar)
+{
+  filter->SetTolerance(args.Tolerance);
+  filter->SetMaxIterations(args.MaxIterations);
+  filter->SetMaxTime(args.MaxTime);
+  filter->SetNumberOfThreads(args.Threads);
+  filter->SetErrorReference(reference.empty() ? std::vector<Probe>() : probes, reference);
+  filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
+  filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
+  filter->Update();
+  filter->GlobalWarningDisplayOn();
+  if (!filter->GetLastError().empty())
+  {
+    throw BadInput(filter->GetLastError());
+  }
+  for (const auto& w : filter->GetWarnings())
+  {
+    std::cerr << "warning: " << w << "\n";
+  }
+  const SolverStatistics& stats = filter->GetStatistics();
+  ProgressStatus done;
+  done.Phase = "solved";
+  done.Iteration = stats.Iterations;
+  done.Residual = stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0;
+  done.Fraction = 1.0;
+  bar.Update(done);
+}
+
 void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,
   Clock::time_point start, const SolverStatistics& stats)
 {

@@ -3,6 +3,8 @@
 #ifndef vtkradiosity_SolveCommon_h
 #define vtkradiosity_SolveCommon_h
 
+#include "ProgressBar.h"
+
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
@@ -22,6 +24,7 @@
 #include <vector>
 
 class vtkDataObject;
+class vtkRadiosityFilter;
 
 namespace solve
 {
@@ -76,6 +79,11 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const Soluti
 void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
   const std::string& title);
 nlohmann::json Finite(double v);
+/// Sets the settings every method shares (tolerance, limits, threads, the
+/// error reference), runs the filter with the progress bar, refuses bad input
+/// (BadInput) and prints the warnings; the caller sets the method's own.
+void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
+  const std::vector<Probe>& probes, const std::vector<RGB>& reference, cli::ProgressBar& bar);
 /// The report's run figures every method shares: time per phase and in all,
 /// peak memory, the convergence history.
 void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,

@@ -173,34 +173,12 @@ int RunSolve(const SolveArguments& args)
   filter->SetPointLevels(args.PointLevels);
   filter->SetGatherRays(args.GatherRays);
   filter->SetVariationThreshold(args.VariationThreshold);
-  filter->SetTolerance(args.Tolerance);
-  filter->SetMaxIterations(args.MaxIterations);
-  filter->SetMaxTime(args.MaxTime);
-  filter->SetNumberOfThreads(args.Threads);
   filter->SetOvershooting(!args.NoOvershooting);
   filter->SetInitialElementSize(args.ElementSize);
   filter->SetShooterElementSize(args.ShooterSize);
-  filter->SetErrorReference(reference.empty() ? std::vector<Probe>() : probes, reference);
-  filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
   cli::ProgressBar bar;
-  filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
-  filter->Update();
-  filter->GlobalWarningDisplayOn();
-  if (!filter->GetLastError().empty())
-  {
-    throw BadInput(filter->GetLastError());
-  }
-  for (const auto& w : filter->GetWarnings())
-  {
-    std::cerr << "warning: " << w << "\n";
-  }
+  RunRadiosityFilter(filter, args, probes, reference, bar);
   const SolverStatistics& stats = filter->GetStatistics();
-  ProgressStatus done;
-  done.Phase = "solved";
-  done.Iteration = stats.Iterations;
-  done.Residual = stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0;
-  done.Fraction = 1.0;
-  bar.Update(done);
   bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
 
   vtkPolyData* solved = filter->GetOutput();
