@@ -159,19 +159,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       }
     }
   }
-  if (!args.ProbeOutput.empty())
-  {
-    Check(cli::WriteProbeValues(args.ProbeOutput, probes, probeValues, error), error);
-  }
-  if (!args.HistoryCsv.empty())
-  {
-    Check(cli::WriteFileAtomically(args.HistoryCsv, cli::HistoryCsv(stats.History), error), error);
-  }
-  if (!args.HistoryPng.empty())
-  {
-    WriteHistoryPlot(stats.History, args.HistoryPng,
-      "Convergence: " + args.Scene + ", hierarchical radiosity");
-  }
+  WriteProbesAndHistory(args, probes, probeValues, stats.History, ", hierarchical radiosity");
 
   if (!args.Report.empty())
   {

@@ -222,6 +222,24 @@ void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
   bar.Update(done);
 }
 
+void WriteProbesAndHistory(const SolveArguments& args, const std::vector<Probe>& probes,
+  const std::vector<RGB>& values, const ConvergenceHistory& history, const std::string& method)
+{
+  std::string error;
+  if (!args.ProbeOutput.empty())
+  {
+    Check(cli::WriteProbeValues(args.ProbeOutput, probes, values, error), error);
+  }
+  if (!args.HistoryCsv.empty())
+  {
+    Check(cli::WriteFileAtomically(args.HistoryCsv, cli::HistoryCsv(history), error), error);
+  }
+  if (!args.HistoryPng.empty())
+  {
+    WriteHistoryPlot(history, args.HistoryPng, "Convergence: " + args.Scene + method);
+  }
+}
+
 void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,
   Clock::time_point start, const SolverStatistics& stats)
 {

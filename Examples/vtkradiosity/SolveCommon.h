@@ -84,6 +84,9 @@ nlohmann::json Finite(double v);
 /// (BadInput) and prints the warnings; the caller sets the method's own.
 void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
   const std::vector<Probe>& probes, const std::vector<RGB>& reference, cli::ProgressBar& bar);
+/// --probe-output, --history and --history-plot (`method` ends the plot title).
+void WriteProbesAndHistory(const SolveArguments& args, const std::vector<Probe>& probes,
+  const std::vector<RGB>& values, const ConvergenceHistory& history, const std::string& method);
 /// The report's run figures every method shares: time per phase and in all,
 /// peak memory, the convergence history.
 void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,

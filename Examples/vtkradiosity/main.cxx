@@ -209,19 +209,8 @@ int RunSolve(const SolveArguments& args)
     probeValues = evaluator.Evaluate(probes);
     gathered = evaluator.GatheredCount();
   }
-  if (!args.ProbeOutput.empty())
-  {
-    Check(cli::WriteProbeValues(args.ProbeOutput, probes, probeValues, error), error);
-  }
-  if (!args.HistoryCsv.empty())
-  {
-    Check(cli::WriteFileAtomically(args.HistoryCsv, cli::HistoryCsv(stats.History), error), error);
-  }
-  if (!args.HistoryPng.empty())
-  {
-    WriteHistoryPlot(stats.History, args.HistoryPng,
-      "Convergence: " + args.Scene + (meshless ? ", meshless radiosity" : ", progressive refinement"));
-  }
+  WriteProbesAndHistory(args, probes, probeValues, stats.History,
+    meshless ? ", meshless radiosity" : ", progressive refinement");
 
   if (!args.Report.empty())
   {
