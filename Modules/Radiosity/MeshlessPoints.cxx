@@ -181,12 +181,27 @@ PointHierarchy::PointHierarchy(
           // Inside geometry: the normal ray meets the back of a surface.
           double hit = 0, hu = 0, hv = 0;
           unsigned other = 0;
-          if (rays->Intersect(x + rays->Offset() * n, n, hit, other, hu, hv) &&
-            glm::dot(n, scene.Normal(other)) > 0)
+          const Vec3 origin = x + rays->Offset() * n;
+          if (rays->Intersect(origin, n, hit, other, hu, hv) && glm::dot(n, scene.Normal(other)) > 0)
           {
-            ++this->Inside;
-            ++failures;
-            continue;
+            // A double polygon (two coincident faces back to back, a
+            // two-sided blocker) shows its back face or its front face first
+            // at random: the point is inside only when no face met at that
+            // same distance faces it.
+            std::vector<std::uint32_t> there;
+            const Vec3 beyond = origin + (hit + 2.0 * rays->Offset()) * n;
+            rays->CollectOccluders(&origin, &beyond, 1, there);
+            bool facing = false;
+            for (std::uint32_t f : there)
+            {
+              facing = facing || glm::dot(n, scene.Normal(f)) < 0;
+            }
+            if (!facing)
+            {
+              ++this->Inside;
+              ++failures;
+              continue;
+            }
           }
         }
         failures = 0;
