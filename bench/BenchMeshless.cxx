@@ -10,6 +10,7 @@
 #include "Radiosity/MeshlessRadiosity.h"
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
+#include "Radiosity/StandardScenes.h"
 #include "Radiosity/SystemInfo.h"
 
 #include <cstdio>
@@ -25,52 +26,6 @@ using namespace radiosity;
 
 namespace
 {
-struct StandardScene
-{
-  std::string Name;
-  std::function<Scene()> Make;
-  std::function<std::vector<Probe>(const Scene&)> Probes;
-};
-
-std::vector<Probe> CentroidSample(const Scene& scene)
-{
-  std::vector<Probe> probes;
-  const std::size_t stride = std::max<std::size_t>(1, scene.Triangles.size() / 40);
-  for (std::size_t t = 0; t < scene.Triangles.size(); t += stride)
-  {
-    probes.push_back(Probe{ scene.Centroid(t), scene.Normal(t) });
-  }
-  return probes;
-}
-
-std::vector<StandardScene> Scenes()
-{
-  return {
-    { "cornell", [] { return MakeCornellBox(); }, CentroidSample },
-    { "shadow", [] { return MakeShadowScene(4, 10.0); },
-      [](const Scene&) {
-        std::vector<Probe> p;
-        for (int i = 0; i <= 30; ++i)
-        {
-          p.push_back(Probe{ Vec3(-0.6 + 0.05 * i, 0.03, 0.0), Vec3(0, 0, 1) });
-        }
-        return p;
-      } },
-    { "contact", [] { return MakeContactScene(4, 0.0, 10.0); },
-      [](const Scene&) {
-        std::vector<Probe> p;
-        for (double d : { 1e-3, 1e-2, 0.05, 0.1, 0.3, 1.0 })
-        {
-          p.push_back(Probe{ Vec3(d, 0.5, 0.0), Vec3(0, 0, 1) });
-        }
-        return p;
-      } },
-    { "sphere", [] { return MakeSphereInterior(1.0, 3, 0.9, RGB(10.0)); }, CentroidSample },
-    { "closed-room-0.99", [] { return MakeClosedCube(1.0, 2, 0.99, 1.0); }, CentroidSample },
-    { "closed-room-0.999", [] { return MakeClosedCube(1.0, 2, 0.999, 1.0); }, CentroidSample },
-  };
-}
-
 std::string Table1Row(const std::string& name, const Scene& scene, const MeshlessOptions& options,
   const MeshlessRadiosity& solver, const SolverStatistics& stats)
 {
@@ -147,7 +102,7 @@ int main(int argc, char* argv[])
   std::ofstream csv(dir + "/meshless-error-vs-time.csv");
   csv << "scene,levels,time_s,samples,gathered_to,bounces,rms_error,max_rel_error\n";
   const std::vector<int> levels = quick ? std::vector<int>{ 3 } : std::vector<int>{ 3, 4, 5 };
-  for (const StandardScene& standard : Scenes())
+  for (const StandardScene& standard : StandardScenes())
   {
     const Scene scene = standard.Make();
     const std::vector<Probe> probes = standard.Probes(scene);

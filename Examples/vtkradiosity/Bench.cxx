@@ -16,6 +16,7 @@
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/ProgressiveRadiosity.h"
 #include "Radiosity/SceneGenerators.h"
+#include "Radiosity/StandardScenes.h"
 #include "Radiosity/SystemInfo.h"
 
 #include <sys/stat.h>
@@ -36,65 +37,6 @@ namespace cli
 {
 namespace
 {
-struct StandardScene
-{
-  std::string Name;
-  std::function<Scene()> Make;
-  /// Sensor points; empty means a sample of triangle centroids.
-  std::function<std::vector<Probe>(const Scene&)> Probes;
-  bool FullOnly = false; ///< too slow for --quick
-  /// Hierarchical radiosity links every pair of input triangles first: the
-  /// sphere (1280 triangles, 1.6 million links) is left out of --quick, the
-  /// bunny (235k triangles, 2.8e10 initial links) out of every run.
-  bool HierarchicalInQuick = true;
-};
-
-std::vector<Probe> CentroidSample(const Scene& scene)
-{
-  std::vector<Probe> probes;
-  const std::size_t stride = std::max<std::size_t>(1, scene.Triangles.size() / 40);
-  for (std::size_t t = 0; t < scene.Triangles.size(); t += stride)
-  {
-    probes.push_back(Probe{ scene.Centroid(t), scene.Normal(t) });
-  }
-  return probes;
-}
-
-std::vector<StandardScene> StandardScenes()
-{
-  return {
-    { "cornell", [] { return MakeCornellBox(); }, CentroidSample },
-    { "shadow", [] { return MakeShadowScene(4, 10.0); },
-      [](const Scene&)
-      {
-        std::vector<Probe> p;
-        for (int i = 0; i <= 30; ++i)
-        {
-          p.push_back(Probe{ Vec3(-0.6 + 0.05 * i, 0.03, 0.0), Vec3(0, 0, 1) });
-        }
-        return p;
-      } },
-    { "contact", [] { return MakeContactScene(4, 0.0, 10.0); },
-      [](const Scene&)
-      {
-        std::vector<Probe> p;
-        for (double d : { 1e-3, 1e-2, 0.05, 0.1, 0.3, 1.0 })
-        {
-          p.push_back(Probe{ Vec3(d, 0.5, 0.0), Vec3(0, 0, 1) });
-        }
-        return p;
-      } },
-    { "sphere", [] { return MakeSphereInterior(1.0, 3, 0.9, RGB(10.0)); }, CentroidSample, false,
-      false },
-    { "closed-room-0.99", [] { return MakeClosedCube(1.0, 2, 0.99, 1.0); }, CentroidSample },
-    { "closed-room-0.999", [] { return MakeClosedCube(1.0, 2, 0.999, 1.0); }, CentroidSample },
-#ifdef RADIOSITY_BUNNY_JS
-    { "bunny-235k", [] { return MakeBunnyRoom(ReadNpmBunny(RADIOSITY_BUNNY_JS), 3); },
-      CentroidSample, true },
-#endif
-  };
-}
-
 struct Setting
 {
   std::string Name;
@@ -195,7 +137,12 @@ int RunBench(const std::string& outputDir, bool quick)
         "`hierarchical` is the solver's own constant leaves; `hierarchical+DM` is the same "
         "solution discontinuity-meshed (k = 10 per leaf, w_min = 0.05) with the probes evaluated "
         "from the quadratic interpolants, and its time is solve plus meshing.\n\n";
-  for (const StandardScene& standard : StandardScenes())
+  #ifdef RADIOSITY_BUNNY_JS
+  const std::string bunnyJs = RADIOSITY_BUNNY_JS;
+#else
+  const std::string bunnyJs;
+#endif
+  for (const StandardScene& standard : StandardScenes(bunnyJs))
   {
     if (quick && standard.FullOnly)
     {
