@@ -632,14 +632,9 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
       stats.Stop = StopReason::Converged;
       break;
     }
-    if (iteration >= this->Settings.MaxIterations)
+    if (ReachedLimit(iteration, this->Settings.MaxIterations, elapsed,
+          this->Settings.MaxTimeSeconds, stats.Stop))
     {
-      stats.Stop = StopReason::IterationLimit;
-      break;
-    }
-    if (this->Settings.MaxTimeSeconds > 0 && elapsed >= this->Settings.MaxTimeSeconds)
-    {
-      stats.Stop = StopReason::TimeLimit;
       break;
     }
     extrapolated = false;

@@ -637,14 +637,9 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       stats.Stop = StopReason::Converged;
       break;
     }
-    if (iteration >= this->Settings.MaxIterations)
+    if (ReachedLimit(iteration, this->Settings.MaxIterations, elapsed,
+          this->Settings.MaxTimeSeconds, stats.Stop))
     {
-      stats.Stop = StopReason::IterationLimit;
-      break;
-    }
-    if (this->Settings.MaxTimeSeconds > 0 && elapsed >= this->Settings.MaxTimeSeconds)
-    {
-      stats.Stop = StopReason::TimeLimit;
       break;
     }
     mesh[sel.Best].Unshot = -overshoot; // handed to the shooter's leaves after the shot

@@ -68,6 +68,24 @@ inline const char* ToString(StopReason r)
   return "unknown";
 }
 
+/// The iteration and time limits every iterative solver checks: true, with
+/// `stop` set, when one is reached (a zero time limit means none).
+inline bool ReachedLimit(
+  long long iteration, long long maxIterations, double elapsed, double maxSeconds, StopReason& stop)
+{
+  if (iteration >= maxIterations)
+  {
+    stop = StopReason::IterationLimit;
+    return true;
+  }
+  if (maxSeconds > 0 && elapsed >= maxSeconds)
+  {
+    stop = StopReason::TimeLimit;
+    return true;
+  }
+  return false;
+}
+
 struct SolverStatistics
 {
   StopReason Stop = StopReason::Converged;
