@@ -9,20 +9,18 @@
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLCellToVTKCellMap.h"
-#include "vtkOpenGLError.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkRadiosityCellArrays.h"
+#include "vtkRadiosityTexelBuffer.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <sstream>
@@ -39,7 +37,6 @@ const char* const BarycentricArray = "vtkQuadraticInterpolantST";
 // Floats per triangle in the texture buffer: (A, 2B, 2C, D, 2E, F,
 // Reflectance, Emission), each RGB; six RGBA texels.
 constexpr int FloatsPerTriangle = 24;
-constexpr int TexelsPerTriangle = FloatsPerTriangle / 4;
 constexpr int InterpolantComponents = 18;
 
 // "cell 12 is a vtkQuad (4 points)": the cell named by its VTK class.
@@ -51,43 +48,11 @@ std::string DescribeCell(vtkPolyData* input, vtkIdType cellId, vtkIdType numberO
      << numberOfPoints << (numberOfPoints == 1 ? " point" : " points") << ")";
   return os.str();
 }
-
-// Checks a material array that may be absent; false with `message` when it
-// is present but unusable.
-bool CheckMaterialArray(vtkPolyData* input, const char* name, std::string& message)
-{
-  vtkCellData* cd = input->GetCellData();
-  if (!cd->GetAbstractArray(name))
-  {
-    return true;
-  }
-  vtkDataArray* array = cd->GetArray(name);
-  std::ostringstream os;
-  if (!array)
-  {
-    os << "Cell array '" << name << "' is not numeric.";
-  }
-  else if (array->GetNumberOfComponents() != 3)
-  {
-    os << "Cell array '" << name << "' has " << array->GetNumberOfComponents()
-       << " components, 3 (RGB) expected.";
-  }
-  else if (array->GetNumberOfTuples() < input->GetNumberOfCells())
-  {
-    os << "Cell array '" << name << "' has " << array->GetNumberOfTuples() << " tuples for "
-       << input->GetNumberOfCells() << " cells.";
-  }
-  else
-  {
-    return true;
-  }
-  message = os.str();
-  return false;
-}
 }
 
 //------------------------------------------------------------------------------
 vtkQuadraticInterpolantMapper::vtkQuadraticInterpolantMapper()
+  : InterpolantTexels(new vtkRadiosityTexelBuffer)
 {
   // The colour is the radiance: never map scalars through a lookup table.
   this->ScalarVisibilityOff();
@@ -96,19 +61,7 @@ vtkQuadraticInterpolantMapper::vtkQuadraticInterpolantMapper()
 }
 
 //------------------------------------------------------------------------------
-vtkQuadraticInterpolantMapper::~vtkQuadraticInterpolantMapper()
-{
-  if (this->InterpolantTexture)
-  {
-    this->InterpolantTexture->Delete();
-    this->InterpolantTexture = nullptr;
-  }
-  if (this->InterpolantBuffer)
-  {
-    this->InterpolantBuffer->Delete();
-    this->InterpolantBuffer = nullptr;
-  }
-}
+vtkQuadraticInterpolantMapper::~vtkQuadraticInterpolantMapper() = default;
 
 //------------------------------------------------------------------------------
 bool vtkQuadraticInterpolantMapper::ValidateInput(vtkPolyData* input, std::string* message)
@@ -193,8 +146,8 @@ bool vtkQuadraticInterpolantMapper::ValidateInput(vtkPolyData* input, std::strin
     why = os.str();
     return false;
   }
-  return CheckMaterialArray(input, GetReflectanceArrayName(), why) &&
-    CheckMaterialArray(input, GetEmissionArrayName(), why);
+  return vtkRadiosityCellArrays::CheckOptional(input, GetReflectanceArrayName(), 3, why) &&
+    vtkRadiosityCellArrays::CheckOptional(input, GetEmissionArrayName(), 3, why);
 }
 
 //------------------------------------------------------------------------------
@@ -351,7 +304,7 @@ void vtkQuadraticInterpolantMapper::RenderPieceStart(vtkRenderer* ren, vtkActor*
   this->InterpolantTextureReady = this->UpdateInterpolantTexture(ren, actor);
   if (this->InterpolantTextureReady)
   {
-    this->InterpolantTexture->Activate();
+    this->InterpolantTexels->Activate();
   }
 }
 
@@ -373,7 +326,7 @@ void vtkQuadraticInterpolantMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor
   }
   if (this->InterpolantTextureReady)
   {
-    this->InterpolantTexture->Deactivate();
+    this->InterpolantTexels->Deactivate();
   }
   this->Superclass::RenderPieceFinish(ren, actor);
 }
@@ -382,69 +335,19 @@ void vtkQuadraticInterpolantMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor
 bool vtkQuadraticInterpolantMapper::UpdateInterpolantTexture(vtkRenderer* ren, vtkActor* actor)
 {
   const int representation = actor->GetProperty()->GetRepresentation();
-  if (this->InterpolantTexture && this->InterpolantUploadTime > this->TriangleTexelsTime &&
-    this->InterpolantUploadRepresentation == representation &&
-    this->InterpolantTexture->GetHandle() != 0)
+  if (this->InterpolantTexels->IsCurrent(this->TriangleTexelsTime, representation))
   {
     return true;
   }
-
-  // One texel block per OpenGL primitive: a triangle in the surface
-  // representation, an edge in wireframe, a corner in points. The map from
-  // OpenGL primitive to VTK cell is the superclass's, as for cell scalars.
-  vtkPolyData* poly = this->Triangles;
-  vtkCellArray* prims[4] = { poly->GetVerts(), poly->GetLines(), poly->GetPolys(),
-    poly->GetStrips() };
-  this->CellCellMap->Update(prims, representation, poly->GetPoints());
-  const size_t numberOfPrimitives = this->CellCellMap->GetSize();
-  const size_t numberOfTriangles = this->TriangleTexels.size() / FloatsPerTriangle;
-
-  GLint maxTexels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-  if (numberOfPrimitives == 0 ||
-    numberOfPrimitives * TexelsPerTriangle > static_cast<size_t>(maxTexels))
+  std::string error;
+  if (!this->InterpolantTexels->UploadPerPrimitive(
+        static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), this->CellCellMap,
+        this->Triangles, representation, this->TriangleTexels, FloatsPerTriangle,
+        "the quadratic interpolants", error))
   {
-    vtkErrorMacro(<< "Cannot draw " << numberOfPrimitives << " OpenGL primitives: their "
-                  << numberOfPrimitives * TexelsPerTriangle
-                  << " texels of coefficients exceed GL_MAX_TEXTURE_BUFFER_SIZE (" << maxTexels
-                  << ").");
+    vtkErrorMacro(<< error);
     return false;
   }
-
-  std::vector<float> texels(numberOfPrimitives * FloatsPerTriangle);
-  for (size_t i = 0; i < numberOfPrimitives; ++i)
-  {
-    const size_t cell = static_cast<size_t>(this->CellCellMap->GetValue(i));
-    if (cell >= numberOfTriangles)
-    {
-      vtkErrorMacro(<< "OpenGL primitive " << i << " maps to cell " << cell << " of "
-                    << numberOfTriangles << ".");
-      return false;
-    }
-    std::copy_n(this->TriangleTexels.data() + cell * FloatsPerTriangle, FloatsPerTriangle,
-      texels.data() + i * FloatsPerTriangle);
-  }
-
-  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  if (!this->InterpolantTexture)
-  {
-    this->InterpolantTexture = vtkTextureObject::New();
-    this->InterpolantBuffer = vtkOpenGLBufferObject::New();
-    this->InterpolantBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-  }
-  this->InterpolantTexture->SetContext(renWin);
-  if (!this->InterpolantBuffer->Upload(texels, vtkOpenGLBufferObject::TextureBuffer) ||
-    !this->InterpolantTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(numberOfPrimitives * TexelsPerTriangle), 4, VTK_FLOAT,
-      this->InterpolantBuffer))
-  {
-    vtkErrorMacro(<< "Cannot create the texture buffer of the interpolants ("
-                  << numberOfPrimitives * TexelsPerTriangle << " RGBA32F texels).");
-    return false;
-  }
-  vtkOpenGLCheckErrorMacro("failed after uploading the interpolants");
-  this->InterpolantUploadTime.Modified();
-  this->InterpolantUploadRepresentation = representation;
   return true;
 }
 
@@ -551,7 +454,7 @@ void vtkQuadraticInterpolantMapper::SetMapperShaderParameters(
   vtkShaderProgram* program = cellBO.Program;
   if (this->InterpolantTextureReady && program->IsUniformUsed("interpolantTexture"))
   {
-    program->SetUniformi("interpolantTexture", this->InterpolantTexture->GetTextureUnit());
+    program->SetUniformi("interpolantTexture", this->InterpolantTexels->GetTextureUnit());
   }
   if (program->IsUniformUsed("radianceScale"))
   {
@@ -591,15 +494,7 @@ vtkUnsignedCharArray* vtkQuadraticInterpolantMapper::MapScalars(double alpha, in
 //------------------------------------------------------------------------------
 void vtkQuadraticInterpolantMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
-  if (this->InterpolantTexture)
-  {
-    this->InterpolantTexture->ReleaseGraphicsResources(win);
-  }
-  if (this->InterpolantBuffer)
-  {
-    this->InterpolantBuffer->ReleaseGraphicsResources();
-  }
-  this->InterpolantUploadRepresentation = -1;
+  this->InterpolantTexels->ReleaseGraphicsResources(win);
   this->InterpolantTextureReady = false;
   this->Superclass::ReleaseGraphicsResources(win);
 }
@@ -621,11 +516,9 @@ void vtkQuadraticInterpolantMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Triangles (unshared-vertex copy): " << this->Triangles->GetNumberOfCells()
      << " triangles, " << this->Triangles->GetNumberOfPoints() << " points\n";
   os << indent << "TriangleTexels: " << this->TriangleTexels.size() << " floats\n";
-  os << indent << "InterpolantTexture: " << this->InterpolantTexture << "\n";
-  os << indent << "InterpolantBuffer: " << this->InterpolantBuffer << "\n";
+  os << indent << "InterpolantTexels:\n";
+  this->InterpolantTexels->PrintSelf(os, indent.GetNextIndent());
   os << indent << "InterpolantTextureReady: " << (this->InterpolantTextureReady ? "true" : "false")
-     << "\n";
-  os << indent << "InterpolantUploadRepresentation: " << this->InterpolantUploadRepresentation
      << "\n";
   os << indent << "WarnedNoReflectance: " << (this->WarnedNoReflectance ? "true" : "false") << "\n";
   os << indent << "WarnedNoEmission: " << (this->WarnedNoEmission ? "true" : "false") << "\n";

@@ -81,12 +81,12 @@
 #include "vtkNew.h"                   // For members
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include <memory> // For members
 #include <string> // For ValidateInput
 #include <vector> // For members
 
-class vtkOpenGLBufferObject;
 class vtkPolyData;
-class vtkTextureObject;
+class vtkRadiosityTexelBuffer;
 
 class RADIOSITYRENDERING_EXPORT vtkQuadraticInterpolantMapper : public vtkOpenGLPolyDataMapper
 {
@@ -212,10 +212,7 @@ protected:
   // GPU copy is laid out per OpenGL primitive.
   std::vector<float> TriangleTexels;
   vtkTimeStamp TriangleTexelsTime;
-  vtkTextureObject* InterpolantTexture = nullptr;
-  vtkOpenGLBufferObject* InterpolantBuffer = nullptr;
-  vtkTimeStamp InterpolantUploadTime;
-  int InterpolantUploadRepresentation = -1;
+  std::unique_ptr<vtkRadiosityTexelBuffer> InterpolantTexels;
   bool InterpolantTextureReady = false;
 
 private:

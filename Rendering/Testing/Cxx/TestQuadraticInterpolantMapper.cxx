@@ -9,6 +9,8 @@
 #include "vtkQuadraticInterpolantMapper.h"
 #include "vtkRadiosityView.h"
 
+#include "PixelTestSupport.h"
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -44,8 +46,8 @@
 
 namespace
 {
+using namespace PixelTestSupport;
 using RGB = std::array<double, 3>;
-using Vec3 = std::array<double, 3>;
 
 // One triangle of the scene: corners, the interpolant's coefficients
 // (A, 2B, 2C, D, 2E, F) per channel, and the materials.
@@ -229,28 +231,6 @@ void PlaceCamera(vtkCamera* camera)
   camera->SetClippingRange(0.5, 20.0);
 }
 
-// Ray through the centre of pixel (x, y) (display coordinates, origin at the
-// lower left): a point on it and its direction, in world coordinates.
-void PixelRay(vtkRenderer* ren, int x, int y, Vec3& origin, Vec3& direction)
-{
-  double p[2][4];
-  for (int k = 0; k < 2; ++k)
-  {
-    ren->SetDisplayPoint(x + 0.5, y + 0.5, k == 0 ? 0.0 : 1.0);
-    ren->DisplayToWorld();
-    ren->GetWorldPoint(p[k]);
-    for (int i = 0; i < 3; ++i)
-    {
-      p[k][i] /= p[k][3];
-    }
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    origin[i] = p[0][i];
-    direction[i] = p[1][i] - p[0][i];
-  }
-}
-
 // Moller-Trumbore: the ray parameter and (s,t) in the frame p0 + s e1 + t e2.
 bool Intersect(const Triangle& tri, const Vec3& o, const Vec3& d, double& h, double& s, double& t)
 {
@@ -272,27 +252,6 @@ bool Intersect(const Triangle& tri, const Vec3& o, const Vec3& d, double& h, dou
   t = vtkMath::Dot(d.data(), qv) / det;
   h = vtkMath::Dot(e2, qv) / det;
   return h > 0.0 && s >= 0.0 && t >= 0.0 && s + t <= 1.0;
-}
-
-// The 8-bit value the pipeline should show for radiance L: the mapper
-// writes L^(1/2.2), the tone mapping pass decodes it, applies its operator
-// and encodes the result with 1/2.2 again.
-double Displayed(double L, int toneMapping)
-{
-  L = std::max(L, 0.0);
-  const double toned = toneMapping == vtkToneMappingPass::Clamp ? std::min(L, 1.0) : L / (L + 1.0);
-  return 255.0 * std::pow(toned, 1.0 / 2.2);
-}
-
-vtkSmartPointer<vtkUnsignedCharArray> ReadPixels(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  return vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
 }
 
 // Compares every 3rd pixel whose centre sees a triangle well inside its edges

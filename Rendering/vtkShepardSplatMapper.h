@@ -1,0 +1,208 @@
+/**
+ * @class   vtkShepardSplatMapper
+ * @brief   Draws a meshless multilevel Shepard irradiance field per pixel by
+ *          splatting its basis functions (Lehtinen et al. 2007, section 6.2).
+ *
+ * Two inputs:
+ *
+ * - port 0, the surface to draw: a vtkPolyData of polygons (vertices, lines
+ *   and strips are refused with an error naming the cell) with the optional
+ *   cell arrays of SPEC.md `Reflectance` (3; 0.5 grey without), `Emission`
+ *   (3, W/m^2; none without) and `ObjectId` (1; the reconstruction group);
+ * - port 1 (SetFieldConnection), the field: the output of
+ *   vtkMeshlessFieldFilter, one point per basis function with the point
+ *   arrays `Level` (0 = coarsest), `Radius` (support radius r_j), `Normal`
+ *   (n_j), `Group` and `Coefficient` (RGB alpha_j, W/m^2). A missing or
+ *   malformed array is refused with an error naming it.
+ *
+ * Every pixel shows the radiance of the visible point x with normal n,
+ * L = (Emission + Reflectance * E(x, n)) / pi * Exposure, where E is the
+ * irradiance of eq. 9, the sum over levels of the level's normalised Shepard
+ * interpolation (eqs. 8, 12, 13):
+ *
+ *   E(x, n) = sum_l  sum_{j in l} w_j alpha_j / sum_{j in l} w_j,
+ *   w_j = K(|x - x_j| / r_j) max(0, n . n_j),  K(r) = 2r^3 - 3r^2 + 1,
+ *
+ * over the field points of the surface cell's group (`ObjectId`; all points
+ * when the surface has no such array), a level with no weight at x adding
+ * nothing. This is what vtkShepardFieldProbe evaluates on the CPU: the two
+ * agree to the float precision of the GPU.
+ *
+ * How it works (the paper's deferred shading, section 6.2), once per render:
+ *
+ * 1. G-buffer. The superclass draws the surface into float targets of the
+ *    viewport's size: model-coordinate position and group, the cell's normal
+ *    (Newell's, from its points: the field's normals are the cells'), and the
+ *    cell's reflectance and emission, read from a texture buffer at
+ *    gl_PrimitiveID as for cell scalars; and the depth.
+ * 2. Splats, level by level. Every basis function of the level is drawn as a
+ *    screen quad covering the projection of its support's bounding cube
+ *    (the whole viewport when the cube reaches behind the eye); the quads are
+ *    issued from a texture buffer of the level-sorted points (three texels a
+ *    point), with no vertex data. The fragment shader evaluates w_j at the
+ *    G-buffer's point and adds (w_j alpha_j, w_j) into a float target with
+ *    additive blending; a full-screen pass then adds the level's
+ *    sum(w alpha) / sum(w) into the irradiance target.
+ * 3. Composite. A full-screen pass writes L^(1/Gamma) and the G-buffer's
+ *    depth into the framebuffer the renderer draws into, so other actors
+ *    occlude and are occluded as usual.
+ *
+ * The output is meant for the float framebuffer of a vtkToneMappingPass
+ * (see vtkQuadraticInterpolantMapper for the Gamma convention). Lighting,
+ * colour, scalar colouring, textures and surface edges are ignored; the actor
+ * is drawn opaque. Hardware picking draws the surface as any polydata mapper.
+ *
+ * @code
+ * vtkNew<vtkMeshlessFieldFilter> field;
+ * field->SetInputConnection(radiosity->GetOutputPort()); // Method Meshless
+ * vtkNew<vtkShepardSplatMapper> mapper;
+ * mapper->SetInputConnection(surface->GetOutputPort());
+ * mapper->SetFieldConnection(field->GetOutputPort());
+ * @endcode
+ *
+ * @sa vtkMeshlessFieldFilter, vtkShepardFieldProbe, vtkToneMappingPass
+ */
+
+#ifndef vtkShepardSplatMapper_h
+#define vtkShepardSplatMapper_h
+
+#include "RadiosityRenderingModule.h" // For export macro
+#include "vtkOpenGLPolyDataMapper.h"
+
+#include <memory> // For members
+#include <string> // For ValidateSurface
+#include <vector> // For members
+
+class vtkAlgorithmOutput;
+class vtkPolyData;
+class vtkRadiosityTexelBuffer;
+
+class RADIOSITYRENDERING_EXPORT vtkShepardSplatMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkShepardSplatMapper* New();
+  vtkTypeMacro(vtkShepardSplatMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Scale applied to the radiance B / pi (default 1), clamped to [0, 1e12].
+   */
+  vtkSetClampMacro(Exposure, double, 0.0, 1e12);
+  vtkGetMacro(Exposure, double);
+  ///@}
+
+  ///@{
+  /**
+   * Gamma of the encoding of the fragment colour, L^(1/Gamma) (default 2.2,
+   * which vtkToneMappingPass decodes). Clamped to [0.1, 10].
+   */
+  vtkSetClampMacro(Gamma, double, 0.1, 10.0);
+  vtkGetMacro(Gamma, double);
+  ///@}
+
+  ///@{
+  /**
+   * The field (input port 1): vtkMeshlessFieldFilter's output.
+   */
+  void SetFieldConnection(vtkAlgorithmOutput* output);
+  void SetFieldData(vtkPolyData* field);
+  vtkPolyData* GetField();
+  ///@}
+
+  /**
+   * Whether `surface` can be drawn: polygons only, and `Reflectance`,
+   * `Emission` (3 components) and `ObjectId` (1), when present, numeric with a
+   * tuple per cell. Otherwise false with `message` naming the cell or array.
+   */
+  static bool ValidateSurface(vtkPolyData* surface, std::string* message);
+
+  /**
+   * Whether `field` is a Shepard field: the point arrays `Level`, `Radius`,
+   * `Group` (1 component), `Normal` and `Coefficient` (3), numeric with a
+   * tuple per point, levels in [0, 64) and radii finite and positive.
+   * Otherwise false with `message` naming the array.
+   */
+  static bool ValidateField(vtkPolyData* field, std::string* message);
+
+  /// Levels of the field at the last render (0 before).
+  int GetNumberOfLevels() const;
+
+  void ReleaseGraphicsResources(vtkWindow* win) override;
+
+protected:
+  vtkShepardSplatMapper();
+  ~vtkShepardSplatMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  /**
+   * The three passes of the class description; without a selector. Under
+   * hardware selection the superclass draws the surface's ids.
+   */
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * Checks the surface (an error, and nothing drawn, when ValidateSurface
+   * refuses it) and rebuilds its per-cell texels when it changed.
+   */
+  void UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* act) override;
+
+  ///@{
+  /// Draw the surface with its per-cell texels bound.
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+  ///@}
+
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderLight(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderTCoord(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetLightingShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  double Exposure = 1.0;
+  double Gamma = 2.2;
+
+private:
+  vtkShepardSplatMapper(const vtkShepardSplatMapper&) = delete;
+  void operator=(const vtkShepardSplatMapper&) = delete;
+
+  // Updates port 1 and rebuilds the level-sorted point texels when the field
+  // changed; false (with an error) when there is none or it is refused.
+  bool UpdateField();
+  // Passes 2 and 3; false (with an error) when a shader does not build.
+  bool Splat(vtkRenderer* ren, vtkActor* act);
+  bool Composite(vtkRenderer* ren);
+
+  // Per cell: (Reflectance, group), (Emission, 0), (normal, 0).
+  std::vector<float> CellTexels;
+  vtkTimeStamp CellTexelsTime;
+  vtkPolyData* CellTexelsSource = nullptr; // compared only
+  vtkMTimeType CellTexelsSourceTime = 0;
+  bool SurfaceValid = false;
+  bool DrawPiece = false;
+  bool CellTexelsReady = false;
+  std::string SurfaceError;
+  bool WarnedNoReflectance = false;
+
+  // Per point, sorted by level: (x_j, r_j), (n_j, group), (alpha_j, 0);
+  // LevelOffsets[l] is the first point of level l.
+  std::vector<float> PointTexels;
+  std::vector<size_t> LevelOffsets;
+  vtkTimeStamp PointTexelsTime;
+  vtkPolyData* PointTexelsSource = nullptr; // compared only
+  vtkMTimeType PointTexelsSourceTime = 0;
+  std::string FieldError;
+
+  std::unique_ptr<vtkRadiosityTexelBuffer> CellBuffer;
+  std::unique_ptr<vtkRadiosityTexelBuffer> PointBuffer;
+  struct GraphicsResources;
+  std::unique_ptr<GraphicsResources> Resources;
+};
+
+#endif
