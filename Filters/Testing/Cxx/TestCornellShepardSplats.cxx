@@ -1,0 +1,174 @@
+// The Cornell box solved by meshless radiosity (Lehtinen et al. 2007) and
+// drawn twice with the same camera and tone mapping: left, the Shepard field
+// splatted per pixel by vtkShepardSplatMapper on the box's own (coarse)
+// polygons; right, the same field probed by vtkShepardFieldProbe onto a
+// finely subdivided copy of the box and drawn with Gouraud interpolation of
+// the point Radiosity by vtkRadiosityView. The two halves must agree within
+// the image harness's threshold, and the window matches its baseline.
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCornellBoxSource.h"
+#include "vtkFloatingPointExceptions.h"
+#include "vtkImageData.h"
+#include "vtkImageDifference.h"
+#include "vtkLinearSubdivisionFilter.h"
+#include "vtkMeshlessFieldFilter.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiosityView.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkShepardFieldProbe.h"
+#include "vtkShepardSplatMapper.h"
+#include "vtkShrinkPolyData.h"
+#include "vtkToneMappingPass.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <iostream>
+
+namespace
+{
+// One half of the window as an RGB image.
+vtkSmartPointer<vtkImageData> Half(vtkUnsignedCharArray* rgba, int width, int height, int half)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        out[3 * (y * width + x) + c] = rgba->GetValue(4 * (y * 2 * width + x + half * width) + c);
+      }
+    }
+  }
+  return image;
+}
+}
+
+int TestCornellShepardSplats(int argc, char* argv[])
+{
+  vtkFloatingPointExceptions::Disable();
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkRadiosityFilter> radiosity;
+  radiosity->SetInputConnection(box->GetOutputPort());
+  radiosity->SetMethodToMeshless();
+  vtkNew<vtkMeshlessFieldFilter> field;
+  field->SetInputConnection(radiosity->GetOutputPort());
+  field->Update();
+  if (!radiosity->GetLastError().empty() || field->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    std::cerr << "meshless solve failed: " << radiosity->GetLastError() << "\n";
+    return EXIT_FAILURE;
+  }
+
+  // The probed mesh: every polygon with points of its own (so that no point
+  // is shared by differently oriented walls), triangulated, each triangle
+  // split into 4^5.
+  vtkNew<vtkShrinkPolyData> explode;
+  explode->SetShrinkFactor(1.0);
+  explode->SetInputConnection(box->GetOutputPort());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(explode->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> subdivide;
+  subdivide->SetNumberOfSubdivisions(5);
+  subdivide->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkShepardFieldProbe> probe;
+  probe->SetInputConnection(subdivide->GetOutputPort());
+  probe->SetSourceConnection(field->GetOutputPort());
+  probe->Update();
+  vtkPolyData* probed = vtkPolyData::SafeDownCast(probe->GetOutput());
+  if (!probe->GetLastError().empty() || !probed ||
+    !probed->GetPointData()->GetArray("Radiosity"))
+  {
+    std::cerr << "probe failed: " << probe->GetLastError() << "\n";
+    return EXIT_FAILURE;
+  }
+  std::cout << field->GetOutput()->GetNumberOfPoints() << " basis functions splatted on "
+            << box->GetOutput()->GetNumberOfCells() << " polygons; probed onto "
+            << probed->GetNumberOfCells() << " triangles\n";
+
+  double position[3], focal[3], up[3], angle;
+  vtkCornellBoxSource::GetCamera(position, focal, up, angle);
+  const int width = 400, height = 400;
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetOffScreenRendering(1);
+  window->SetSize(2 * width, height);
+
+  // Left: the splats, in a renderer set up as vtkRadiosityView's.
+  vtkNew<vtkShepardSplatMapper> splats;
+  splats->SetInputConnection(box->GetOutputPort());
+  splats->SetFieldConnection(field->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(splats);
+  vtkNew<vtkOpenGLRenderer> renderer;
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+  renderer->AddActor(actor);
+  vtkNew<vtkRenderStepsPass> steps;
+  vtkNew<vtkToneMappingPass> toneMapping;
+  toneMapping->SetDelegatePass(steps);
+  toneMapping->SetToneMappingType(vtkToneMappingPass::Reinhard);
+  renderer->SetPass(toneMapping);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(position);
+  camera->SetFocalPoint(focal);
+  camera->SetViewUp(up);
+  camera->SetViewAngle(angle);
+  window->AddRenderer(renderer);
+
+  // Right: the probed mesh through the plain (Gouraud) path.
+  vtkNew<vtkRadiosityView> view;
+  view->SetInputData(probed);
+  view->SetRenderWindow(window);
+  view->SetSize(2 * width, height);
+  view->SetCamera(position, focal, up, angle);
+  view->GetRenderer()->SetViewport(0.5, 0.0, 1.0, 1.0);
+  if (view->UsesInterpolantMapper() || !view->Render())
+  {
+    std::cerr << "the probed mesh was not drawn by the Gouraud path\n";
+    return EXIT_FAILURE;
+  }
+  renderer->ResetCameraClippingRange();
+  window->Render();
+
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(0, 0, 2 * width - 1, height - 1, 1, pixels);
+  vtkSmartPointer<vtkImageData> left = Half(pixels, width, height, 0);
+  vtkSmartPointer<vtkImageData> right = Half(pixels, width, height, 1);
+  double mean = 0.0, difference = 0.0;
+  const auto* l = static_cast<unsigned char*>(left->GetScalarPointer());
+  const auto* r = static_cast<unsigned char*>(right->GetScalarPointer());
+  for (int i = 0; i < 3 * width * height; ++i)
+  {
+    mean += l[i];
+    difference += std::abs(static_cast<double>(l[i]) - r[i]);
+  }
+  mean /= 3.0 * width * height;
+  difference /= 3.0 * width * height;
+  vtkNew<vtkImageDifference> compare;
+  compare->SetInputData(left);
+  compare->SetImageData(right);
+  compare->Update();
+  std::cout << "splats against the probed mesh: mean pixel difference " << difference
+            << " (splat mean " << mean << "), harness error " << compare->GetThresholdedError()
+            << "\n";
+  // 0.15: vtkRegressionTestImage's threshold.
+  if (mean < 20.0 || compare->GetThresholdedError() > 0.15)
+  {
+    std::cerr << "the splats are dark or do not agree with the probed mesh\n";
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
