@@ -1,6 +1,7 @@
 #include "vtkRadiosityView.h"
 #include "vtkQuadraticInterpolantMapper.h"
 #include "vtkRadiosityWindowPNG.h"
+#include "vtkShepardSplatMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -85,10 +86,16 @@ vtkRadiosityView::vtkRadiosityView()
   this->InterpolantActor->GetProperty()->LightingOff();
   this->InterpolantActor->VisibilityOff();
 
+  this->SplatMapper = vtkSmartPointer<vtkShepardSplatMapper>::New();
+  this->SplatActor = vtkSmartPointer<vtkActor>::New();
+  this->SplatActor->SetMapper(this->SplatMapper);
+  this->SplatActor->VisibilityOff();
+
   this->Renderer = vtkSmartPointer<vtkOpenGLRenderer>::New();
   this->Renderer->SetBackground(0.0, 0.0, 0.0);
   this->Renderer->AddActor(this->Actor);
   this->Renderer->AddActor(this->InterpolantActor);
+  this->Renderer->AddActor(this->SplatActor);
 
   // The standard render steps (camera, lights, opaque, translucent, overlay)
   // draw into the tone mapping pass's float framebuffer, which keeps HDR.
@@ -199,9 +206,32 @@ void vtkRadiosityView::SetRenderWindow(vtkRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
+void vtkRadiosityView::SetShepardField(vtkPolyData* field)
+{
+  if (this->ShepardField != field)
+  {
+    this->ShepardField = field;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkRadiosityView::GetShepardField()
+{
+  return this->ShepardField;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRadiosityView::UsesSplatMapper()
+{
+  return this->InterpolantRendering && this->ShepardField && this->ArrayName &&
+    strcmp(this->ArrayName, "Radiosity") == 0;
+}
+
+//------------------------------------------------------------------------------
 bool vtkRadiosityView::UsesInterpolantMapper()
 {
-  return this->InterpolantRendering && this->Input && this->ArrayName &&
+  return !this->UsesSplatMapper() && this->InterpolantRendering && this->Input && this->ArrayName &&
     strcmp(this->ArrayName, "Radiosity") == 0 &&
     this->Input->GetCellData()->GetAbstractArray(
       vtkQuadraticInterpolantMapper::GetInterpolantArrayName()) != nullptr;
@@ -228,6 +258,17 @@ bool vtkRadiosityView::CheckInput()
                                                     << this->Input->GetNumberOfPolys()
                                                     << " polygons).");
     return false;
+  }
+  if (this->UsesSplatMapper())
+  {
+    std::string message;
+    if (!vtkShepardSplatMapper::ValidateSurface(this->Input, &message) ||
+      !vtkShepardSplatMapper::ValidateField(this->ShepardField, &message))
+    {
+      vtkErrorMacro(<< message);
+      return false;
+    }
+    return true;
   }
   if (this->UsesInterpolantMapper())
   {
@@ -272,9 +313,18 @@ bool vtkRadiosityView::CheckInput()
 void vtkRadiosityView::UpdatePipeline()
 {
   this->ToneMappingPass->SetToneMappingType(this->ToneMappingType);
+  const bool splats = this->UsesSplatMapper();
   const bool interpolants = this->UsesInterpolantMapper();
+  this->SplatActor->SetVisibility(splats);
   this->InterpolantActor->SetVisibility(interpolants);
-  this->Actor->SetVisibility(!interpolants);
+  this->Actor->SetVisibility(!interpolants && !splats);
+  if (splats)
+  {
+    this->SplatMapper->SetInputData(this->Input);
+    this->SplatMapper->SetFieldData(this->ShepardField);
+    this->SplatMapper->SetExposure(this->Exposure);
+    return;
+  }
   if (interpolants)
   {
     this->InterpolantMapper->SetInputData(this->Input);
@@ -342,6 +392,8 @@ void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InterpolantRendering: " << (this->InterpolantRendering ? "On" : "Off") << "\n";
   os << indent << "UsesInterpolantMapper: " << (this->UsesInterpolantMapper() ? "true" : "false")
      << "\n";
+  os << indent << "ShepardField: " << this->ShepardField.GetPointer() << "\n";
+  os << indent << "UsesSplatMapper: " << (this->UsesSplatMapper() ? "true" : "false") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMappingType: " << this->ToneMappingType << "\n";
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
@@ -351,4 +403,5 @@ void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RenderWindow: " << this->RenderWindow.GetPointer() << "\n";
   os << indent << "ToneMappingPass: " << this->ToneMappingPass.GetPointer() << "\n";
   os << indent << "InterpolantMapper: " << this->InterpolantMapper.GetPointer() << "\n";
+  os << indent << "SplatMapper: " << this->SplatMapper.GetPointer() << "\n";
 }

@@ -19,6 +19,12 @@
  *   float vertex attribute (MapDataArrayToVertexAttribute) and a shader
  *   replacement writes it to the fragment colour.
  *
+ * - Splats: when a meshless Shepard field is given (SetShepardField, the
+ *   output of vtkMeshlessFieldFilter), the drawn array is `Radiosity` and
+ *   InterpolantRendering is on, a vtkShepardSplatMapper evaluates the field
+ *   per pixel on the input's polygons (Lehtinen et al. 2007, section 6.2).
+ *   It takes precedence over the interpolant path.
+ *
  * InterpolantRenderingOff forces the Gouraud path (for side-by-side
  * comparisons of the same solution); UsesInterpolantMapper tells which path
  * the next render takes.
@@ -50,6 +56,7 @@ class vtkActor;
 class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkQuadraticInterpolantMapper;
+class vtkShepardSplatMapper;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkToneMappingPass;
@@ -100,10 +107,26 @@ public:
   vtkBooleanMacro(InterpolantRendering, bool);
   ///@}
 
+  ///@{
+  /**
+   * A meshless multilevel Shepard field of the input's solution (the output
+   * of vtkMeshlessFieldFilter), drawn per pixel on the input's polygons by
+   * vtkShepardSplatMapper; nullptr (the default) for none.
+   */
+  void SetShepardField(vtkPolyData* field);
+  vtkPolyData* GetShepardField();
+  ///@}
+
+  /**
+   * Whether the next render splats the Shepard field: a field set,
+   * InterpolantRendering on and ArrayName "Radiosity".
+   */
+  bool UsesSplatMapper();
+
   /**
    * Whether the next render draws the interpolants per pixel: an input with
-   * the cell array `QuadraticInterpolant`, InterpolantRendering on and
-   * ArrayName "Radiosity".
+   * the cell array `QuadraticInterpolant`, InterpolantRendering on,
+   * ArrayName "Radiosity" and no Shepard field.
    */
   bool UsesInterpolantMapper();
 
@@ -208,6 +231,10 @@ protected:
   // Interpolant path: an actor of its own, free of those replacements.
   vtkSmartPointer<vtkQuadraticInterpolantMapper> InterpolantMapper;
   vtkSmartPointer<vtkActor> InterpolantActor;
+  // Splat path: the input's polygons with the Shepard field.
+  vtkSmartPointer<vtkPolyData> ShepardField;
+  vtkSmartPointer<vtkShepardSplatMapper> SplatMapper;
+  vtkSmartPointer<vtkActor> SplatActor;
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkRenderWindow> RenderWindow;
   vtkSmartPointer<vtkToneMappingPass> ToneMappingPass;

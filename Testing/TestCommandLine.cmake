@@ -189,7 +189,10 @@ expect_exit(2 "${PROGRAM}" solve shadow --method hierarchical --link-tolerance 0
 file(WRITE "${WORK}/contact_probes.csv" "x,y,z,nx,ny,nz\n0.05,0.5,0,0,0,1\n0.3,0.5,0,0,0,1\n1.0,0.5,0,0,0,1\n")
 expect_exit(0 "${PROGRAM}" solve contact --method meshless --point-levels 4
   --probes "${WORK}/contact_probes.csv" --reference analytic --probe-output "${WORK}/ml_values.csv"
-  --output "${WORK}/ml.vtp" --report "${WORK}/ml.json")
+  --output "${WORK}/ml.vtp" --report "${WORK}/ml.json" --image "${WORK}/ml.png")
+if (NOT EXISTS "${WORK}/ml.png")
+  message(FATAL_ERROR "meshless: no splatted image written")
+endif ()
 file(STRINGS "${WORK}/ml_values.csv" rows)
 list(LENGTH rows n)
 file(READ "${WORK}/ml.json" ml)

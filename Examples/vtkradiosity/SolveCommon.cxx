@@ -112,10 +112,11 @@ void WriteVtp(vtkPolyData* data, const std::string& file)
 }
 
 /// --image through vtkRadiosityView (which draws the quadratic interpolants
-/// per pixel when the polydata has them) and --exr by ray casting `radiance`
-/// from the same camera; --reference-exr path traces that view.
+/// per pixel when the polydata has them, and splats `shepardField` per pixel
+/// when given) and --exr by ray casting `radiance` from the same camera;
+/// --reference-exr path traces that view.
 void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
-  const Scene& scene)
+  const Scene& scene, vtkPolyData* shepardField)
 {
   if (args.Image.empty() && args.Exr.empty())
   {
@@ -124,6 +125,7 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const Soluti
   std::string error;
   vtkNew<vtkRadiosityView> view;
   view->SetInputData(solved);
+  view->SetShepardField(shepardField);
   view->SetSize(args.Width, args.Height);
   if (args.Scene == "cornell")
   {

@@ -75,7 +75,7 @@ void Check(bool ok, const std::string& error);
 std::vector<Probe> CornellDemoProbes();
 void WriteVtp(vtkPolyData* data, const std::string& file);
 void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
-  const Scene& scene);
+  const Scene& scene, vtkPolyData* shepardField = nullptr);
 void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
   const std::string& title);
 nlohmann::json Finite(double v);

@@ -21,6 +21,7 @@
 #include "vtkRadiosityConvergenceChart.h"
 #include "vtkRadiosityFilter.h"
 #include "vtkRadiositySceneConverter.h"
+#include "vtkMeshlessFieldFilter.h"
 #include "vtkRadiosityView.h"
 #include "vtkRenderer.h"
 #include "vtkTable.h"
@@ -193,7 +194,15 @@ int RunSolve(const SolveArguments& args)
     WriteVtp(solved, args.Output);
   }
   const auto renderStart = Clock::now();
-  RenderOutputs(args, solved, solution, filter->GetScene());
+  // The meshless field is drawn per pixel by splatting its basis functions.
+  vtkNew<vtkMeshlessFieldFilter> field;
+  if (meshless && !args.Image.empty())
+  {
+    field->SetInputConnection(filter->GetOutputPort());
+    field->Update();
+  }
+  RenderOutputs(args, solved, solution, filter->GetScene(),
+    meshless && !args.Image.empty() ? field->GetOutput() : nullptr);
   phases["render_s"] = Since(renderStart);
 
   std::size_t gathered = 0;
