@@ -2,6 +2,7 @@
 
 #include "Radiosity/SceneGenerators.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -87,6 +88,46 @@ Scene ReadNpmBunny(const std::string& indexJs)
   return bunny;
 }
 
+namespace
+{
+// Splits `count` triangles, spread evenly over the list, in two at the
+// midpoint of their longest edge (the shape is unchanged; the unsplit
+// neighbour of a split edge gets a T-junction).
+void BisectEvenly(Scene& scene, std::size_t count)
+{
+  const std::size_t n = scene.Triangles.size();
+  count = std::min(count, n);
+  for (std::size_t t = 0; t < n && count > 0; ++t)
+  {
+    if ((t + 1) * count / n == t * count / n)
+    {
+      continue;
+    }
+    Triangle& tri = scene.Triangles[t];
+    int longest = 0;
+    double length = -1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double l = glm::length(scene.Points[tri.V[(k + 1) % 3]] - scene.Points[tri.V[k]]);
+      if (l > length)
+      {
+        length = l;
+        longest = k;
+      }
+    }
+    const std::uint32_t a = tri.V[longest], b = tri.V[(longest + 1) % 3], c = tri.V[(longest + 2) % 3];
+    const auto m = static_cast<std::uint32_t>(scene.Points.size());
+    scene.Points.push_back(0.5 * (scene.Points[a] + scene.Points[b]));
+    Triangle second = tri;
+    tri.V = { a, m, c };
+    second.V = { m, b, c };
+    scene.Triangles.push_back(second);
+  }
+}
+
+Scene PlaceInRoom(Scene bunny);
+}
+
 Scene MakeBunnyRoom(const Scene& source, int levels)
 {
   Scene bunny = source;
@@ -94,6 +135,27 @@ Scene MakeBunnyRoom(const Scene& source, int levels)
   {
     SubdivideAtMidpoints(bunny.Points, bunny.Triangles);
   }
+  return PlaceInRoom(std::move(bunny));
+}
+
+Scene MakeBunnyRoomWithTriangles(const Scene& source, std::size_t triangles)
+{
+  Scene bunny = source;
+  while (4 * bunny.Triangles.size() <= triangles)
+  {
+    SubdivideAtMidpoints(bunny.Points, bunny.Triangles);
+  }
+  while (bunny.Triangles.size() < triangles)
+  {
+    BisectEvenly(bunny, triangles - bunny.Triangles.size());
+  }
+  return PlaceInRoom(std::move(bunny));
+}
+
+namespace
+{
+Scene PlaceInRoom(Scene bunny)
+{
   // Faces outward: a positive enclosed volume.
   double volume = 0.0;
   for (std::size_t t = 0; t < bunny.Triangles.size(); ++t)
@@ -139,5 +201,6 @@ Scene MakeBunnyRoom(const Scene& source, int levels)
     Vec3(1.25, h - 1e-3, 1.25), Vec3(0.75, h - 1e-3, 1.25), light, 1, "light");
   AppendScene(room, bunny);
   return room;
+}
 }
 } // namespace radiosity

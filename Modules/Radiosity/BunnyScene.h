@@ -6,6 +6,7 @@
 
 #include "Radiosity/Scene.h"
 
+#include <cstddef>
 #include <string>
 
 namespace radiosity
@@ -21,6 +22,13 @@ Scene ReadNpmBunny(const std::string& indexJs);
  * grey) lit by a 0.5 x 0.5 m ceiling light of exitance 50 W/m^2.
  */
 Scene MakeBunnyRoom(const Scene& bunny, int levels);
+
+/**
+ * The same room with the bunny at exactly `triangles` triangles (at least the
+ * source's): midpoint subdivision while it fits, then the longest edges of
+ * evenly spread triangles bisected (T-junctions; the shape is unchanged).
+ */
+Scene MakeBunnyRoomWithTriangles(const Scene& bunny, std::size_t triangles);
 } // namespace radiosity
 
 #endif

@@ -33,3 +33,29 @@ TEST(BunnyScene, ReadSubdivideAndPlace)
   EXPECT_EQ(room.ObjectNames.back(), "bunny");
   EXPECT_THROW(ReadNpmBunny("/nonexistent/index.js"), SceneError);
 }
+
+TEST(BunnyScene, ExactTriangleCountKeepsTheShape)
+{
+  const Scene bunny = ReadNpmBunny(RADIOSITY_BUNNY_JS);
+  const Scene reference = MakeBunnyRoom(bunny, 1);
+  const Scene room = MakeBunnyRoomWithTriangles(bunny, 25000); // 14,696 after one 4-split, then bisections
+  const std::size_t roomTriangles = 6 * 4 * 4 * 2 + 2;
+  ASSERT_EQ(room.Triangles.size(), roomTriangles + 25000u);
+  ValidateScene(room);
+  double area = 0.0, referenceArea = 0.0, volume = 0.0, referenceVolume = 0.0;
+  for (std::size_t t = roomTriangles; t < room.Triangles.size(); ++t)
+  {
+    area += room.Area(t);
+    volume += glm::dot(room.Vertex(t, 0), glm::cross(room.Vertex(t, 1), room.Vertex(t, 2)));
+  }
+  for (std::size_t t = roomTriangles; t < reference.Triangles.size(); ++t)
+  {
+    referenceArea += reference.Area(t);
+    referenceVolume +=
+      glm::dot(reference.Vertex(t, 0), glm::cross(reference.Vertex(t, 1), reference.Vertex(t, 2)));
+  }
+  // Same surface (bisection at midpoints changes no shape) and orientation.
+  EXPECT_NEAR(area, referenceArea, 1e-9 * referenceArea);
+  EXPECT_NEAR(volume, referenceVolume, 1e-9 * std::abs(referenceVolume));
+  EXPECT_GT(volume, 0.0);
+}
