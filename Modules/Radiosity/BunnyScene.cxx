@@ -3,6 +3,8 @@
 #include "Radiosity/SceneGenerators.h"
 
 #include <algorithm>
+#include <array>
+#include <unordered_map>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -90,38 +92,85 @@ Scene ReadNpmBunny(const std::string& indexJs)
 
 namespace
 {
-// Splits `count` triangles, spread evenly over the list, in two at the
-// midpoint of their longest edge (the shape is unchanged; the unsplit
-// neighbour of a split edge gets a T-junction).
+// Adds `count` triangles by splitting interior edges, spread evenly over the
+// mesh, at their midpoints: each split turns the edge's two triangles into
+// four, so the mesh stays conforming (an odd last one splits a single
+// triangle, leaving one T-junction). No triangle is split twice in a pass.
 void BisectEvenly(Scene& scene, std::size_t count)
 {
   const std::size_t n = scene.Triangles.size();
-  count = std::min(count, n);
-  for (std::size_t t = 0; t < n && count > 0; ++t)
+  std::unordered_map<std::uint64_t, std::array<std::uint32_t, 2>> edges;
+  auto key = [](std::uint32_t a, std::uint32_t b) {
+    return static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b);
+  };
+  for (std::uint32_t t = 0; t < n; ++t)
   {
-    if ((t + 1) * count / n == t * count / n)
-    {
-      continue;
-    }
-    Triangle& tri = scene.Triangles[t];
-    int longest = 0;
-    double length = -1.0;
     for (int k = 0; k < 3; ++k)
     {
-      const double l = glm::length(scene.Points[tri.V[(k + 1) % 3]] - scene.Points[tri.V[k]]);
-      if (l > length)
+      auto [it, inserted] = edges.try_emplace(
+        key(scene.Triangles[t].V[k], scene.Triangles[t].V[(k + 1) % 3]), std::array<std::uint32_t, 2>{ t, t });
+      if (!inserted)
       {
-        length = l;
-        longest = k;
+        it->second[1] = t;
       }
     }
-    const std::uint32_t a = tri.V[longest], b = tri.V[(longest + 1) % 3], c = tri.V[(longest + 2) % 3];
-    const auto m = static_cast<std::uint32_t>(scene.Points.size());
-    scene.Points.push_back(0.5 * (scene.Points[a] + scene.Points[b]));
+  }
+  std::vector<char> touched(n, 0);
+  // Splits triangle t at the midpoint m of its edge (a, b).
+  auto split = [&scene](std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t m) {
+    Triangle& tri = scene.Triangles[t];
+    int k = 0;
+    while (!(tri.V[k] == a && tri.V[(k + 1) % 3] == b) && !(tri.V[k] == b && tri.V[(k + 1) % 3] == a))
+    {
+      ++k;
+    }
+    const std::uint32_t p = tri.V[k], q = tri.V[(k + 1) % 3], r = tri.V[(k + 2) % 3];
     Triangle second = tri;
-    tri.V = { a, m, c };
-    second.V = { m, b, c };
+    tri.V = { p, m, r };
+    second.V = { m, q, r };
     scene.Triangles.push_back(second);
+  };
+  const std::size_t stride = std::max<std::size_t>(1, n / std::max<std::size_t>(1, count / 2));
+  for (std::size_t start = 0; start < stride && count > 0; ++start)
+  {
+    for (std::size_t t = start; t < n && count > 0; t += stride)
+    {
+      if (touched[t])
+      {
+        continue;
+      }
+      const Triangle tri = scene.Triangles[t];
+      int longest = 0;
+      double length = -1.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        const double l = glm::length(scene.Points[tri.V[(k + 1) % 3]] - scene.Points[tri.V[k]]);
+        if (l > length)
+        {
+          length = l;
+          longest = k;
+        }
+      }
+      const std::uint32_t a = tri.V[longest], b = tri.V[(longest + 1) % 3];
+      const auto& pair = edges.at(key(a, b));
+      const std::uint32_t u = pair[0] == t ? pair[1] : pair[0];
+      const bool both = u != t && !touched[u] && count >= 2;
+      if (u != t && !both && count >= 2)
+      {
+        continue; // its neighbour was split already: try another
+      }
+      const auto m = static_cast<std::uint32_t>(scene.Points.size());
+      scene.Points.push_back(0.5 * (scene.Points[a] + scene.Points[b]));
+      split(static_cast<std::uint32_t>(t), a, b, m);
+      touched[t] = 1;
+      --count;
+      if (both)
+      {
+        split(u, a, b, m);
+        touched[u] = 1;
+        --count;
+      }
+    }
   }
 }
 
