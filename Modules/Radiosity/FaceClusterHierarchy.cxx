@@ -138,7 +138,7 @@ std::uint64_t Morton(const Vec3& unit)
 } // namespace
 
 //------------------------------------------------------------------------------
-std::uint64_t FaceClusterHierarchy::FingerprintOf(const Scene& scene)
+std::uint64_t FaceClusterHierarchy::FingerprintOf(const Scene& scene, const FaceClusterOptions& options)
 {
   std::uint64_t h = 1469598103934665603ull; // FNV-1a
   auto mix = [&h](const void* data, std::size_t bytes) {
@@ -156,16 +156,22 @@ std::uint64_t FaceClusterHierarchy::FingerprintOf(const Scene& scene)
     mix(&m.Reflectance, sizeof(RGB));
     mix(&m.Emission, sizeof(RGB));
   }
+  mix(&options.ShapeWeight, sizeof(double));
   return h;
 }
 
 //------------------------------------------------------------------------------
 std::shared_ptr<const FaceClusterHierarchy> FaceClusterHierarchy::Shared(
-  const Scene& scene, const FaceClusterOptions& options, const ProgressCallback& progress)
+  const Scene& scene, const FaceClusterOptions& options, const ProgressCallback& progress,
+  bool* reused)
 {
   static std::mutex mutex;
   static std::map<std::uint64_t, std::weak_ptr<const FaceClusterHierarchy>> cache;
-  const std::uint64_t key = FingerprintOf(scene);
+  const std::uint64_t key = FingerprintOf(scene, options);
+  if (reused)
+  {
+    *reused = false;
+  }
   {
     const std::lock_guard<std::mutex> lock(mutex);
     auto it = cache.find(key);
@@ -173,6 +179,10 @@ std::shared_ptr<const FaceClusterHierarchy> FaceClusterHierarchy::Shared(
     {
       if (auto held = it->second.lock())
       {
+        if (reused)
+        {
+          *reused = true;
+        }
         return held;
       }
     }
@@ -191,7 +201,7 @@ FaceClusterHierarchy::FaceClusterHierarchy(
 {
   const Stopwatch clock;
   const auto threads = LimitThreads(options.Threads);
-  this->Key = FingerprintOf(scene);
+  this->Key = FingerprintOf(scene, options);
   if (this->Triangles >= None / 2)
   {
     throw SceneError("Face cluster hierarchy: " + std::to_string(this->Triangles) +

@@ -105,8 +105,10 @@ public:
   /// A hierarchy shared by every caller with the same geometry and materials
   /// (a fingerprint of the scene), built at the first call: a second solve on
   /// the same scene does not rebuild it. Held while anyone uses it.
+  /// `reused`, when given, tells whether an existing hierarchy was returned.
   static std::shared_ptr<const FaceClusterHierarchy> Shared(const Scene& scene,
-    const FaceClusterOptions& options = {}, const ProgressCallback& progress = {});
+    const FaceClusterOptions& options = {}, const ProgressCallback& progress = {},
+    bool* reused = nullptr);
 
   std::size_t NumberOfTriangles() const { return this->Triangles; }
   /// Clusters: the leaves (triangles) then the internal ones.
@@ -127,8 +129,9 @@ public:
   std::uint64_t Fingerprint() const { return this->Key; }
   const Scene& GetScene() const { return this->Source; }
 
-  /// The fingerprint Shared() keys on: points, triangles, objects, materials.
-  static std::uint64_t FingerprintOf(const Scene& scene);
+  /// The fingerprint Shared() keys on: points, triangles, objects, materials
+  /// and the options.
+  static std::uint64_t FingerprintOf(const Scene& scene, const FaceClusterOptions& options = {});
 
 private:
   Scene Source;

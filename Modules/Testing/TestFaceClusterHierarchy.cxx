@@ -252,3 +252,17 @@ TEST(FaceClusterHierarchy, ContractionDoesNotDependOnScale)
     }
   }
 }
+
+TEST(FaceClusterHierarchy, ProgressCanAbortTheBuild)
+{
+  // 81,920 triangles: the progress callback is called after 65,536 merges.
+  const Scene scene = MakeSphereInterior(1.0, 6, 0.5, RGB(1.0));
+  int calls = 0;
+  auto stop = [&calls](const ProgressStatus& status) {
+    ++calls;
+    EXPECT_GT(status.Fraction, 0.0);
+    return false;
+  };
+  EXPECT_THROW(FaceClusterHierarchy(scene, {}, stop), FaceClusterBuildAborted);
+  EXPECT_EQ(calls, 1);
+}
