@@ -17,6 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRadiosityCellArrays.h"
+#include "vtkRadiosityShaderVarying.h"
 #include "vtkRadiosityTexelBuffer.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -356,42 +357,12 @@ void vtkQuadraticInterpolantMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
 {
   // The barycentrics: a vertex attribute passed on as a smooth varying (the
-  // default, perspective-correct interpolation), through the geometry shader
-  // that VTK adds for surface edges or wide lines, if any. The tags are kept
-  // for the superclass's own replacements.
-  std::string VSSource = shaders[vtkShader::Vertex]->GetSource();
-  std::string GSSource = shaders[vtkShader::Geometry]->GetSource();
-  std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
-
-  vtkShaderProgram::Substitute(VSSource, "//VTK::TCoord::Dec",
-    "//VTK::TCoord::Dec\n"
-    "in vec2 interpolantST;\n"
-    "out vec2 interpolantSTVSOutput;\n");
-  vtkShaderProgram::Substitute(VSSource, "//VTK::TCoord::Impl",
-    "//VTK::TCoord::Impl\n"
-    "  interpolantSTVSOutput = interpolantST;\n");
-  if (!GSSource.empty())
-  {
-    vtkShaderProgram::Substitute(GSSource, "//VTK::TCoord::Dec",
-      "//VTK::TCoord::Dec\n"
-      "in vec2 interpolantSTVSOutput[];\n"
-      "out vec2 interpolantSTGSOutput;\n");
-    vtkShaderProgram::Substitute(GSSource, "//VTK::TCoord::Impl",
-      "//VTK::TCoord::Impl\n"
-      "    interpolantSTGSOutput = interpolantSTVSOutput[i];\n");
-  }
-  // With a geometry shader the shader cache renames VSOutput to GSOutput here.
-  vtkShaderProgram::Substitute(FSSource, "//VTK::TCoord::Dec",
-    "//VTK::TCoord::Dec\n"
-    "in vec2 interpolantSTVSOutput;\n"
+  // default, perspective-correct interpolation).
+  vtkRadiosityAddVarying(shaders, "vec2", "interpolantST", "in vec2 interpolantST;\n",
+    "interpolantST",
     "uniform samplerBuffer interpolantTexture;\n"
     "uniform float radianceScale;\n"
     "uniform float inverseGamma;\n");
-
-  shaders[vtkShader::Vertex]->SetSource(VSSource);
-  shaders[vtkShader::Geometry]->SetSource(GSSource);
-  shaders[vtkShader::Fragment]->SetSource(FSSource);
-
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 }
 

@@ -29,6 +29,7 @@
 #include "vtkPolygon.h"
 #include "vtkProperty.h"
 #include "vtkRadiosityCellArrays.h"
+#include "vtkRadiosityShaderVarying.h"
 #include "vtkRadiosityTexelBuffer.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -820,34 +821,9 @@ bool vtkShepardSplatMapper::Composite(vtkRenderer* ren)
 void vtkShepardSplatMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
 {
-  // The model-coordinate position, through the geometry shader VTK adds for
-  // wide lines, if any.
-  std::string VSSource = shaders[vtkShader::Vertex]->GetSource();
-  std::string GSSource = shaders[vtkShader::Geometry]->GetSource();
-  std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
-  vtkShaderProgram::Substitute(VSSource, "//VTK::TCoord::Dec",
-    "//VTK::TCoord::Dec\n"
-    "out vec3 splatPositionMCVSOutput;\n");
-  vtkShaderProgram::Substitute(VSSource, "//VTK::TCoord::Impl",
-    "//VTK::TCoord::Impl\n"
-    "  splatPositionMCVSOutput = vertexMC.xyz;\n");
-  if (!GSSource.empty())
-  {
-    vtkShaderProgram::Substitute(GSSource, "//VTK::TCoord::Dec",
-      "//VTK::TCoord::Dec\n"
-      "in vec3 splatPositionMCVSOutput[];\n"
-      "out vec3 splatPositionMCGSOutput;\n");
-    vtkShaderProgram::Substitute(GSSource, "//VTK::TCoord::Impl",
-      "//VTK::TCoord::Impl\n"
-      "    splatPositionMCGSOutput = splatPositionMCVSOutput[i];\n");
-  }
-  vtkShaderProgram::Substitute(FSSource, "//VTK::TCoord::Dec",
-    "//VTK::TCoord::Dec\n"
-    "in vec3 splatPositionMCVSOutput;\n"
+  // The model-coordinate position of the fragment, for the G-buffer.
+  vtkRadiosityAddVarying(shaders, "vec3", "splatPositionMC", "", "vertexMC.xyz",
     "uniform samplerBuffer splatCellTexels;\n");
-  shaders[vtkShader::Vertex]->SetSource(VSSource);
-  shaders[vtkShader::Geometry]->SetSource(GSSource);
-  shaders[vtkShader::Fragment]->SetSource(FSSource);
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 }
 
