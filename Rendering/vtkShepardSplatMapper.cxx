@@ -17,11 +17,8 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLHelper.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -33,10 +30,9 @@
 #include "vtkRadiosityTexelBuffer.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureObject.h"
+#include "vtkShepardSplatPasses.h"
 #include "vtk_glew.h"
 
-#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -48,124 +44,6 @@ constexpr int FloatsPerCell = 12;
 constexpr int FloatsPerPoint = 12;
 constexpr int MaximumLevels = 64;
 
-// Pass 2: one quad (two triangles, six vertices) per basis function, read
-// from the level-sorted point texels at firstPoint + gl_VertexID / 6. The quad
-// covers the projection of the support's bounding cube: the eight corners
-// projected, or the whole viewport when a corner is behind the eye.
-const char* const SplatVS = R"(//VTK::System::Dec
-uniform samplerBuffer splatPoints;
-uniform int firstPoint;
-uniform mat4 MCDCMatrix;
-flat out vec4 splatCentre;
-flat out vec4 splatNormal;
-flat out vec3 splatCoefficient;
-void main()
-{
-  int point = firstPoint + gl_VertexID / 6;
-  int corner = gl_VertexID - 6 * (gl_VertexID / 6);
-  splatCentre = texelFetch(splatPoints, 3 * point);
-  splatNormal = texelFetch(splatPoints, 3 * point + 1);
-  splatCoefficient = texelFetch(splatPoints, 3 * point + 2).xyz;
-  vec2 lo = vec2(1.0e30);
-  vec2 hi = vec2(-1.0e30);
-  bool behind = false;
-  for (int i = 0; i < 8; ++i)
-  {
-    vec3 offset = vec3((i & 1) != 0 ? 1.0 : -1.0, (i & 2) != 0 ? 1.0 : -1.0,
-      (i & 4) != 0 ? 1.0 : -1.0);
-    vec4 c = MCDCMatrix * vec4(splatCentre.xyz + splatCentre.w * offset, 1.0);
-    if (c.w <= 0.0)
-    {
-      behind = true;
-    }
-    else
-    {
-      lo = min(lo, c.xy / c.w);
-      hi = max(hi, c.xy / c.w);
-    }
-  }
-  if (behind)
-  {
-    lo = vec2(-1.0);
-    hi = vec2(1.0);
-  }
-  lo = clamp(lo, vec2(-1.0), vec2(1.0));
-  hi = clamp(hi, vec2(-1.0), vec2(1.0));
-  const vec2 quad[6] = vec2[6](vec2(0.0, 0.0), vec2(1.0, 0.0), vec2(1.0, 1.0),
-    vec2(0.0, 0.0), vec2(1.0, 1.0), vec2(0.0, 1.0));
-  gl_Position = vec4(mix(lo, hi, quad[corner]), 0.0, 1.0);
-}
-)";
-
-// Eqs. 12 and 13 at the G-buffer's point, accumulated as (w alpha, w).
-const char* const SplatFS = R"(//VTK::System::Dec
-//VTK::Output::Dec
-uniform sampler2D gPosition;
-uniform sampler2D gNormal;
-flat in vec4 splatCentre;
-flat in vec4 splatNormal;
-flat in vec3 splatCoefficient;
-void main()
-{
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 position = texelFetch(gPosition, pixel, 0);
-  vec4 normal = texelFetch(gNormal, pixel, 0);
-  if (position.w < 0.5 || (normal.w >= 0.0 && abs(normal.w - splatNormal.w) > 0.5))
-  {
-    discard;
-  }
-  float c = dot(normal.xyz, splatNormal.xyz);
-  float r = length(position.xyz - splatCentre.xyz) / splatCentre.w;
-  if (!(c > 0.0) || !(r < 1.0))
-  {
-    discard;
-  }
-  float w = ((2.0 * r - 3.0) * r * r + 1.0) * c;
-  gl_FragData[0] = vec4(w * splatCoefficient, w);
-}
-)";
-
-// Eq. 8: the level's normalised interpolation, added to the irradiance.
-const char* const NormaliseFS = R"(//VTK::System::Dec
-//VTK::Output::Dec
-in vec2 texCoord;
-uniform sampler2D levelSums;
-void main()
-{
-  vec4 sums = texelFetch(levelSums, ivec2(texCoord * vec2(textureSize(levelSums, 0))), 0);
-  if (!(sums.a > 0.0))
-  {
-    discard;
-  }
-  gl_FragData[0] = vec4(sums.rgb / sums.a, 1.0);
-}
-)";
-
-// Pass 3: L = (Emission + Reflectance E) / pi * Exposure, with the surface's
-// depth.
-const char* const CompositeFS = R"(//VTK::System::Dec
-//VTK::Output::Dec
-in vec2 texCoord;
-uniform sampler2D gReflectance;
-uniform sampler2D gEmission;
-uniform sampler2D gDepth;
-uniform sampler2D irradiance;
-uniform float radianceScale;
-uniform float inverseGamma;
-void main()
-{
-  ivec2 pixel = ivec2(texCoord * vec2(textureSize(gReflectance, 0)));
-  vec4 reflectance = texelFetch(gReflectance, pixel, 0);
-  if (reflectance.w < 0.5)
-  {
-    discard;
-  }
-  vec3 e = texelFetch(irradiance, pixel, 0).rgb;
-  vec3 radiance = (texelFetch(gEmission, pixel, 0).rgb + reflectance.rgb * e) * radianceScale;
-  gl_FragData[0] = vec4(pow(max(radiance, vec3(0.0)), vec3(inverseGamma)), 1.0);
-  gl_FragDepth = texelFetch(gDepth, pixel, 0).r;
-}
-)";
 
 std::string DescribeCell(vtkPolyData* input, vtkIdType cellId)
 {
@@ -208,92 +86,10 @@ vtkDataArray* FieldArray(vtkPolyData* field, const char* name, int components, s
 }
 
 //------------------------------------------------------------------------------
-struct vtkShepardSplatMapper::GraphicsResources
-{
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
-  // The G-buffer (position and coverage, normal and group, reflectance and
-  // coverage, emission), then the level's sums and the irradiance.
-  vtkNew<vtkTextureObject> Position;
-  vtkNew<vtkTextureObject> Normal;
-  vtkNew<vtkTextureObject> Reflectance;
-  vtkNew<vtkTextureObject> Emission;
-  vtkNew<vtkTextureObject> LevelSums;
-  vtkNew<vtkTextureObject> Irradiance;
-  vtkNew<vtkTextureObject> Depth;
-  vtkNew<vtkOpenGLVertexArrayObject> SplatArrays; // none: an empty VAO
-  std::unique_ptr<vtkOpenGLQuadHelper> Normalise;
-  std::unique_ptr<vtkOpenGLQuadHelper> Composite;
-  int Width = 0;
-  int Height = 0;
-
-  std::array<vtkTextureObject*, 6> ColourTargets()
-  {
-    return { this->Position, this->Normal, this->Reflectance, this->Emission, this->LevelSums,
-      this->Irradiance };
-  }
-
-  bool Allocate(vtkOpenGLRenderWindow* window, int width, int height)
-  {
-    if (width == this->Width && height == this->Height && this->Position->GetHandle() != 0 &&
-      this->Position->GetContext() == window)
-    {
-      return true;
-    }
-    this->Width = this->Height = 0;
-    for (vtkTextureObject* target : this->ColourTargets())
-    {
-      target->ReleaseGraphicsResources(window);
-      target->SetContext(window);
-      target->SetInternalFormat(GL_RGBA32F);
-      target->SetFormat(GL_RGBA);
-      target->SetDataType(GL_FLOAT);
-      target->SetMinificationFilter(vtkTextureObject::Nearest);
-      target->SetMagnificationFilter(vtkTextureObject::Nearest);
-      target->SetWrapS(vtkTextureObject::ClampToEdge);
-      target->SetWrapT(vtkTextureObject::ClampToEdge);
-      if (!target->Allocate2D(width, height, 4, VTK_FLOAT))
-      {
-        return false;
-      }
-    }
-    this->Depth->ReleaseGraphicsResources(window);
-    this->Depth->SetContext(window);
-    if (!this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32))
-    {
-      return false;
-    }
-    this->Framebuffer->SetContext(window);
-    this->Width = width;
-    this->Height = height;
-    return true;
-  }
-
-  void Release(vtkWindow* window)
-  {
-    for (vtkTextureObject* target : this->ColourTargets())
-    {
-      target->ReleaseGraphicsResources(window);
-    }
-    this->Depth->ReleaseGraphicsResources(window);
-    this->Framebuffer->ReleaseGraphicsResources(window);
-    this->SplatArrays->ReleaseGraphicsResources();
-    for (auto* quad : { &this->Normalise, &this->Composite })
-    {
-      if (*quad)
-      {
-        (*quad)->ReleaseGraphicsResources(window);
-        quad->reset();
-      }
-    }
-    this->Width = this->Height = 0;
-  }
-};
-
-//------------------------------------------------------------------------------
 vtkShepardSplatMapper::vtkShepardSplatMapper()
   : CellBuffer(new vtkRadiosityTexelBuffer)
   , PointBuffer(new vtkRadiosityTexelBuffer)
-  , Resources(new GraphicsResources)
+  , Passes(new vtkShepardSplatPasses)
 {
   this->SetNumberOfInputPorts(2);
   this->ScalarVisibilityOff();
@@ -613,17 +409,24 @@ void vtkShepardSplatMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   {
     return;
   }
-  GraphicsResources& r = *this->Resources;
-  if (!r.Allocate(window, viewport[2], viewport[3]))
+  vtkShepardSplatPasses& passes = *this->Passes;
+  if (!passes.Allocate(window, viewport[2], viewport[3]))
   {
     vtkErrorMacro(<< "Cannot allocate the G-buffer (" << viewport[2] << " x " << viewport[3]
                   << " RGBA32F targets).");
     return;
   }
+  std::string error;
+  if (!this->PointTexels.empty() && !this->PointBuffer->IsCurrent(this->PointTexelsTime, -1) &&
+    !this->PointBuffer->Upload(window, this->PointTexels, "the Shepard field's points", error))
+  {
+    vtkErrorMacro(<< error);
+    return;
+  }
 
   bool drawn = false;
   state->PushFramebufferBindings();
-  r.Framebuffer->Bind();
+  passes.GetFramebuffer()->Bind();
   {
     vtkOpenGLState::ScopedglViewport viewportSaver(state);
     vtkOpenGLState::ScopedglClearColor clearSaver(state);
@@ -633,188 +436,55 @@ void vtkShepardSplatMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
     vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
 
-    // Pass 1: the G-buffer.
-    r.Framebuffer->AddColorAttachment(0, r.Position);
-    r.Framebuffer->AddColorAttachment(1, r.Normal);
-    r.Framebuffer->AddColorAttachment(2, r.Reflectance);
-    r.Framebuffer->AddColorAttachment(3, r.Emission);
-    r.Framebuffer->AddDepthAttachment(r.Depth);
-    r.Framebuffer->ActivateDrawBuffers(4);
-    state->vtkglViewport(0, 0, r.Width, r.Height);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // Pass 1: the surface into the G-buffer.
+    passes.BeginGBuffer(state);
     this->Superclass::RenderPiece(ren, actor);
     drawn = this->DrawPiece && this->CellTexelsReady;
-    r.Framebuffer->RemoveColorAttachments(4);
-    r.Framebuffer->RemoveDepthAttachment();
+    passes.EndGBuffer();
 
     // Pass 2: the splats.
-    drawn = drawn && this->Splat(ren, actor);
+    if (drawn)
+    {
+      vtkNew<vtkMatrix4x4> modelToClip;
+      this->ModelToClip(ren, actor, modelToClip);
+      drawn = passes.Splat(window, modelToClip,
+        this->PointTexels.empty() ? nullptr : this->PointBuffer.get(), this->LevelOffsets, error);
+    }
   }
   state->PopFramebufferBindings();
 
   // Pass 3: into the renderer's framebuffer.
   if (drawn)
   {
-    this->Composite(ren);
+    drawn = passes.Composite(window, static_cast<float>(this->Exposure / vtkMath::Pi()),
+      static_cast<float>(1.0 / this->Gamma), error);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
   }
   vtkOpenGLCheckErrorMacro("failed after splatting the Shepard field");
 }
 
 //------------------------------------------------------------------------------
-bool vtkShepardSplatMapper::Splat(vtkRenderer* ren, vtkActor* actor)
+void vtkShepardSplatMapper::ModelToClip(vtkRenderer* ren, vtkActor* actor, vtkMatrix4x4* out)
 {
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  vtkOpenGLState* state = window->GetState();
-  GraphicsResources& r = *this->Resources;
-
-  r.Framebuffer->AddColorAttachment(0, r.Irradiance);
-  r.Framebuffer->ActivateDrawBuffers(1);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglClear(GL_COLOR_BUFFER_BIT);
-  if (this->PointTexels.empty())
-  {
-    r.Framebuffer->RemoveColorAttachments(1);
-    return true; // no basis functions: zero irradiance
-  }
-  std::string error;
-  if (!this->PointBuffer->IsCurrent(this->PointTexelsTime, -1) &&
-    !this->PointBuffer->Upload(window, this->PointTexels, "the Shepard field's points", error))
-  {
-    vtkErrorMacro(<< error);
-    r.Framebuffer->RemoveColorAttachments(1);
-    return false;
-  }
-
-  // Model to clip coordinates, as vtkOpenGLPolyDataMapper forms MCDCMatrix.
+  // As vtkOpenGLPolyDataMapper forms MCDCMatrix (the key matrices are
+  // transposed for OpenGL).
   vtkMatrix4x4* wcvc = nullptr;
   vtkMatrix4x4* vcdc = nullptr;
   vtkMatrix4x4* wcdc = nullptr;
   vtkMatrix3x3* normals = nullptr;
   static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
     ->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
-  vtkNew<vtkMatrix4x4> mcdc;
-  mcdc->DeepCopy(wcdc);
+  out->DeepCopy(wcdc);
   if (!actor->GetIsIdentity())
   {
     vtkMatrix4x4* mcwc = nullptr;
     vtkMatrix3x3* actorNormals = nullptr;
     static_cast<vtkOpenGLActor*>(actor)->GetKeyMatrices(mcwc, actorNormals);
-    vtkMatrix4x4::Multiply4x4(mcwc, wcdc, mcdc);
+    vtkMatrix4x4::Multiply4x4(mcwc, wcdc, out);
   }
-
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-  state->vtkglBlendEquation(GL_FUNC_ADD);
-  r.Position->Activate();
-  r.Normal->Activate();
-  this->PointBuffer->Activate();
-  bool ok = true;
-  vtkOpenGLShaderCache* cache = window->GetShaderCache();
-  for (int level = 0; ok && level + 1 < static_cast<int>(this->LevelOffsets.size()); ++level)
-  {
-    const size_t first = this->LevelOffsets[level];
-    const size_t count = this->LevelOffsets[level + 1] - first;
-    if (count == 0)
-    {
-      continue;
-    }
-    r.Framebuffer->AddColorAttachment(0, r.LevelSums);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT);
-    vtkShaderProgram* splat = cache->ReadyShaderProgram(SplatVS, SplatFS, "");
-    if (!splat || !splat->GetCompiled())
-    {
-      vtkErrorMacro(<< "Cannot build the splat shader program.");
-      ok = false;
-      break;
-    }
-    splat->SetUniformi("splatPoints", this->PointBuffer->GetTextureUnit());
-    splat->SetUniformi("gPosition", r.Position->GetTextureUnit());
-    splat->SetUniformi("gNormal", r.Normal->GetTextureUnit());
-    splat->SetUniformi("firstPoint", static_cast<int>(first));
-    splat->SetUniformMatrix("MCDCMatrix", mcdc);
-    r.SplatArrays->Bind();
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * count));
-    r.SplatArrays->Release();
-
-    r.Framebuffer->AddColorAttachment(0, r.Irradiance);
-    if (!r.Normalise)
-    {
-      r.Normalise.reset(new vtkOpenGLQuadHelper(window, nullptr, NormaliseFS, ""));
-    }
-    else
-    {
-      cache->ReadyShaderProgram(r.Normalise->Program);
-    }
-    if (!r.Normalise->Program || !r.Normalise->Program->GetCompiled())
-    {
-      vtkErrorMacro(<< "Cannot build the normalisation shader program.");
-      ok = false;
-      break;
-    }
-    r.LevelSums->Activate();
-    r.Normalise->Program->SetUniformi("levelSums", r.LevelSums->GetTextureUnit());
-    r.Normalise->Render();
-    r.LevelSums->Deactivate();
-  }
-  this->PointBuffer->Deactivate();
-  r.Normal->Deactivate();
-  r.Position->Deactivate();
-  r.Framebuffer->RemoveColorAttachments(1);
-  return ok;
-}
-
-//------------------------------------------------------------------------------
-bool vtkShepardSplatMapper::Composite(vtkRenderer* ren)
-{
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  vtkOpenGLState* state = window->GetState();
-  GraphicsResources& r = *this->Resources;
-  if (!r.Composite)
-  {
-    r.Composite.reset(new vtkOpenGLQuadHelper(window, nullptr, CompositeFS, ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(r.Composite->Program);
-  }
-  vtkShaderProgram* program = r.Composite->Program;
-  if (!program || !program->GetCompiled())
-  {
-    vtkErrorMacro(<< "Cannot build the composite shader program.");
-    return false;
-  }
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LEQUAL);
-  state->vtkglDepthMask(GL_TRUE);
-
-  vtkTextureObject* inputs[4] = { r.Reflectance, r.Emission, r.Depth, r.Irradiance };
-  const char* names[4] = { "gReflectance", "gEmission", "gDepth", "irradiance" };
-  for (int i = 0; i < 4; ++i)
-  {
-    inputs[i]->Activate();
-    program->SetUniformi(names[i], inputs[i]->GetTextureUnit());
-  }
-  // Lambertian surfaces: L = B / pi.
-  program->SetUniformf("radianceScale", static_cast<float>(this->Exposure / vtkMath::Pi()));
-  program->SetUniformf("inverseGamma", static_cast<float>(1.0 / this->Gamma));
-  r.Composite->Render();
-  for (vtkTextureObject* input : inputs)
-  {
-    input->Deactivate();
-  }
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -884,7 +554,7 @@ void vtkShepardSplatMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->CellBuffer->ReleaseGraphicsResources(win);
   this->PointBuffer->ReleaseGraphicsResources(win);
-  this->Resources->Release(win);
+  this->Passes->ReleaseGraphicsResources(win);
   this->CellTexelsReady = false;
   this->Superclass::ReleaseGraphicsResources(win);
 }
@@ -908,7 +578,7 @@ void vtkShepardSplatMapper::PrintSelf(ostream& os, vtkIndent indent)
     os << indent << "SurfaceError: " << this->SurfaceError << "\n";
   }
   os << indent << "SurfaceCells: " << this->CellTexels.size() / FloatsPerCell << "\n";
-  os << indent << "G-buffer: " << this->Resources->Width << " x " << this->Resources->Height
+  os << indent << "G-buffer: " << this->Passes->GetWidth() << " x " << this->Passes->GetHeight()
      << "\n";
   os << indent << "CellBuffer:\n";
   this->CellBuffer->PrintSelf(os, indent.GetNextIndent());

@@ -75,7 +75,9 @@
 
 class vtkAlgorithmOutput;
 class vtkPolyData;
+class vtkMatrix4x4;
 class vtkRadiosityTexelBuffer;
+class vtkShepardSplatPasses;
 
 class RADIOSITYRENDERING_EXPORT vtkShepardSplatMapper : public vtkOpenGLPolyDataMapper
 {
@@ -175,9 +177,8 @@ private:
   // Updates port 1 and rebuilds the level-sorted point texels when the field
   // changed; false (with an error) when there is none or it is refused.
   bool UpdateField();
-  // Passes 2 and 3; false (with an error) when a shader does not build.
-  bool Splat(vtkRenderer* ren, vtkActor* act);
-  bool Composite(vtkRenderer* ren);
+  // MCDCMatrix of the actor and camera, for the splats.
+  static void ModelToClip(vtkRenderer* ren, vtkActor* act, vtkMatrix4x4* out);
 
   // Per cell: (Reflectance, group), (Emission, 0), (normal, 0).
   std::vector<float> CellTexels;
@@ -201,8 +202,7 @@ private:
 
   std::unique_ptr<vtkRadiosityTexelBuffer> CellBuffer;
   std::unique_ptr<vtkRadiosityTexelBuffer> PointBuffer;
-  struct GraphicsResources;
-  std::unique_ptr<GraphicsResources> Resources;
+  std::unique_ptr<vtkShepardSplatPasses> Passes;
 };
 
 #endif

@@ -1,0 +1,82 @@
+// The GPU passes of vtkShepardSplatMapper (Lehtinen et al. 2007, section
+// 6.2, deferred shading of a meshless field): the G-buffer targets, the
+// level-by-level splatting of the basis functions with their per-level
+// normalisation, and the composite into the renderer's framebuffer. The
+// mapper draws the surface into the G-buffer between BeginGBuffer and
+// EndGBuffer; see its class description for the algorithm. Not wrapped.
+#ifndef vtkShepardSplatPasses_h
+#define vtkShepardSplatPasses_h
+
+#include "vtkNew.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkMatrix4x4;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
+class vtkOpenGLVertexArrayObject;
+class vtkRadiosityTexelBuffer;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkShepardSplatPasses
+{
+public:
+  vtkShepardSplatPasses();
+  ~vtkShepardSplatPasses();
+  vtkShepardSplatPasses(const vtkShepardSplatPasses&) = delete;
+  vtkShepardSplatPasses& operator=(const vtkShepardSplatPasses&) = delete;
+
+  /// (Re)allocates the float targets for a width x height viewport.
+  bool Allocate(vtkOpenGLRenderWindow* window, int width, int height);
+  int GetWidth() const { return this->Width; }
+  int GetHeight() const { return this->Height; }
+
+  /// The framebuffer of the passes; the caller binds it between its own
+  /// PushFramebufferBindings and PopFramebufferBindings.
+  vtkOpenGLFramebufferObject* GetFramebuffer();
+
+  /// Attaches and clears the G-buffer targets (position and coverage,
+  /// normal and group, reflectance and coverage, emission; depth) and sets
+  /// the viewport and the depth, blend and scissor state for drawing the
+  /// surface into them; EndGBuffer detaches them.
+  void BeginGBuffer(vtkOpenGLState* state);
+  void EndGBuffer();
+
+  /**
+   * Splats the level-sorted points (three texels each, `points` active)
+   * level by level into the irradiance target, levelOffsets[l] being the
+   * first point of level l; `modelToClip` is MCDCMatrix. No points leave
+   * the irradiance zero. False with `error` when a shader does not build.
+   */
+  bool Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* modelToClip,
+    vtkRadiosityTexelBuffer* points, const std::vector<size_t>& levelOffsets, std::string& error);
+
+  /// Writes (Emission + Reflectance E) * radianceScale, encoded with
+  /// 1/Gamma, and the G-buffer's depth into the bound framebuffer.
+  bool Composite(
+    vtkOpenGLRenderWindow* window, float radianceScale, float inverseGamma, std::string& error);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkNew<vtkTextureObject> Position;
+  vtkNew<vtkTextureObject> Normal;
+  vtkNew<vtkTextureObject> Reflectance;
+  vtkNew<vtkTextureObject> Emission;
+  vtkNew<vtkTextureObject> LevelSums;
+  vtkNew<vtkTextureObject> Irradiance;
+  vtkNew<vtkTextureObject> Depth;
+  vtkNew<vtkOpenGLVertexArrayObject> SplatArrays; // none: an empty VAO
+  std::unique_ptr<vtkOpenGLQuadHelper> Normalise;
+  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  int Width = 0;
+  int Height = 0;
+};
+
+#endif
