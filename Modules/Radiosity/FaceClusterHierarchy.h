@@ -116,6 +116,13 @@ public:
   /// Cluster `id` (a leaf is computed from its triangle).
   FaceCluster Cluster(std::uint32_t id) const;
   const std::vector<std::uint32_t>& Roots() const { return this->RootIds; }
+  /// The stored data of an internal cluster; null for a leaf (a triangle).
+  const FaceCluster* InternalCluster(std::uint32_t id) const
+  {
+    return id >= this->Triangles ? &this->Internal[id - this->Triangles] : nullptr;
+  }
+  /// Where triangle t is in TriangleOrder().
+  std::uint32_t TrianglePosition(std::uint32_t t) const { return this->LeafPosition[t]; }
   /// Triangles sorted so that each cluster's are [First, First + Count).
   const std::vector<std::uint32_t>& TriangleOrder() const { return this->Order; }
   std::uint32_t Parent(std::uint32_t id) const;
