@@ -85,7 +85,7 @@ bool SegmentCrossesBox(const FaceCluster& c, const Vec3& p, const Vec3& d, doubl
 }
 
 FaceClusterVisibility::FaceClusterVisibility(const FaceClusterHierarchy& hierarchy)
-  : Hierarchy(hierarchy)
+  : Source(hierarchy)
 {
 }
 
@@ -97,7 +97,7 @@ std::size_t FaceClusterVisibility::NodesVisited()
 double FaceClusterVisibility::Transmittance(const Vec3& x, const Vec3& y, std::uint32_t receiver,
   std::uint32_t emitter, double shadowThreshold) const
 {
-  const FaceClusterHierarchy& h = this->Hierarchy;
+  const FaceClusterHierarchy& h = this->Source;
   const Scene& scene = h.GetScene();
   const Vec3 d = y - x;
   const double length = glm::length(d);

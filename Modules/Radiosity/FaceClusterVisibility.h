@@ -31,11 +31,13 @@ public:
   double Transmittance(const Vec3& x, const Vec3& y, std::uint32_t receiver, std::uint32_t emitter,
     double shadowThreshold) const;
 
+  const FaceClusterHierarchy& Hierarchy() const { return this->Source; }
+
   /// Clusters visited by the last calls (for the statistics), per thread.
   static std::size_t NodesVisited();
 
 private:
-  const FaceClusterHierarchy& Hierarchy;
+  const FaceClusterHierarchy& Source;
 };
 
 /// Whether the segment p + t d, t in [t0, t1], crosses the oriented box of c.

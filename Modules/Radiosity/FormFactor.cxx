@@ -34,6 +34,37 @@ std::size_t ClipToHemisphere(
 }
 }
 
+Vec3 PointToPolygonVectorFormFactor(const Vec3& p, const Vec3* poly, std::size_t count)
+{
+  Vec3 areaVector(0.0), centroid(0.0);
+  for (std::size_t i = 1; i + 1 < count; ++i)
+  {
+    areaVector += glm::cross(poly[i] - poly[0], poly[i + 1] - poly[0]);
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    centroid += poly[i] / static_cast<double>(count);
+  }
+  if (count < 3 || glm::dot(p - poly[0], areaVector) <= 0)
+  {
+    return Vec3(0.0);
+  }
+  Vec3 sum(0.0);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Vec3 a = poly[i] - p;
+    const Vec3 b = poly[(i + 1) % count] - p;
+    const Vec3 c = glm::cross(a, b);
+    const double cl = glm::length(c);
+    if (cl > 0.0)
+    {
+      sum += std::atan2(cl, glm::dot(a, b)) * c / cl;
+    }
+  }
+  sum /= 2.0 * Pi;
+  return glm::dot(sum, centroid - p) < 0.0 ? -sum : sum;
+}
+
 double PointToPolygonFormFactor(const Vec3& p, const Vec3& n, const Vec3* poly, std::size_t count)
 {
   if (count < 3 || count > 8)

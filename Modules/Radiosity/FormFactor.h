@@ -24,6 +24,14 @@ namespace radiosity
  */
 double PointToPolygonFormFactor(const Vec3& p, const Vec3& n, const Vec3* poly, std::size_t count);
 
+/// The vector form factor of a one-sided convex polygon at p (Lambert's
+/// contour integral without a receiver: (1 / 2 pi) sum of theta_i times the
+/// unit normal of the plane through p and edge i), pointing toward the
+/// polygon; radiosity times it is the irradiance vector of vector radiosity,
+/// and n . it is the form factor of a receiver the polygon is wholly in front
+/// of. Zero when p is behind the polygon.
+Vec3 PointToPolygonVectorFormFactor(const Vec3& p, const Vec3* poly, std::size_t count);
+
 /// Convenience overload for a triangle.
 inline double PointToTriangleFormFactor(
   const Vec3& p, const Vec3& n, const Vec3& a, const Vec3& b, const Vec3& c)

@@ -1,0 +1,73 @@
+// Light transfer between two face clusters in higher-order vector radiosity
+// (Gobbetti, Spano & Agus 2003, sections 3.2 and 3.3):
+//
+// - the coupling coefficients of eq. 7, K_{i,a; j,b}, transport vectors from
+//   the emitter's radiosity basis function b to the receiver's irradiance
+//   basis function a, by a product Gauss-Legendre rule on each cluster's box
+//   rectangle (receiver and emitter rules of their own), with the emitter
+//   seen through its visible projected area toward each receiver node (the
+//   face cluster approximation, Willmott et al. 1999: the mean of the
+//   projected-area bounds) and multiresolution visibility;
+// - the transfer error of 3.3.2: at each receiver node the power
+//   BFA'_ij(x) = A_i n_x . E(x) that the coefficients give, against the upper
+//   and lower bounds of B_j V A_i^vis A_j^vis / (pi r^2) over the emitter's
+//   nodes from the bounds on the radiosity and on the projected areas;
+//   delta_ij = max reflectance of i times the largest departure;
+// - the self-transfer error of 3.3.3.
+#ifndef Radiosity_FaceClusterTransfer_h
+#define Radiosity_FaceClusterTransfer_h
+
+#include "Radiosity/ClusterBasis.h"
+#include "Radiosity/FaceClusterVisibility.h"
+
+#include <vector>
+
+namespace radiosity
+{
+struct TransferRule
+{
+  int ReceiverNodes = 3; ///< per axis of the receiver's rectangle (3: degree 5)
+  int EmitterNodes = 2;  ///< per axis of the emitter's rectangle (2: degree 3)
+  /// Shadow-size threshold of the visibility, in receiver node spacings.
+  double VisibilityThreshold = 1.0;
+};
+
+/// One side of a transfer: a cluster, its id and its basis.
+struct TransferEnd
+{
+  const FaceCluster* Cluster;
+  std::uint32_t Id;
+  const PolynomialBasis* Basis;
+};
+
+struct Transfer
+{
+  int Receivers = 0; ///< irradiance basis size N_e
+  int Emitters = 0;  ///< radiosity basis size N_b
+  /// K[a * Emitters + b], eq. 7 (vectors, W/m^2 per W/m^2 of radiosity).
+  std::vector<Vec3> K;
+  /// delta_ij (W), or 0 when not estimated.
+  double Error = 0.0;
+};
+
+/**
+ * K and delta_ij for receiver i and emitter j whose radiosity is
+ * `radiosity` (radiosity-basis coefficients, RGB), its bounds over the
+ * emitter being [radiosityMin, radiosityMax] (luminance-free means).
+ */
+Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter,
+  const std::vector<RGB>& radiosity, double radiosityMin, double radiosityMax,
+  const FaceClusterVisibility& visibility, const TransferRule& rule);
+
+/// delta_ii of 3.3.3: max reflectance x max radiosity x (F_ii bounds' gap) x A_i.
+double SelfTransferError(const FaceCluster& c, double radiosityMax);
+
+/// Whether any of `to`'s box lies in front of `from` (always true for a
+/// cluster with faces pointing both ways).
+bool ClusterFaces(const FaceCluster& from, const FaceCluster& to);
+
+/// n-point Gauss-Legendre nodes and weights on [0, 1] (n in 1..5).
+void GaussLegendre(int n, double* nodes, double* weights);
+} // namespace radiosity
+
+#endif
