@@ -90,6 +90,7 @@ FaceCluster TriangleCluster(const Scene& scene, std::size_t t)
   const double area = glm::length(areaVector);
   c.Area = static_cast<float>(area);
   c.AreaVector = glm::vec3(areaVector);
+  c.Centroid = glm::vec3((p[0] + p[1] + p[2]) / 3.0);
   c.Object = scene.ObjectIds[t];
   Vec3 z = area > 0.0 ? areaVector / area : Vec3(0.0, 0.0, 1.0);
   int longest = 0;
@@ -146,6 +147,7 @@ void MergeClusterAttributes(const FaceCluster& a, const FaceCluster& b, FaceClus
   out.AreaVector = a.AreaVector + b.AreaVector;
   const float wa = out.Area > 0.0f ? a.Area / out.Area : 0.5f;
   const float wb = 1.0f - wa;
+  out.Centroid = wa * a.Centroid + wb * b.Centroid;
   out.ReflectanceMin = glm::min(a.ReflectanceMin, b.ReflectanceMin);
   out.ReflectanceMax = glm::max(a.ReflectanceMax, b.ReflectanceMax);
   out.ReflectanceMean = wa * a.ReflectanceMean + wb * b.ReflectanceMean;

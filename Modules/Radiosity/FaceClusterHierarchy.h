@@ -71,6 +71,7 @@ struct FaceCluster
 
   float Area = 0.0f;
   glm::vec3 AreaVector{ 0.0f }; ///< sum of A_k n_k
+  glm::vec3 Centroid{ 0.0f };   ///< area-weighted centroid of the surface
   float DPlus[3]{ 0, 0, 0 };    ///< sum A_k (n_k . Axis[j])_+
   float DMinus[3]{ 0, 0, 0 };   ///< sum A_k (-n_k . Axis[j])_+
 

@@ -82,18 +82,44 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
   const double spacing =
     2.0 * std::max(double(ri.HalfSize.x), double(ri.HalfSize.y)) / nr * rule.VisibilityThreshold;
 
-  // A triangle emitter: its constant part by the exact vector form factor
-  // (no 1/r^2 singularity next to it), the higher orders by the rule.
-  const bool triangle = ej.IsLeaf() && emitter.Id < visibility.Hierarchy().NumberOfTriangles();
-  Vec3 corners[3];
-  if (triangle)
+  // The emitter's constant part by exact vector form factors, so that the
+  // 1/r^2 singularity next to an adjacent emitter costs no accuracy: the sum
+  // over its triangles for a cluster of at most ExactTriangles of them, and
+  // for a larger flat one its box rectangle's, scaled by the fraction of the
+  // rectangle its surface covers (A^(n) / |R|). Higher orders, and large
+  // clusters that are not flat, by the rule.
+  constexpr std::uint32_t ExactTriangles = 64;
+  const FaceClusterHierarchy& hierarchy = visibility.Hierarchy();
+  const Scene& scene = hierarchy.GetScene();
+  const double planeSize = std::max(double(ej.HalfSize.x), double(ej.HalfSize.y));
+  const bool small = ej.Count <= ExactTriangles;
+  const bool flat = !small && ej.DMinus[2] <= 1e-6f * ej.Area &&
+    double(ej.HalfSize.z) <= 1e-3 * planeSize && RectangleArea(ej) > 0.0;
+  const bool exactConstant = small || flat;
+  Vec3 rectangle[4];
+  double coverage = 1.0;
+  if (flat)
   {
-    const Scene& scene = visibility.Hierarchy().GetScene();
-    for (int k = 0; k < 3; ++k)
-    {
-      corners[k] = scene.Vertex(emitter.Id, k);
-    }
+    rectangle[0] = BoxPoint(ej, 0.0, 0.0);
+    rectangle[1] = BoxPoint(ej, 1.0, 0.0);
+    rectangle[2] = BoxPoint(ej, 1.0, 1.0);
+    rectangle[3] = BoxPoint(ej, 0.0, 1.0);
+    coverage = ej.NormalProjectedArea() / RectangleArea(ej);
   }
+  auto exactVector = [&](const Vec3& x) {
+    if (flat)
+    {
+      return coverage * PointToPolygonVectorFormFactor(x, rectangle, 4);
+    }
+    Vec3 sum(0.0);
+    for (std::uint32_t k = ej.First; k < ej.First + ej.Count; ++k)
+    {
+      const std::uint32_t t = hierarchy.TriangleOrder()[k];
+      const Vec3 tri[3] = { scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) };
+      sum += PointToPolygonVectorFormFactor(x, tri, 3);
+    }
+    return sum;
+  };
   const double rhoMax = std::max({ ri.ReflectanceMax.x, ri.ReflectanceMax.y, ri.ReflectanceMax.z });
   const Vec3 normal(ri.Axis[2]);
   double phiR[PolynomialBasis::MaximumSize], phiE[PolynomialBasis::MaximumSize];
@@ -128,7 +154,7 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
           emitter.Basis->Evaluate(eu[c], eu[d], phiE);
           for (int i = 0; i < ne; ++i)
           {
-            for (int j = triangle ? 1 : 0; j < nb; ++j)
+            for (int j = exactConstant ? 1 : 0; j < nb; ++j)
             {
               out.K[i * nb + j] += (wp * wq * phiR[i] * phiE[j] * g) * dir;
             }
@@ -139,10 +165,10 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
           lower[p] = std::min(lower[p], radiosityMin * scale * ri.MinProjectedArea(dir) * emitterMin);
         }
       }
-      if (triangle)
+      if (exactConstant)
       {
         const double v = weightSum > 0.0 ? visibleSum / weightSum : 1.0;
-        const Vec3 f = v * PointToPolygonVectorFormFactor(x, corners, 3);
+        const Vec3 f = v * exactVector(x);
         for (int i = 0; i < ne; ++i)
         {
           out.K[i * nb] += (wp * phiR[i]) * f;
