@@ -69,18 +69,15 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
 {
   const FaceCluster& ri = *receiver.Cluster;
   const FaceCluster& ej = *emitter.Cluster;
-  const int ne = receiver.Basis->Size(), nb = emitter.Basis->Size();
+  const SurfaceRule& rr = *receiver.Rule;
+  const SurfaceRule& er = *emitter.Rule;
+  const int ne = receiver.Functions, nb = emitter.Functions;
   Transfer out;
   out.Receivers = ne;
   out.Emitters = nb;
   out.K.assign(static_cast<std::size_t>(ne) * nb, Vec3(0.0));
-
-  double ru[5], rw[5], eu[5], ew[5];
-  const int nr = std::clamp(rule.ReceiverNodes, 1, 5), nq = std::clamp(rule.EmitterNodes, 1, 5);
-  GaussLegendre(nr, ru, rw);
-  GaussLegendre(nq, eu, ew);
-  const double spacing =
-    2.0 * std::max(double(ri.HalfSize.x), double(ri.HalfSize.y)) / nr * rule.VisibilityThreshold;
+  const double spacing = 2.0 * std::max(double(ri.HalfSize.x), double(ri.HalfSize.y)) /
+    std::max(rule.Nodes, 1) * rule.VisibilityThreshold;
 
   // The emitter's constant part by exact vector form factors, so that the
   // 1/r^2 singularity next to an adjacent emitter costs no accuracy: the sum
@@ -120,83 +117,69 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     }
     return sum;
   };
+
   const double rhoMax = std::max({ ri.ReflectanceMax.x, ri.ReflectanceMax.y, ri.ReflectanceMax.z });
-  const Vec3 normal(ri.Axis[2]);
-  double phiR[PolynomialBasis::MaximumSize], phiE[PolynomialBasis::MaximumSize];
-  std::vector<double> upper(nr * nr, 0.0), lower(nr * nr, std::numeric_limits<double>::infinity());
-  for (int a = 0; a < nr; ++a)
+  const std::size_t np = rr.Size(), nq = er.Size();
+  double departure = 0.0;
+  std::vector<Vec3> atNode(np * nb, Vec3(0.0)); // sum_q Phi_b(y_q) g_pq
+  std::vector<double> upper(np, 0.0), lower(np, std::numeric_limits<double>::infinity());
+  for (std::size_t p = 0; p < np; ++p)
   {
-    for (int b = 0; b < nr; ++b)
+    const Vec3& x = rr.Points[p];
+    double visibleSum = 0.0, weightSum = 0.0;
+    for (std::size_t q = 0; q < nq; ++q)
     {
-      const int p = a * nr + b;
-      const Vec3 x = BoxPoint(ri, ru[a], ru[b]);
-      const double wp = rw[a] * rw[b];
-      receiver.Basis->Evaluate(ru[a], ru[b], phiR);
-      double visibleSum = 0.0, weightSum = 0.0;
-      for (int c = 0; c < nq; ++c)
+      const Vec3& y = er.Points[q];
+      const Vec3 r = y - x;
+      const double d2 = glm::dot(r, r);
+      if (!(d2 > 0.0))
       {
-        for (int d = 0; d < nq; ++d)
-        {
-          const Vec3 y = BoxPoint(ej, eu[c], eu[d]);
-          const Vec3 r = y - x;
-          const double d2 = glm::dot(r, r);
-          if (!(d2 > 0.0))
-          {
-            continue;
-          }
-          const Vec3 dir = r / std::sqrt(d2);
-          const double v = visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing);
-          const double wq = ew[c] * ew[d];
-          visibleSum += wq * v;
-          weightSum += wq;
-          const double emitterMin = ej.MinProjectedArea(-dir), emitterMax = ej.MaxProjectedArea(-dir);
-          const double g = v * 0.5 * (emitterMin + emitterMax) / (Pi * d2);
-          emitter.Basis->Evaluate(eu[c], eu[d], phiE);
-          for (int i = 0; i < ne; ++i)
-          {
-            for (int j = exactConstant ? 1 : 0; j < nb; ++j)
-            {
-              out.K[i * nb + j] += (wp * wq * phiR[i] * phiE[j] * g) * dir;
-            }
-          }
-          // 3.3.2: bounds on B F A over the emitter's nodes.
-          const double scale = v / (Pi * d2);
-          upper[p] = std::max(upper[p], radiosityMax * scale * ri.MaxProjectedArea(dir) * emitterMax);
-          lower[p] = std::min(lower[p], radiosityMin * scale * ri.MinProjectedArea(dir) * emitterMin);
-        }
+        continue;
       }
-      if (exactConstant)
+      const Vec3 dir = r / std::sqrt(d2);
+      const double v = visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing);
+      visibleSum += er.Weights[q] * v;
+      weightSum += er.Weights[q];
+      // The point kernel m(x, y) dA_y of eq. 3 with the node's own normal.
+      const double cosine = std::max(-glm::dot(er.Normals[q], dir), 0.0);
+      const double g = er.Weights[q] * v * cosine / (Pi * d2);
+      for (int b = exactConstant ? 1 : 0; b < nb; ++b)
       {
-        const double v = weightSum > 0.0 ? visibleSum / weightSum : 1.0;
-        const Vec3 f = v * exactVector(x);
-        for (int i = 0; i < ne; ++i)
-        {
-          out.K[i * nb] += (wp * phiR[i]) * f;
-        }
+        atNode[p * nb + b] += (er.Phi[q * er.Functions + b] * g) * dir;
+      }
+      // 3.3.2: bounds on B F A over the emitter's nodes.
+      const double scale = v / (Pi * d2);
+      upper[p] = std::max(upper[p], radiosityMax * scale * ri.MaxProjectedArea(dir) * ej.MaxProjectedArea(-dir));
+      lower[p] = std::min(lower[p], radiosityMin * scale * ri.MinProjectedArea(dir) * ej.MinProjectedArea(-dir));
+    }
+    if (exactConstant)
+    {
+      const double v = weightSum > 0.0 ? visibleSum / weightSum : 1.0;
+      atNode[p * nb] = v * exactVector(x);
+    }
+    for (int a = 0; a < ne; ++a)
+    {
+      const double d = rr.Dual[p * rr.Functions + a];
+      for (int b = 0; b < nb; ++b)
+      {
+        out.K[a * nb + b] += d * atNode[p * nb + b];
       }
     }
   }
-
   // BFA' at the receiver's nodes from the coefficients, against the bounds.
-  double departure = 0.0;
-  for (int a = 0; a < nr; ++a)
+  for (std::size_t p = 0; p < np; ++p)
   {
-    for (int b = 0; b < nr; ++b)
+    Vec3 e(0.0);
+    for (int a = 0; a < ne; ++a)
     {
-      receiver.Basis->Evaluate(ru[a], ru[b], phiR);
-      Vec3 e(0.0);
-      for (int i = 0; i < ne; ++i)
+      for (int b = 0; b < nb; ++b)
       {
-        for (int j = 0; j < nb; ++j)
-        {
-          e += (phiR[i] * Mean(radiosity[j])) * out.K[i * nb + j];
-        }
+        e += (rr.Phi[p * rr.Functions + a] * Mean(radiosity[b])) * out.K[a * nb + b];
       }
-      const double bfa = ri.Area * std::max(glm::dot(normal, e), 0.0);
-      const int p = a * nr + b;
-      const double lo = std::isfinite(lower[p]) ? lower[p] : 0.0;
-      departure = std::max({ departure, std::abs(bfa - upper[p]), std::abs(bfa - lo) });
     }
+    const double bfa = ri.Area * std::max(glm::dot(rr.Normals[p], e), 0.0);
+    const double lo = std::isfinite(lower[p]) ? lower[p] : 0.0;
+    departure = std::max({ departure, std::abs(bfa - upper[p]), std::abs(bfa - lo) });
   }
   out.Error = rhoMax * departure;
   return out;

@@ -18,6 +18,7 @@
 #define Radiosity_FaceClusterTransfer_h
 
 #include "Radiosity/ClusterBasis.h"
+#include "Radiosity/FaceClusterQuadrature.h"
 #include "Radiosity/FaceClusterVisibility.h"
 
 #include <vector>
@@ -26,34 +27,37 @@ namespace radiosity
 {
 struct TransferRule
 {
-  int ReceiverNodes = 3; ///< per axis of the receiver's rectangle (3: degree 5)
-  int EmitterNodes = 2;  ///< per axis of the emitter's rectangle (2: degree 3)
+  int Nodes = 3; ///< Gauss-Legendre nodes per axis of a cluster's rectangle
   /// Shadow-size threshold of the visibility, in receiver node spacings.
   double VisibilityThreshold = 1.0;
 };
 
-/// One side of a transfer: a cluster, its id and its basis.
+/// One side of a transfer: a cluster, its id, its surface rule, and how many
+/// of the rule's basis functions take part.
 struct TransferEnd
 {
   const FaceCluster* Cluster;
   std::uint32_t Id;
-  const PolynomialBasis* Basis;
+  const SurfaceRule* Rule;
+  int Functions;
 };
 
 struct Transfer
 {
-  int Receivers = 0; ///< irradiance basis size N_e
-  int Emitters = 0;  ///< radiosity basis size N_b
+  int Receivers = 0; ///< irradiance functions N_e
+  int Emitters = 0;  ///< radiosity functions N_b
   /// K[a * Emitters + b], eq. 7 (vectors, W/m^2 per W/m^2 of radiosity).
   std::vector<Vec3> K;
-  /// delta_ij (W), or 0 when not estimated.
+  /// delta_ij (W).
   double Error = 0.0;
 };
 
 /**
  * K and delta_ij for receiver i and emitter j whose radiosity is
- * `radiosity` (radiosity-basis coefficients, RGB), its bounds over the
- * emitter being [radiosityMin, radiosityMax] (luminance-free means).
+ * `radiosity` (coefficients of the emitter's first Functions basis
+ * functions, RGB), its bounds over the emitter being [radiosityMin,
+ * radiosityMax] (means of the channels). `spacing` is the receiver's node
+ * spacing for the visibility threshold.
  */
 Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter,
   const std::vector<RGB>& radiosity, double radiosityMin, double radiosityMax,

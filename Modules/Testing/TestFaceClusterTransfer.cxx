@@ -1,7 +1,7 @@
-// Transfers between face clusters (Gobbetti et al. 2003, 3.2-3.3): the
-// constant-basis coupling of two parallel squares against the closed-form
-// form factor, the exact vector form factor of a triangle emitter, and the
-// transfer error shrinking with distance.
+// Transfers between face clusters (Gobbetti et al. 2003, 3.2-3.3): surface
+// rules, the constant-basis coupling of two parallel squares against the
+// closed-form form factor, the exact vector form factor of a triangle
+// emitter, and the transfer error shrinking with distance.
 #include "Radiosity/ClosedFormFactors.h"
 #include "Radiosity/FaceClusterTransfer.h"
 #include "Radiosity/FormFactor.h"
@@ -38,6 +38,58 @@ Pair MakePair(double c, int n)
   }
   return pair;
 }
+
+Transfer Between(const Pair& pair, std::uint32_t r, std::uint32_t e, const PolynomialBasis& basis, int nodes)
+{
+  const FaceCluster receiver = pair.Hierarchy->Cluster(r), emitter = pair.Hierarchy->Cluster(e);
+  const SurfaceRule rr = MakeSurfaceRule(*pair.Hierarchy, r, receiver, basis, nodes);
+  const SurfaceRule er = MakeSurfaceRule(*pair.Hierarchy, e, emitter, basis, nodes);
+  TransferRule rule;
+  rule.Nodes = nodes;
+  return ComputeTransfer({ &receiver, r, &rr, basis.Size() }, { &emitter, e, &er, 1 }, { RGB(1.0) },
+    1.0, 1.0, *pair.Visibility, rule);
+}
+}
+
+TEST(FaceClusterTransfer, SurfaceRulesLieOnTheSurface)
+{
+  Pair pair = MakePair(1.0, 3);
+  const PolynomialBasis linear(BasisKind::Linear);
+  const FaceClusterHierarchy& h = *pair.Hierarchy;
+  for (std::uint32_t id = 0; id < h.NumberOfClusters(); ++id)
+  {
+    const FaceCluster c = h.Cluster(id);
+    const SurfaceRule rule = MakeSurfaceRule(h, id, c, linear, 3);
+    double total = 0.0;
+    for (std::size_t p = 0; p < rule.Size(); ++p)
+    {
+      total += rule.Weights[p];
+      EXPECT_NEAR(rule.Points[p].z, c.Centre.z, 1e-9); // on the flat square
+    }
+    EXPECT_NEAR(total, c.Area, 1e-6 * c.Area);
+    // The fit reproduces a linear function of the box coordinates when the
+    // rule has three or more nodes.
+    if (rule.Size() >= 3)
+    {
+      std::vector<double> values(rule.Size());
+      for (std::size_t p = 0; p < rule.Size(); ++p)
+      {
+        const glm::dvec2 uv = BoxCoordinates(c, rule.Points[p]);
+        values[p] = 2.0 - 3.0 * uv.x + 0.5 * uv.y;
+      }
+      double coefficients[3];
+      rule.Fit(values.data(), 1, coefficients);
+      for (std::size_t p = 0; p < rule.Size(); ++p)
+      {
+        double fitted = 0.0;
+        for (int a = 0; a < 3; ++a)
+        {
+          fitted += coefficients[a] * rule.Phi[p * 3 + a];
+        }
+        EXPECT_NEAR(fitted, values[p], 1e-9);
+      }
+    }
+  }
 }
 
 TEST(FaceClusterTransfer, ConstantCouplingIsTheFormFactor)
@@ -46,18 +98,11 @@ TEST(FaceClusterTransfer, ConstantCouplingIsTheFormFactor)
   for (double c : { 1.0, 2.0, 4.0 })
   {
     Pair pair = MakePair(c, 2);
-    const FaceCluster receiver = pair.Hierarchy->Cluster(pair.Receiver);
-    const FaceCluster emitter = pair.Hierarchy->Cluster(pair.Emitter);
-    TransferRule rule;
-    rule.ReceiverNodes = 5;
-    rule.EmitterNodes = 5;
-    const Transfer t = ComputeTransfer({ &receiver, pair.Receiver, &constant },
-      { &emitter, pair.Emitter, &constant }, { RGB(1.0) }, 1.0, 1.0, *pair.Visibility, rule);
+    const Transfer t = Between(pair, pair.Receiver, pair.Emitter, constant, 5);
     ASSERT_EQ(t.K.size(), 1u);
     // n . K for unit radiosity: the area-averaged form factor receiver -> emitter.
-    const double f = t.K[0].z;
     const double exact = closedform::ParallelRectangles(1.0, 1.0, c);
-    EXPECT_NEAR(f, exact, 0.01 * exact) << "distance " << c;
+    EXPECT_NEAR(t.K[0].z, exact, 0.01 * exact) << "distance " << c;
     EXPECT_NEAR(t.K[0].x, 0.0, 1e-9);
   }
 }
@@ -66,28 +111,19 @@ TEST(FaceClusterTransfer, TriangleEmitterUsesTheExactVectorFormFactor)
 {
   Pair pair = MakePair(0.1, 1); // close: 1/r^2 cubature would be poor
   const FaceClusterHierarchy& h = *pair.Hierarchy;
+  const std::uint32_t triangle = h.TriangleOrder()[h.Cluster(pair.Emitter).First];
+  const PolynomialBasis linear(BasisKind::Linear);
   const FaceCluster receiver = h.Cluster(pair.Receiver);
-  // A leaf triangle of the emitter.
-  const FaceCluster root = h.Cluster(pair.Emitter);
-  const std::uint32_t triangle = h.TriangleOrder()[root.First];
-  const FaceCluster emitter = h.Cluster(triangle);
-  const PolynomialBasis linear(BasisKind::Linear), constant(BasisKind::Constant);
-  TransferRule rule;
-  const Transfer t = ComputeTransfer({ &receiver, pair.Receiver, &linear },
-    { &emitter, triangle, &constant }, { RGB(1.0) }, 1.0, 1.0, *pair.Visibility, rule);
-  // The receiver's constant coefficient is the mean over its nodes of the
-  // exact vector form factor; check it against a direct evaluation.
-  double nodes[5], weights[5];
-  GaussLegendre(rule.ReceiverNodes, nodes, weights);
-  Vec3 expected(0.0);
+  const SurfaceRule rr = MakeSurfaceRule(h, pair.Receiver, receiver, linear, 3);
+  const Transfer t = Between(pair, pair.Receiver, triangle, linear, 3);
+  // The constant coefficient is the least-squares fit of the exact vector
+  // form factor at the receiver's nodes.
   const Vec3 corners[3] = { pair.Geometry.Vertex(triangle, 0), pair.Geometry.Vertex(triangle, 1),
     pair.Geometry.Vertex(triangle, 2) };
-  for (int a = 0; a < rule.ReceiverNodes; ++a)
+  Vec3 expected(0.0);
+  for (std::size_t p = 0; p < rr.Size(); ++p)
   {
-    for (int b = 0; b < rule.ReceiverNodes; ++b)
-    {
-      expected += weights[a] * weights[b] * PointToPolygonVectorFormFactor(BoxPoint(receiver, nodes[a], nodes[b]), corners, 3);
-    }
+    expected += rr.Dual[p * 3] * PointToPolygonVectorFormFactor(rr.Points[p], corners, 3);
   }
   EXPECT_NEAR(glm::length(t.K[0] - expected), 0.0, 1e-12);
   EXPECT_GT(t.K[0].z, 0.1);
@@ -97,16 +133,13 @@ TEST(FaceClusterTransfer, TriangleEmitterUsesTheExactVectorFormFactor)
     PointToTriangleFormFactor(x, Vec3(0, 0, 1), corners[0], corners[1], corners[2]), 1e-12);
 }
 
-TEST(FaceClusterTransfer, ErrorFallsWithDistanceAndRefinement)
+TEST(FaceClusterTransfer, ErrorFallsWithDistance)
 {
   const PolynomialBasis constant(BasisKind::Constant);
   auto relativeError = [&](double c) {
     Pair pair = MakePair(c, 2);
-    const FaceCluster receiver = pair.Hierarchy->Cluster(pair.Receiver);
-    const FaceCluster emitter = pair.Hierarchy->Cluster(pair.Emitter);
-    const Transfer t = ComputeTransfer({ &receiver, pair.Receiver, &constant },
-      { &emitter, pair.Emitter, &constant }, { RGB(1.0) }, 1.0, 1.0, *pair.Visibility, TransferRule());
-    return t.Error / (receiver.Area * t.K[0].z); // relative to the power received (rho = 0.5)
+    const Transfer t = Between(pair, pair.Receiver, pair.Emitter, constant, 3);
+    return t.Error / t.K[0].z; // relative to the power received (area 1, rho 0.5)
   };
   const double near = relativeError(0.5), far = relativeError(8.0);
   EXPECT_GT(near, 4.0 * far);

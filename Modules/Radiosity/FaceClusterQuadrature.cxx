@@ -1,0 +1,161 @@
+#include "Radiosity/FaceClusterQuadrature.h"
+
+#include "Radiosity/FaceClusterTransfer.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace radiosity
+{
+namespace
+{
+// The hit of the line p + t n, |t| <= reach, with cluster id's triangles
+// nearest t = 0: true with the point and the triangle's unit normal.
+bool ProjectOntoCluster(const FaceClusterHierarchy& h, std::uint32_t id, const Vec3& p,
+  const Vec3& n, double reach, Vec3& hit, Vec3& normal)
+{
+  const Scene& scene = h.GetScene();
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<std::uint32_t> stack{ id };
+  while (!stack.empty())
+  {
+    const std::uint32_t node = stack.back();
+    stack.pop_back();
+    if (const FaceCluster* c = h.InternalCluster(node))
+    {
+      if (SegmentCrossesBox(*c, p - reach * n, 2.0 * reach * n, 0.0, 1.0))
+      {
+        stack.push_back(c->Child[0]);
+        stack.push_back(c->Child[1]);
+      }
+      continue;
+    }
+    const Vec3 a = scene.Vertex(node, 0), b = scene.Vertex(node, 1), c = scene.Vertex(node, 2);
+    const Vec3 e1 = b - a, e2 = c - a;
+    const Vec3 pv = glm::cross(n, e2);
+    const double det = glm::dot(e1, pv);
+    if (std::abs(det) < 1e-300)
+    {
+      continue;
+    }
+    const Vec3 tv = p - a;
+    const double u = glm::dot(tv, pv) / det;
+    const Vec3 qv = glm::cross(tv, e1);
+    const double v = glm::dot(n, qv) / det;
+    const double t = glm::dot(e2, qv) / det;
+    if (u < 0.0 || v < 0.0 || u + v > 1.0 || std::abs(t) > reach || std::abs(t) >= best)
+    {
+      continue;
+    }
+    best = std::abs(t);
+    hit = p + t * n;
+    normal = scene.Normal(node);
+  }
+  return std::isfinite(best);
+}
+}
+
+void SurfaceRule::Fit(const double* values, std::size_t stride, double* coefficients) const
+{
+  for (int a = 0; a < this->Functions; ++a)
+  {
+    double s = 0.0;
+    for (std::size_t p = 0; p < this->Size(); ++p)
+    {
+      s += this->Dual[p * this->Functions + a] * values[p * stride];
+    }
+    coefficients[a] = s;
+  }
+}
+
+std::vector<double> DualWeights(const FaceCluster& frame, const PolynomialBasis& basis,
+  const std::vector<Vec3>& points, const std::vector<double>& weights)
+{
+  const int n = basis.Size();
+  const auto m = static_cast<Eigen::Index>(points.size());
+  Eigen::MatrixXd phi(m, n);
+  double total = 0.0;
+  double values[PolynomialBasis::MaximumSize];
+  for (Eigen::Index p = 0; p < m; ++p)
+  {
+    const glm::dvec2 uv = BoxCoordinates(frame, points[p]);
+    basis.Evaluate(uv.x, uv.y, values);
+    for (int a = 0; a < n; ++a)
+    {
+      phi(p, a) = values[a];
+    }
+    total += weights[p];
+  }
+  // Weighted least squares: c = (Phi^T W Phi)^+ Phi^T W f.
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index p = 0; p < m; ++p)
+  {
+    gram += (weights[p] / total) * phi.row(p).transpose() * phi.row(p);
+  }
+  const Eigen::MatrixXd inverse = gram.completeOrthogonalDecomposition().pseudoInverse();
+  std::vector<double> dual(static_cast<std::size_t>(m) * n);
+  for (Eigen::Index p = 0; p < m; ++p)
+  {
+    const Eigen::VectorXd d = inverse * phi.row(p).transpose() * (weights[p] / total);
+    for (int a = 0; a < n; ++a)
+    {
+      dual[p * n + a] = d(a);
+    }
+  }
+  return dual;
+}
+
+SurfaceRule MakeSurfaceRule(const FaceClusterHierarchy& hierarchy, std::uint32_t id,
+  const FaceCluster& c, const PolynomialBasis& basis, int nodesPerAxis)
+{
+  SurfaceRule rule;
+  rule.Functions = basis.Size();
+  double nodes[5], weights[5];
+  const int n = std::clamp(nodesPerAxis, 1, 5);
+  GaussLegendre(n, nodes, weights);
+  const Vec3 axis(c.Axis[2]);
+  const double plane = std::max(double(c.HalfSize.x), double(c.HalfSize.y));
+  const double reach = 1.01 * double(c.HalfSize.z) + 1e-6 * plane + 1e-12;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      Vec3 hit, normal;
+      if (ProjectOntoCluster(hierarchy, id, BoxPoint(c, nodes[i], nodes[j]), axis, reach, hit, normal))
+      {
+        rule.Points.push_back(hit);
+        rule.Normals.push_back(normal);
+        const double tilt = std::max(std::abs(glm::dot(normal, axis)), 0.05);
+        rule.Weights.push_back(weights[i] * weights[j] / tilt);
+      }
+    }
+  }
+  if (rule.Points.empty())
+  {
+    rule.Points.push_back(Vec3(c.Centroid));
+    rule.Normals.push_back(c.MeanNormal());
+    rule.Weights.push_back(1.0);
+  }
+  double total = 0.0;
+  for (double w : rule.Weights)
+  {
+    total += w;
+  }
+  for (double& w : rule.Weights)
+  {
+    w *= double(c.Area) / total;
+  }
+  double values[PolynomialBasis::MaximumSize];
+  for (const Vec3& p : rule.Points)
+  {
+    const glm::dvec2 uv = BoxCoordinates(c, p);
+    basis.Evaluate(uv.x, uv.y, values);
+    rule.Phi.insert(rule.Phi.end(), values, values + rule.Functions);
+  }
+  rule.Dual = DualWeights(c, basis, rule.Points, rule.Weights);
+  return rule;
+}
+} // namespace radiosity

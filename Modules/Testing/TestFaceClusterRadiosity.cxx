@@ -1,0 +1,81 @@
+// Higher-order face cluster radiosity (Gobbetti et al. 2003) against exact
+// answers: closed rooms of uniform reflectance (H = E / (1 - rho)), and the
+// constant bases reproducing plain face cluster radiosity (one irradiance
+// vector per element).
+#include "Radiosity/FaceClusterRadiosity.h"
+#include "Radiosity/SceneGenerators.h"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+using namespace radiosity;
+
+namespace
+{
+// Largest relative error of the irradiance at every `stride`th triangle's
+// centroid against `exact`.
+double WorstCentroidError(
+  const FaceClusterRadiosity& solver, const std::function<RGB(std::size_t)>& exact, std::size_t stride = 1)
+{
+  const Scene& scene = solver.GetScene();
+  double worst = 0.0;
+  for (std::size_t t = 0; t < scene.Triangles.size(); t += stride)
+  {
+    const RGB e = solver.IrradianceAt(static_cast<std::uint32_t>(t), scene.Centroid(t), scene.Normal(t));
+    const RGB reference = exact(t);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_TRUE(std::isfinite(e[c]));
+      worst = std::max(worst, std::abs(e[c] - reference[c]) / reference[c]);
+    }
+  }
+  return worst;
+}
+}
+
+TEST(FaceClusterRadiosity, ClosedRoomsWithinOnePercent)
+{
+  for (double rho : { 0.5, 0.9, 0.99 })
+  {
+    const Scene scene = MakeClosedCube(1.0, 4, rho, 1.0);
+    FaceClusterRadiosity solver(scene, FaceClusterSettings());
+    const SolverStatistics stats = solver.Solve();
+    EXPECT_EQ(stats.Stop, StopReason::Converged);
+    const double worst = WorstCentroidError(solver, [&](std::size_t) { return RGB(1.0 / (1.0 - rho)); });
+    std::cout << "closed room rho " << rho << ": " << stats.Iterations << " iterations, "
+              << solver.Statistics().LeafElements << " leaves, " << solver.Statistics().Transfers
+              << " transfers, worst " << worst << "\n";
+    EXPECT_LT(worst, 0.01) << "rho " << rho;
+  }
+}
+
+TEST(FaceClusterRadiosity, ConstantBasesArePlainFaceClusterRadiosity)
+{
+  const Scene scene = MakeClosedCube(1.0, 4, 0.5, 1.0);
+  FaceClusterSettings settings;
+  settings.IrradianceBasis = BasisKind::Constant;
+  FaceClusterRadiosity solver(scene, settings);
+  solver.Solve();
+  // One irradiance vector per leaf element: the same at every point of it.
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    const auto id = static_cast<std::uint32_t>(t);
+    const IrradianceVector a = solver.IrradianceVectorAt(id, scene.Vertex(t, 0));
+    const IrradianceVector b = solver.IrradianceVectorAt(id, scene.Centroid(t));
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(glm::length(a[c] - b[c]), 0.0, 1e-12);
+    }
+  }
+  // Plain face cluster radiosity is coarser than the linear basis at the
+  // same tolerance (measured: 2.8% against 0.2%), and still close.
+  const double constantError = WorstCentroidError(solver, [](std::size_t) { return RGB(2.0); });
+  FaceClusterRadiosity linear(scene, FaceClusterSettings());
+  linear.Solve();
+  const double linearError = WorstCentroidError(linear, [](std::size_t) { return RGB(2.0); });
+  std::cout << "closed room rho 0.5: constant bases " << constantError << ", linear irradiance "
+            << linearError << "\n";
+  EXPECT_LT(constantError, 0.05);
+  EXPECT_LT(linearError, constantError);
+}
