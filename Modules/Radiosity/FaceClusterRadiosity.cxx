@@ -537,4 +537,38 @@ RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec
   return RGB(std::max(glm::dot(n, v[0]), 0.0), std::max(glm::dot(n, v[1]), 0.0),
     std::max(glm::dot(n, v[2]), 0.0));
 }
+
+std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors() const
+{
+  const Scene& scene = this->GetScene();
+  std::vector<std::array<double, 9>> out(scene.Points.size(), std::array<double, 9>{});
+  std::vector<int> count(scene.Points.size(), 0);
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t v = scene.Triangles[t].V[k];
+      const IrradianceVector e = this->IrradianceVectorAt(static_cast<std::uint32_t>(t), scene.Points[v]);
+      for (int c = 0; c < 3; ++c)
+      {
+        for (int d = 0; d < 3; ++d)
+        {
+          out[v][3 * c + d] += e[c][d];
+        }
+      }
+      ++count[v];
+    }
+  }
+  for (std::size_t v = 0; v < out.size(); ++v)
+  {
+    if (count[v] > 0)
+    {
+      for (double& x : out[v])
+      {
+        x /= count[v];
+      }
+    }
+  }
+  return out;
+}
 } // namespace radiosity

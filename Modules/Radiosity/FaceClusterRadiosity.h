@@ -93,6 +93,10 @@ public:
   IrradianceVector IrradianceVectorAt(std::uint32_t t, const Vec3& x) const;
   /// Irradiance (W/m^2) at x with normal n on triangle t: (n . E_c)_+.
   RGB IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const;
+  /// Per scene point: the irradiance vector (9 values: R, G, B vectors),
+  /// the mean over the triangles using the point of their leaf elements'
+  /// expansions at it (section 3.5: what the display interpolates).
+  std::vector<std::array<double, 9>> VertexIrradianceVectors() const;
   /// The leaf element holding triangle t.
   std::int32_t LeafOf(std::uint32_t t) const;
 
