@@ -3,17 +3,21 @@
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFaceClusterHierarchy.h"
+#include "vtkFaceClusterHierarchyFilter.h"
 #include "vtkHierarchicalRadiositySolution.h"
-#include "vtkMeshlessRadiositySolution.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseKey.h"
 #include "vtkInformationVector.h"
+#include "vtkMeshlessRadiositySolution.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRadiositySceneConverter.h"
 #include "vtkVersion.h"
 
+#include "Radiosity/FaceClusterRadiosity.h"
 #include "Radiosity/HierarchicalRadiosity.h"
 #include "Radiosity/MeshlessRadiosity.h"
 #include "Radiosity/ProgressiveRadiosity.h"
@@ -43,6 +47,24 @@ struct SolverHolder
 };
 using HierarchicalHolder = SolverHolder<radiosity::HierarchicalRadiosity, radiosity::HierarchicalOptions>;
 using MeshlessHolder = SolverHolder<radiosity::MeshlessRadiosity, radiosity::MeshlessOptions>;
+
+/// The face cluster solver with its scene.
+struct FaceClusterHolder
+{
+  std::shared_ptr<const radiosity::Scene> SceneRef;
+  radiosity::FaceClusterRadiosity Instance;
+  FaceClusterHolder(std::shared_ptr<const radiosity::Scene> scene,
+    const radiosity::FaceClusterSettings& settings,
+    std::shared_ptr<const radiosity::FaceClusterHierarchy> hierarchy)
+    : SceneRef(std::move(scene))
+    , Instance(*this->SceneRef, settings, std::move(hierarchy))
+  {
+  }
+};
+
+constexpr radiosity::BasisKind BasisKinds[5] = { radiosity::BasisKind::Constant,
+  radiosity::BasisKind::Linear, radiosity::BasisKind::Bilinear, radiosity::BasisKind::Quadratic,
+  radiosity::BasisKind::Cubic };
 }
 
 vtkRadiosityFilter::vtkRadiosityFilter()
@@ -63,9 +85,17 @@ const char* vtkRadiosityFilter::GetMethodName(int method)
       return "hierarchical";
     case Meshless:
       return "meshless";
+    case FaceCluster:
+      return "facecluster";
     default:
       return "unknown";
   }
+}
+
+const char* vtkRadiosityFilter::GetBasisName(int basis)
+{
+  static const char* const names[5] = { "constant", "linear", "bilinear", "quadratic", "cubic" };
+  return basis >= 0 && basis < 5 ? names[basis] : "unknown";
 }
 
 int vtkRadiosityFilter::FillInputPortInformation(int, vtkInformation* info)
@@ -92,6 +122,7 @@ int vtkRadiosityFilter::RequestData(
   this->Solution.reset();
   this->HierarchicalSolution.reset();
   this->MeshlessSolution.reset();
+  this->FaceClusterSolution.reset();
   this->Statistics = radiosity::SolverStatistics();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -213,6 +244,37 @@ int vtkRadiosityFilter::RequestData(
       std::shared_ptr<const radiosity::MeshlessRadiosity>(holder, &holder->Instance);
     this->Solution = std::make_unique<radiosity::SolutionMesh>(holder->Instance.Surface());
   }
+  else if (this->Method == FaceCluster)
+  {
+    radiosity::FaceClusterSettings settings;
+    settings.IrradianceBasis = BasisKinds[this->IrradianceBasis];
+    settings.RadiosityBasis = BasisKinds[std::min(this->RadiosityBasis, this->IrradianceBasis)];
+    settings.TransferTolerance = this->TransferTolerance;
+    settings.Tolerance = this->Tolerance;
+    settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
+    settings.MaxTimeSeconds = this->MaxTime;
+    settings.Threads = this->NumberOfThreads;
+    // A hierarchy from vtkFaceClusterHierarchyFilter upstream, when it was
+    // built for this very scene; otherwise the shared one (built once).
+    std::shared_ptr<const radiosity::FaceClusterHierarchy> hierarchy;
+    if (auto* carrier = vtkFaceClusterHierarchy::SafeDownCast(
+          input->GetInformation()->Get(vtkFaceClusterHierarchyFilter::FACE_CLUSTER_HIERARCHY())))
+    {
+      hierarchy = carrier->GetHierarchy();
+      if (hierarchy &&
+        hierarchy->Fingerprint() != radiosity::FaceClusterHierarchy::FingerprintOf(*sharedScene, settings.Clustering))
+      {
+        hierarchy.reset();
+      }
+    }
+    auto holder = std::make_shared<FaceClusterHolder>(sharedScene, settings, hierarchy);
+    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    last = Clock::now();
+    this->Statistics = holder->Instance.Solve(progress);
+    this->FaceClusterSolution =
+      std::shared_ptr<const radiosity::FaceClusterRadiosity>(holder, &holder->Instance);
+    this->Solution = std::make_unique<radiosity::SolutionMesh>(holder->Instance.Surface());
+  }
   else
   {
     this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -225,6 +287,18 @@ int vtkRadiosityFilter::RequestData(
   }
   output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(*this->Solution, *this->LastScene));
   output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
+  if (this->FaceClusterSolution && output->GetNumberOfPoints() == static_cast<vtkIdType>(this->Solution->Points.size()))
+  {
+    // The irradiance vectors at the points, for vtkVectorIrradianceMapper.
+    const auto vectors = this->FaceClusterSolution->VertexIrradianceVectors();
+    auto array = vtkRadiositySceneConverter::NewDoubleArray(
+      "IrradianceVector", 9, static_cast<vtkIdType>(vectors.size()));
+    for (std::size_t p = 0; p < vectors.size(); ++p)
+    {
+      array->SetTypedTuple(static_cast<vtkIdType>(p), vectors[p].data());
+    }
+    output->GetPointData()->AddArray(array);
+  }
   // An aborted solve is not a solution to mesh downstream (VTK empties the
   // output; GetHierarchicalSolution() still gives the partial one).
   if (this->HierarchicalSolution && this->Statistics.Stop != radiosity::StopReason::Aborted)
@@ -292,6 +366,10 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GatherRays: " << this->GatherRays << "\n";
   os << indent << "VariationThreshold: " << this->VariationThreshold << "\n";
   os << indent << "SolidAngleThreshold: " << this->SolidAngleThreshold << "\n";
+  os << indent << "IrradianceBasis: " << GetBasisName(this->IrradianceBasis) << "\n";
+  os << indent << "RadiosityBasis: " << GetBasisName(this->RadiosityBasis) << "\n";
+  os << indent << "TransferTolerance: " << this->TransferTolerance << "\n";
+  os << indent << "FaceClusterSolution: " << (this->FaceClusterSolution ? "yes" : "none") << "\n";
   os << indent << "HierarchicalSolution: " << (this->HierarchicalSolution ? "yes" : "none") << "\n";
   os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";
   os << indent << "LastError: " << this->LastError << "\n";

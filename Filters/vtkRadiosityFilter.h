@@ -42,6 +42,7 @@ struct SolutionMesh;
 struct SceneAnalysis;
 class HierarchicalRadiosity;
 class MeshlessRadiosity;
+class FaceClusterRadiosity;
 }
 class vtkInformationObjectBaseKey;
 
@@ -57,17 +58,29 @@ public:
     Auto = 0,
     Progressive = 1,
     Hierarchical = 2,
-    Meshless = 3
+    Meshless = 3,
+    FaceCluster = 4
+  };
+
+  /// The polynomial bases of face cluster radiosity (Gobbetti et al. 2003).
+  enum Bases
+  {
+    ConstantBasis = 0,
+    LinearBasis = 1,
+    BilinearBasis = 2,
+    QuadraticBasis = 3,
+    CubicBasis = 4
   };
 
   ///@{
   /// The solution method. Default Auto (progressive).
-  vtkSetClampMacro(Method, int, Auto, Meshless);
+  vtkSetClampMacro(Method, int, Auto, FaceCluster);
   vtkGetMacro(Method, int);
   void SetMethodToAuto() { this->SetMethod(Auto); }
   void SetMethodToProgressive() { this->SetMethod(Progressive); }
   void SetMethodToHierarchical() { this->SetMethod(Hierarchical); }
   void SetMethodToMeshless() { this->SetMethod(Meshless); }
+  void SetMethodToFaceCluster() { this->SetMethod(FaceCluster); }
   static const char* GetMethodName(int method);
   ///@}
 
@@ -229,6 +242,30 @@ public:
   vtkGetMacro(SolidAngleThreshold, double);
   ///@}
 
+  ///@{
+  /// Face cluster: the basis of the irradiance vectors (one of Bases,
+  /// default LinearBasis) and of the radiosity (default ConstantBasis; never
+  /// larger than the irradiance basis, section 3.3.4).
+  vtkSetClampMacro(IrradianceBasis, int, ConstantBasis, CubicBasis);
+  vtkGetMacro(IrradianceBasis, int);
+  vtkSetClampMacro(RadiosityBasis, int, ConstantBasis, CubicBasis);
+  vtkGetMacro(RadiosityBasis, int);
+  static const char* GetBasisName(int basis);
+  ///@}
+
+  ///@{
+  /// Face cluster: the transfer error accepted, relative to the emitted
+  /// power (the paper: 1e-5). Default 1e-5.
+  vtkSetClampMacro(TransferTolerance, double, 1e-12, 1.0);
+  vtkGetMacro(TransferTolerance, double);
+  ///@}
+
+  /// The last face cluster solution; null otherwise.
+  std::shared_ptr<const radiosity::FaceClusterRadiosity> GetFaceClusterSolution() const
+  {
+    return this->FaceClusterSolution;
+  }
+
   /// The last meshless solution (point hierarchy and fields); null otherwise.
   std::shared_ptr<const radiosity::MeshlessRadiosity> GetMeshlessSolution() const
   {
@@ -288,6 +325,9 @@ protected:
   int GatherRays = 256;
   double VariationThreshold = 0.01;
   double SolidAngleThreshold = 3.14159265358979323846 / 10.0;
+  int IrradianceBasis = LinearBasis;
+  int RadiosityBasis = ConstantBasis;
+  double TransferTolerance = 1e-5;
 
 private:
   vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;
@@ -303,6 +343,7 @@ private:
   std::shared_ptr<const radiosity::Scene> LastScene;
   std::shared_ptr<const radiosity::HierarchicalRadiosity> HierarchicalSolution;
   std::shared_ptr<const radiosity::MeshlessRadiosity> MeshlessSolution;
+  std::shared_ptr<const radiosity::FaceClusterRadiosity> FaceClusterSolution;
   radiosity::SceneCleanupReport Cleanup;
   std::unique_ptr<radiosity::SolutionMesh> Solution;
   double PreprocessSeconds = 0.0;

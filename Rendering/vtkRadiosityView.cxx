@@ -2,6 +2,7 @@
 #include "vtkQuadraticInterpolantMapper.h"
 #include "vtkRadiosityWindowPNG.h"
 #include "vtkShepardSplatMapper.h"
+#include "vtkVectorIrradianceMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -91,11 +92,17 @@ vtkRadiosityView::vtkRadiosityView()
   this->SplatActor->SetMapper(this->SplatMapper);
   this->SplatActor->VisibilityOff();
 
+  this->VectorMapper = vtkSmartPointer<vtkVectorIrradianceMapper>::New();
+  this->VectorActor = vtkSmartPointer<vtkActor>::New();
+  this->VectorActor->SetMapper(this->VectorMapper);
+  this->VectorActor->VisibilityOff();
+
   this->Renderer = vtkSmartPointer<vtkOpenGLRenderer>::New();
   this->Renderer->SetBackground(0.0, 0.0, 0.0);
   this->Renderer->AddActor(this->Actor);
   this->Renderer->AddActor(this->InterpolantActor);
   this->Renderer->AddActor(this->SplatActor);
+  this->Renderer->AddActor(this->VectorActor);
 
   // The standard render steps (camera, lights, opaque, translucent, overlay)
   // draw into the tone mapping pass's float framebuffer, which keeps HDR.
@@ -229,6 +236,14 @@ bool vtkRadiosityView::UsesSplatMapper()
 }
 
 //------------------------------------------------------------------------------
+bool vtkRadiosityView::UsesVectorIrradianceMapper()
+{
+  return !this->UsesSplatMapper() && !this->UsesInterpolantMapper() && this->InterpolantRendering &&
+    this->Input && this->ArrayName && strcmp(this->ArrayName, "Radiosity") == 0 &&
+    this->Input->GetPointData()->GetAbstractArray("IrradianceVector") != nullptr;
+}
+
+//------------------------------------------------------------------------------
 bool vtkRadiosityView::UsesInterpolantMapper()
 {
   return !this->UsesSplatMapper() && this->InterpolantRendering && this->Input && this->ArrayName &&
@@ -264,6 +279,16 @@ bool vtkRadiosityView::CheckInput()
     std::string message;
     if (!vtkShepardSplatMapper::ValidateSurface(this->Input, &message) ||
       !vtkShepardSplatMapper::ValidateField(this->ShepardField, &message))
+    {
+      vtkErrorMacro(<< message);
+      return false;
+    }
+    return true;
+  }
+  if (this->UsesVectorIrradianceMapper())
+  {
+    std::string message;
+    if (!vtkVectorIrradianceMapper::ValidateInput(this->Input, &message))
     {
       vtkErrorMacro(<< message);
       return false;
@@ -315,9 +340,17 @@ void vtkRadiosityView::UpdatePipeline()
   this->ToneMappingPass->SetToneMappingType(this->ToneMappingType);
   const bool splats = this->UsesSplatMapper();
   const bool interpolants = this->UsesInterpolantMapper();
+  const bool vectors = this->UsesVectorIrradianceMapper();
   this->SplatActor->SetVisibility(splats);
   this->InterpolantActor->SetVisibility(interpolants);
-  this->Actor->SetVisibility(!interpolants && !splats);
+  this->VectorActor->SetVisibility(vectors);
+  this->Actor->SetVisibility(!interpolants && !splats && !vectors);
+  if (vectors)
+  {
+    this->VectorMapper->SetInputData(this->Input);
+    this->VectorMapper->SetExposure(this->Exposure);
+    return;
+  }
   if (splats)
   {
     this->SplatMapper->SetInputData(this->Input);
@@ -404,4 +437,7 @@ void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ToneMappingPass: " << this->ToneMappingPass.GetPointer() << "\n";
   os << indent << "InterpolantMapper: " << this->InterpolantMapper.GetPointer() << "\n";
   os << indent << "SplatMapper: " << this->SplatMapper.GetPointer() << "\n";
+  os << indent << "VectorMapper: " << this->VectorMapper.GetPointer() << "\n";
+  os << indent << "UsesVectorIrradianceMapper: " << (this->UsesVectorIrradianceMapper() ? "true" : "false")
+     << "\n";
 }

@@ -25,6 +25,12 @@
  *   per pixel on the input's polygons (Lehtinen et al. 2007, section 6.2).
  *   It takes precedence over the interpolant path.
  *
+ * - Vector irradiance: when the input has the point array `IrradianceVector`
+ *   (9 components, face cluster radiosity's), the drawn array is `Radiosity`
+ *   and InterpolantRendering is on, a vtkVectorIrradianceMapper shades every
+ *   pixel with eq. 10 of Gobbetti et al. 2003 (glossy where the input has
+ *   `Specular`).
+ *
  * InterpolantRenderingOff forces the Gouraud path (for side-by-side
  * comparisons of the same solution); UsesInterpolantMapper tells which path
  * the next render takes.
@@ -57,6 +63,7 @@ class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkQuadraticInterpolantMapper;
 class vtkShepardSplatMapper;
+class vtkVectorIrradianceMapper;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkToneMappingPass;
@@ -122,6 +129,13 @@ public:
    * InterpolantRendering on and ArrayName "Radiosity".
    */
   bool UsesSplatMapper();
+
+  /**
+   * Whether the next render shades the irradiance vectors per pixel: the
+   * point array `IrradianceVector`, InterpolantRendering on, ArrayName
+   * "Radiosity", no Shepard field and no `QuadraticInterpolant`.
+   */
+  bool UsesVectorIrradianceMapper();
 
   /**
    * Whether the next render draws the interpolants per pixel: an input with
@@ -235,6 +249,9 @@ protected:
   vtkSmartPointer<vtkPolyData> ShepardField;
   vtkSmartPointer<vtkShepardSplatMapper> SplatMapper;
   vtkSmartPointer<vtkActor> SplatActor;
+  // Vector irradiance path.
+  vtkSmartPointer<vtkVectorIrradianceMapper> VectorMapper;
+  vtkSmartPointer<vtkActor> VectorActor;
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkRenderWindow> RenderWindow;
   vtkSmartPointer<vtkToneMappingPass> ToneMappingPass;

@@ -206,6 +206,31 @@ if (NOT n EQUAL 4 OR rows MATCHES "nan" OR NOT method STREQUAL "meshless" OR NOT
 endif ()
 expect_exit(2 "${PROGRAM}" solve contact --method meshless --point-levels 0 --output "${WORK}/bad.vtp")
 
+# Face cluster radiosity: a closed room of reflectance 0.99 against its closed
+# form, the irradiance vectors in the output, the solution statistics in the
+# report; bad bases refused.
+file(WRITE "${WORK}/cube_probes.csv" "x,y,z,nx,ny,nz\n0.3,0.6,0,0,0,1\n1,0.5,0.2,-1,0,0\n0.5,0.5,1,0,0,-1\n")
+expect_exit(0 "${PROGRAM}" solve closed-room-0.99 --method facecluster --probes "${WORK}/cube_probes.csv"
+  --reference analytic --probe-output "${WORK}/fc_values.csv" --output "${WORK}/fc.vtp"
+  --report "${WORK}/fc.json" --image "${WORK}/fc.png" --size 64)
+file(READ "${WORK}/fc.json" fc)
+string(JSON method GET "${fc}" method)
+string(JSON leaves GET "${fc}" facecluster leaf_elements)
+string(JSON transfers GET "${fc}" facecluster transfers)
+string(JSON rms GET "${fc}" error probe_output_rms_relative_error)
+file(READ "${WORK}/fc.vtp" vtp)
+if (NOT method STREQUAL "facecluster" OR NOT leaves GREATER 0 OR NOT transfers GREATER 0
+    OR NOT rms LESS 0.01 OR NOT vtp MATCHES "IrradianceVector" OR NOT EXISTS "${WORK}/fc.png")
+  message(FATAL_ERROR "facecluster: method ${method}, ${leaves} leaves, ${transfers} transfers, rms ${rms}")
+endif ()
+expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --irradiance-basis septic
+  --output "${WORK}/bad.vtp")
+expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --irradiance-basis linear
+  --radiosity-basis quadratic --output "${WORK}/bad.vtp")
+if (EXISTS "${WORK}/bad.vtp")
+  message(FATAL_ERROR "bad input wrote an output")
+endif ()
+
 expect_exit(2 "${PROGRAM}" solve shadow --probes "${DATA}/room_probes.csv"
   --reference "${WORK}/shadow_values.csv" --output "${WORK}/bad.vtp")
 expect_exit(2 "${PROGRAM}" solve cornell --probes "${DATA}/room_probes.csv"

@@ -67,6 +67,10 @@ struct SolveArguments
   int PointLevels = 5;
   int GatherRays = 256;
   double VariationThreshold = 0.01;
+  // --method facecluster
+  std::string IrradianceBasis = "linear";
+  std::string RadiosityBasis = "constant";
+  double TransferTolerance = 1e-5; ///< relative to the emitted power
 };
 
 double Since(Clock::time_point t);

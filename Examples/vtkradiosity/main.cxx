@@ -30,6 +30,7 @@
 #include "Radiosity/AnalyticReference.h"
 #include "Radiosity/DiscontinuityMesher.h"
 #include "Radiosity/HierarchicalRadiosity.h"
+#include "Radiosity/FaceClusterRadiosity.h"
 #include "Radiosity/MeshlessRadiosity.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/PathTracer.h"
@@ -56,12 +57,31 @@ int RunSolve(const SolveArguments& args)
 {
   const auto start = Clock::now();
   if (args.Method != "auto" && args.Method != "progressive" && args.Method != "hierarchical" &&
-    args.Method != "meshless")
+    args.Method != "meshless" && args.Method != "facecluster")
   {
     throw BadInput("--method " + args.Method +
-      ": not available in this version (available: progressive, hierarchical, meshless, auto)");
+      ": not available in this version (available: progressive, hierarchical, meshless, "
+      "facecluster, auto)");
   }
   const bool meshless = args.Method == "meshless";
+  const bool faceCluster = args.Method == "facecluster";
+  auto basis = [](const std::string& option, const std::string& name) {
+    for (int b = vtkRadiosityFilter::ConstantBasis; b <= vtkRadiosityFilter::CubicBasis; ++b)
+    {
+      if (name == vtkRadiosityFilter::GetBasisName(b))
+      {
+        return b;
+      }
+    }
+    throw BadInput(option + " " + name + ": not a basis (constant, linear, bilinear, quadratic, cubic)");
+  };
+  const int irradianceBasis = basis("--irradiance-basis", args.IrradianceBasis);
+  const int radiosityBasis = basis("--radiosity-basis", args.RadiosityBasis);
+  if (radiosityBasis > irradianceBasis)
+  {
+    throw BadInput("--radiosity-basis " + args.RadiosityBasis + " is larger than --irradiance-basis " +
+      args.IrradianceBasis + " (the radiosity basis is a subset of the irradiance one)");
+  }
   if (!args.ReferenceExr.empty() && args.Exr.empty())
   {
     throw BadInput("--reference-exr needs --exr (the same view, path traced)");
@@ -169,7 +189,12 @@ int RunSolve(const SolveArguments& args)
 
   vtkNew<vtkRadiosityFilter> filter;
   filter->SetInputData(input);
-  filter->SetMethod(meshless ? vtkRadiosityFilter::Meshless : vtkRadiosityFilter::Progressive);
+  filter->SetMethod(meshless ? vtkRadiosityFilter::Meshless
+      : faceCluster        ? vtkRadiosityFilter::FaceCluster
+                           : vtkRadiosityFilter::Progressive);
+  filter->SetIrradianceBasis(irradianceBasis);
+  filter->SetRadiosityBasis(radiosityBasis);
+  filter->SetTransferTolerance(args.TransferTolerance);
   filter->SetPointRadius(args.PointRadius);
   filter->SetPointLevels(args.PointLevels);
   filter->SetGatherRays(args.GatherRays);
@@ -219,13 +244,13 @@ int RunSolve(const SolveArguments& args)
     gathered = evaluator.GatheredCount();
   }
   WriteProbesAndHistory(args, probes, probeValues, stats.History,
-    meshless ? ", meshless radiosity" : ", progressive refinement");
+    meshless ? ", meshless radiosity" : faceCluster ? ", face cluster radiosity" : ", progressive refinement");
 
   if (!args.Report.empty())
   {
     const Scene& scene = filter->GetScene();
     nlohmann::json report;
-    report["method"] = meshless ? "meshless" : "progressive";
+    report["method"] = meshless ? "meshless" : faceCluster ? "facecluster" : "progressive";
     report["parameters"] = { { "tolerance", filter->GetTolerance() },
       { "max_iterations", filter->GetMaxIterations() }, { "max_time_s", filter->GetMaxTime() },
       { "threads", filter->GetNumberOfThreads() }, { "overshooting", filter->GetOvershooting() },
@@ -276,6 +301,18 @@ int RunSolve(const SolveArguments& args)
       phases["direct_light_s"] = t.DirectSeconds;
       phases["bounces_s"] = t.BounceSeconds;
     }
+    if (faceCluster)
+    {
+      const FaceClusterStatistics& f = filter->GetFaceClusterSolution()->Statistics();
+      report["parameters"]["irradiance_basis"] = args.IrradianceBasis;
+      report["parameters"]["radiosity_basis"] = args.RadiosityBasis;
+      report["parameters"]["transfer_tolerance"] = args.TransferTolerance;
+      report["facecluster"] = { { "clusters", filter->GetFaceClusterSolution()->Hierarchy().NumberOfClusters() },
+        { "elements", f.Elements }, { "leaf_elements", f.LeafElements }, { "transfers", f.Transfers },
+        { "refinements", f.Refinements }, { "solution_memory_bytes", f.SolutionBytes },
+        { "hierarchy_memory_bytes", filter->GetFaceClusterSolution()->Hierarchy().MemoryBytes() } };
+      phases["hierarchy_s"] = f.HierarchySeconds;
+    }
     ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {
@@ -311,7 +348,7 @@ int main(int argc, char* argv[])
   SolveArguments solve;
   CLI::App* solveCommand = app.add_subcommand("solve", "solve a scene");
   solveCommand->add_option("SCENE", solve.Scene, "scene file or 'cornell'")->required();
-  solveCommand->add_option("--method", solve.Method, "progressive|hierarchical|facecluster|meshless|auto");
+  solveCommand->add_option("--method", solve.Method, "progressive|hierarchical|meshless|facecluster|auto");
   solveCommand->add_option("--tolerance", solve.Tolerance, "relative unshot power to stop at")
     ->check(CLI::Range(1e-12, 1.0));
   solveCommand->add_option("--max-iterations", solve.MaxIterations)->check(CLI::NonNegativeNumber);
@@ -340,6 +377,13 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--variation-threshold", solve.VariationThreshold,
     "meshless: receiver refinement threshold relative to the largest direct irradiance (default 0.01)")
     ->check(CLI::Range(0.0, 1e6));
+  solveCommand->add_option("--irradiance-basis", solve.IrradianceBasis,
+    "facecluster: constant|linear|bilinear|quadratic|cubic (default linear)");
+  solveCommand->add_option("--radiosity-basis", solve.RadiosityBasis,
+    "facecluster: a basis no larger than the irradiance one (default constant)");
+  solveCommand->add_option("--transfer-tolerance", solve.TransferTolerance,
+    "facecluster: transfer error accepted, relative to the emitted power (default 1e-5)")
+    ->check(CLI::Range(1e-12, 1.0));
   solveCommand->add_option("--link-tolerance", solve.LinkTolerance,
     "hierarchical: link refinement threshold on B F, relative to the scene's mean irradiance "
     "(default 0.05)")

@@ -571,4 +571,53 @@ std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors
   }
   return out;
 }
+
+SolutionMesh FaceClusterRadiosity::Surface() const
+{
+  const Scene& scene = this->GetScene();
+  SolutionMesh out;
+  out.Points = scene.Points;
+  out.Triangles = scene.Triangles;
+  out.PointIrradiance.assign(scene.Points.size(), RGB(0.0));
+  out.PointRadiosity.assign(scene.Points.size(), RGB(0.0));
+  std::vector<double> weight(scene.Points.size(), 0.0);
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    const auto id = static_cast<std::uint32_t>(t);
+    const Vec3 n = scene.Normal(t);
+    const Material& m = scene.Materials[t];
+    ElementSamples samples;
+    for (int k = 0; k < 3; ++k)
+    {
+      samples.Corner[k] = this->IrradianceAt(id, scene.Vertex(t, k), n);
+    }
+    samples.Centre = this->IrradianceAt(id, scene.Centroid(t), n);
+    const RGB h = samples.Mean();
+    const std::int32_t leaf = this->LeafOf(id);
+    out.CellIrradiance.push_back(h);
+    out.CellRadiosity.push_back(m.Emission + m.Reflectance * h);
+    out.ElementId.push_back(leaf >= 0 ? this->Nodes[leaf].Cluster : 0u);
+    out.Level.push_back(static_cast<std::uint16_t>(leaf >= 0 ? this->Nodes[leaf].Data.Depth : 0));
+    out.SourceTriangle.push_back(id);
+    out.Samples.push_back(samples);
+    out.Normals.push_back(n);
+    const double area = scene.Area(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t v = scene.Triangles[t].V[k];
+      out.PointIrradiance[v] += area * samples.Corner[k];
+      out.PointRadiosity[v] += area * (m.Emission + m.Reflectance * samples.Corner[k]);
+      weight[v] += area;
+    }
+  }
+  for (std::size_t p = 0; p < weight.size(); ++p)
+  {
+    if (weight[p] > 0.0)
+    {
+      out.PointIrradiance[p] /= weight[p];
+      out.PointRadiosity[p] /= weight[p];
+    }
+  }
+  return out;
+}
 } // namespace radiosity

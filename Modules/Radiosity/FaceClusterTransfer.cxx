@@ -103,17 +103,20 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     rectangle[3] = BoxPoint(ej, 0.0, 1.0);
     coverage = ej.NormalProjectedArea() / RectangleArea(ej);
   }
-  auto exactVector = [&](const Vec3& x) {
+  // Clipped to each receiver node's hemisphere: the parts of an emitter
+  // below a node's tangent plane would otherwise cancel the parts above in
+  // n . E (a floor running under a block's face).
+  auto exactVector = [&](const Vec3& x, const Vec3& n) {
     if (flat)
     {
-      return coverage * PointToPolygonVectorFormFactor(x, rectangle, 4);
+      return coverage * PointToPolygonVectorFormFactor(x, rectangle, 4, &n);
     }
     Vec3 sum(0.0);
     for (std::uint32_t k = ej.First; k < ej.First + ej.Count; ++k)
     {
       const std::uint32_t t = hierarchy.TriangleOrder()[k];
       const Vec3 tri[3] = { scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) };
-      sum += PointToPolygonVectorFormFactor(x, tri, 3);
+      sum += PointToPolygonVectorFormFactor(x, tri, 3, &n);
     }
     return sum;
   };
@@ -137,6 +140,10 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
         continue;
       }
       const Vec3 dir = r / std::sqrt(d2);
+      if (glm::dot(rr.Normals[p], dir) <= 0.0)
+      {
+        continue; // below the node's horizon
+      }
       const double v = visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing);
       visibleSum += er.Weights[q] * v;
       weightSum += er.Weights[q];
@@ -155,7 +162,7 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     if (exactConstant)
     {
       const double v = weightSum > 0.0 ? visibleSum / weightSum : 1.0;
-      atNode[p * nb] = v * exactVector(x);
+      atNode[p * nb] = v * exactVector(x, rr.Normals[p]);
     }
     for (int a = 0; a < ne; ++a)
     {

@@ -34,8 +34,23 @@ std::size_t ClipToHemisphere(
 }
 }
 
-Vec3 PointToPolygonVectorFormFactor(const Vec3& p, const Vec3* poly, std::size_t count)
+Vec3 PointToPolygonVectorFormFactor(const Vec3& p, const Vec3* poly, std::size_t count, const Vec3* horizon)
 {
+  if (horizon && count >= 3 && count <= 8)
+  {
+    Vec3 areaVector(0.0);
+    for (std::size_t i = 1; i + 1 < count; ++i)
+    {
+      areaVector += glm::cross(poly[i] - poly[0], poly[i + 1] - poly[0]);
+    }
+    if (glm::dot(p - poly[0], areaVector) <= 0)
+    {
+      return Vec3(0.0);
+    }
+    Vec3 clipped[MaxClipped];
+    const std::size_t m = ClipToHemisphere(p, *horizon, poly, count, clipped);
+    return m < 3 ? Vec3(0.0) : PointToPolygonVectorFormFactor(p, clipped, m, nullptr);
+  }
   Vec3 areaVector(0.0), centroid(0.0);
   for (std::size_t i = 1; i + 1 < count; ++i)
   {

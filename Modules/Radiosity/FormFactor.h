@@ -27,10 +27,13 @@ double PointToPolygonFormFactor(const Vec3& p, const Vec3& n, const Vec3* poly, 
 /// The vector form factor of a one-sided convex polygon at p (Lambert's
 /// contour integral without a receiver: (1 / 2 pi) sum of theta_i times the
 /// unit normal of the plane through p and edge i), pointing toward the
-/// polygon; radiosity times it is the irradiance vector of vector radiosity,
-/// and n . it is the form factor of a receiver the polygon is wholly in front
-/// of. Zero when p is behind the polygon.
-Vec3 PointToPolygonVectorFormFactor(const Vec3& p, const Vec3* poly, std::size_t count);
+/// polygon; radiosity times it is the irradiance vector of vector radiosity.
+/// With a receiver normal `horizon`, the polygon is first clipped to the
+/// receiver's hemisphere, so that n . it is the receiver's form factor even
+/// when the polygon straddles its tangent plane. Zero when p is behind the
+/// polygon.
+Vec3 PointToPolygonVectorFormFactor(
+  const Vec3& p, const Vec3* poly, std::size_t count, const Vec3* horizon = nullptr);
 
 /// Convenience overload for a triangle.
 inline double PointToTriangleFormFactor(

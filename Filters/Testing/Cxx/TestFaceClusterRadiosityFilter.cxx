@@ -1,0 +1,147 @@
+// Face cluster radiosity through the VTK pipeline: vtkFaceClusterHierarchyFilter
+// -> vtkRadiosityFilter (Method FaceCluster, the hierarchy taken from
+// upstream, not rebuilt) -> vtkRadiosityView, which shades the irradiance
+// vectors per pixel with vtkVectorIrradianceMapper. A closed room checks the
+// point arrays against the exact answer; the image is the Cornell box,
+// subdivided so that the face clusters have triangles to refine into, with
+// a glossy tall block (Phong exponent 10).
+#include "vtkCellData.h"
+#include "vtkCornellBoxSource.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFaceClusterHierarchyFilter.h"
+#include "vtkFloatingPointExceptions.h"
+#include "vtkLinearSubdivisionFilter.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityView.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "Radiosity/FaceClusterRadiosity.h"
+#include "Radiosity/SceneGenerators.h"
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+namespace
+{
+bool Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+  }
+  return ok;
+}
+}
+
+int TestFaceClusterRadiosityFilter(int argc, char* argv[])
+{
+  vtkFloatingPointExceptions::Disable();
+  bool ok = true;
+
+  // A closed room of reflectance 0.9: irradiance 1 / (1 - 0.9) = 10 everywhere.
+  vtkSmartPointer<vtkPolyData> room =
+    vtkRadiositySceneConverter::FromScene(radiosity::MakeClosedCube(1.0, 4, 0.9, 1.0));
+  vtkNew<vtkFaceClusterHierarchyFilter> clusters;
+  clusters->SetInputData(room);
+  vtkNew<vtkRadiosityFilter> radiosity;
+  radiosity->SetInputConnection(clusters->GetOutputPort());
+  radiosity->SetMethodToFaceCluster();
+  radiosity->Update();
+  ok &= Check(radiosity->GetLastError().empty(), "solve: " + radiosity->GetLastError());
+  const auto solution = radiosity->GetFaceClusterSolution();
+  ok &= Check(solution && solution->SharedHierarchy() == clusters->GetHierarchy(),
+    "the upstream hierarchy is used, not rebuilt");
+  vtkPolyData* out = radiosity->GetOutput();
+  vtkDataArray* vectors = out->GetPointData()->GetArray("IrradianceVector");
+  vtkDataArray* irradiance = out->GetPointData()->GetArray("Irradiance");
+  ok &= Check(vectors && vectors->GetNumberOfComponents() == 9 &&
+      vectors->GetNumberOfTuples() == out->GetNumberOfPoints(),
+    "IrradianceVector, 9 components per point");
+  ok &= Check(irradiance != nullptr, "Irradiance");
+  if (!ok)
+  {
+    return EXIT_FAILURE;
+  }
+  double worst = 0.0;
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::abs(irradiance->GetComponent(p, c) / 10.0 - 1.0));
+    }
+  }
+  std::cout << "closed room: worst point irradiance error " << worst << ", "
+            << solution->Statistics().LeafElements << " leaf elements\n";
+  ok &= Check(worst < 0.02, "point irradiance within 2% of the exact answer");
+
+  // The Cornell box, each triangle split into 64, the tall block glossy.
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(box->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> subdivide;
+  subdivide->SetNumberOfSubdivisions(3);
+  subdivide->SetInputConnection(triangles->GetOutputPort());
+  subdivide->Update();
+  vtkNew<vtkPolyData> scene;
+  scene->DeepCopy(subdivide->GetOutput());
+  vtkDataArray* objects = scene->GetCellData()->GetArray("ObjectId");
+  vtkSmartPointer<vtkDataArray> specular = vtkRadiositySceneConverter::NewDoubleArray(
+    "Specular", 3, scene->GetNumberOfCells());
+  vtkSmartPointer<vtkDataArray> shininess = vtkRadiositySceneConverter::NewDoubleArray(
+    "Shininess", 1, scene->GetNumberOfCells());
+  for (vtkIdType c = 0; c < scene->GetNumberOfCells(); ++c)
+  {
+    const bool tall = objects->GetComponent(c, 0) == 7; // "tall block"
+    specular->SetTuple3(c, tall ? 0.5 : 0.0, tall ? 0.5 : 0.0, tall ? 0.5 : 0.0);
+    shininess->SetTuple1(c, 10.0);
+  }
+  scene->GetCellData()->AddArray(specular);
+  scene->GetCellData()->AddArray(shininess);
+  vtkNew<vtkRadiosityFilter> cornell;
+  cornell->SetInputData(scene);
+  cornell->SetMethodToFaceCluster();
+  cornell->Update();
+  ok &= Check(cornell->GetLastError().empty(), "Cornell solve: " + cornell->GetLastError());
+  vtkNew<vtkPolyData> shaded;
+  shaded->ShallowCopy(cornell->GetOutput());
+  // The glossy materials ride along for the display.
+  shaded->GetCellData()->AddArray(specular);
+  shaded->GetCellData()->AddArray(shininess);
+  std::cout << "Cornell box: " << scene->GetNumberOfCells() << " triangles, "
+            << cornell->GetFaceClusterSolution()->Statistics().LeafElements << " leaf elements, "
+            << cornell->GetFaceClusterSolution()->Statistics().Transfers << " transfers, "
+            << cornell->GetStatistics().SolveSeconds << " s\n";
+
+  double position[3], focal[3], up[3], angle;
+  vtkCornellBoxSource::GetCamera(position, focal, up, angle);
+  vtkNew<vtkRadiosityView> view;
+  view->SetInputData(shaded);
+  view->SetSize(400, 400);
+  view->SetCamera(position, focal, up, angle);
+  ok &= Check(view->UsesVectorIrradianceMapper(), "the view shades the irradiance vectors");
+  ok &= Check(view->Render(), "render");
+  vtkNew<vtkUnsignedCharArray> pixels;
+  view->GetRenderWindow()->GetRGBACharPixelData(0, 0, 399, 399, 1, pixels);
+  double mean = 0.0;
+  for (vtkIdType i = 0; i < pixels->GetNumberOfValues(); ++i)
+  {
+    mean += (i % 4 == 3) ? 0.0 : pixels->GetValue(i) / (0.75 * pixels->GetNumberOfValues());
+  }
+  std::cout << "mean pixel " << mean << "\n";
+  ok &= Check(mean > 20.0, "the image is not dark");
+  if (!ok)
+  {
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImage(view->GetRenderWindow());
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
