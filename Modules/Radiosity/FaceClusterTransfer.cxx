@@ -2,6 +2,8 @@
 
 #include "Radiosity/FormFactor.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -126,8 +128,8 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
   double departure = 0.0;
   std::vector<Vec3> atNode(np * nb, Vec3(0.0)); // sum_q Phi_b(y_q) g_pq
   std::vector<double> upper(np, 0.0), lower(np, std::numeric_limits<double>::infinity());
-  for (std::size_t p = 0; p < np; ++p)
-  {
+  // The receiver's nodes in parallel: each its emitter nodes' rays.
+  tbb::parallel_for(std::size_t(0), np, [&](std::size_t p) {
     const Vec3& x = rr.Points[p];
     double visibleSum = 0.0, weightSum = 0.0;
     for (std::size_t q = 0; q < nq; ++q)
@@ -164,6 +166,9 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
       const double v = weightSum > 0.0 ? visibleSum / weightSum : 1.0;
       atNode[p * nb] = v * exactVector(x, rr.Normals[p]);
     }
+  });
+  for (std::size_t p = 0; p < np; ++p)
+  {
     for (int a = 0; a < ne; ++a)
     {
       const double d = rr.Dual[p * rr.Functions + a];
