@@ -28,8 +28,12 @@ namespace radiosity
 struct TransferRule
 {
   int Nodes = 3; ///< Gauss-Legendre nodes per axis of a cluster's rectangle
-  /// Shadow-size threshold of the visibility, in receiver node spacings.
-  double VisibilityThreshold = 1.0;
+  /// Shadow-size threshold of the multiresolution visibility, in receiver
+  /// node spacings; 0 (the default) is exact visibility down to the
+  /// triangles. The paper's semi-transparent clusters (1) darken concave
+  /// surfaces, whose boxes bulge into the space the rays cross: 4.6% worst
+  /// error inside a 1280-facet sphere against 0.98% exact, at equal time.
+  double VisibilityThreshold = 0.0;
 };
 
 /// One side of a transfer: a cluster, its id, its surface rule, and how many
