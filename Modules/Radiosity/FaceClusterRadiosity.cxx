@@ -620,4 +620,10 @@ SolutionMesh FaceClusterRadiosity::Surface() const
   }
   return out;
 }
+
+std::vector<RGB> FaceClusterRadiosity::Evaluate(const std::vector<Probe>& probes) const
+{
+  return EvaluateOnNearestTriangles(this->GetScene(), probes,
+    [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->IrradianceAt(t, x, n); });
+}
 } // namespace radiosity

@@ -24,6 +24,7 @@
 #define Radiosity_FaceClusterRadiosity_h
 
 #include "Radiosity/FaceClusterTransfer.h"
+#include "Radiosity/ProbeEvaluator.h"
 #include "Radiosity/SolutionMesh.h"
 #include "Radiosity/SolverTypes.h"
 
@@ -98,6 +99,8 @@ public:
   /// the mean over the triangles using the point of their leaf elements'
   /// expansions at it (section 3.5: what the display interpolates).
   std::vector<std::array<double, 9>> VertexIrradianceVectors() const;
+  /// Irradiance at probes, on the nearest input triangle facing each.
+  std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
   /// The input triangles with the SPEC output fields: per triangle, the
   /// irradiance of its leaf element's expansion at its corners and centre;
   /// `ElementId` is the leaf element's cluster, `Level` its depth.

@@ -376,41 +376,8 @@ SolutionMesh MeshlessRadiosity::Surface() const
 
 std::vector<RGB> MeshlessRadiosity::Evaluate(const std::vector<Probe>& probes) const
 {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<RGB> values(probes.size(), RGB(nan));
-  const Scene& scene = this->SourceScene;
-  tbb::parallel_for(std::size_t(0), probes.size(), [&](std::size_t i) {
-    const Vec3 n = glm::normalize(probes[i].Normal);
-    double best = std::numeric_limits<double>::infinity();
-    std::int64_t nearest = -1;
-    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-    {
-      if (glm::dot(scene.Normal(t), n) <= 0)
-      {
-        continue;
-      }
-      double u, v, w;
-      if (!ProjectOnTriangle(probes[i].Position, scene.Vertex(t, 0), scene.Vertex(t, 1),
-            scene.Vertex(t, 2), u, v, w))
-      {
-        continue;
-      }
-      const Vec3 q = u * scene.Vertex(t, 0) + v * scene.Vertex(t, 1) + w * scene.Vertex(t, 2);
-      const Vec3 c = std::clamp(u, 0.0, 1.0) * scene.Vertex(t, 0) +
-        std::clamp(v, 0.0, 1.0) * scene.Vertex(t, 1) + std::clamp(w, 0.0, 1.0) * scene.Vertex(t, 2);
-      const double d = glm::length(probes[i].Position - q) + glm::length(q - c);
-      if (d < best)
-      {
-        best = d;
-        nearest = static_cast<std::int64_t>(t);
-      }
-    }
-    if (nearest >= 0)
-    {
-      values[i] = this->IrradianceAt(probes[i].Position, n, static_cast<std::uint32_t>(nearest));
-    }
-  });
-  return values;
+  return EvaluateOnNearestTriangles(this->SourceScene, probes,
+    [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->IrradianceAt(x, n, t); });
 }
 
 SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)

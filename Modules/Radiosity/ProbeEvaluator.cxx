@@ -7,6 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -113,5 +114,44 @@ RGB ProbeEvaluator::Gather(const Probe& probe) const
     }
   }
   return h;
+}
+
+std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vector<Probe>& probes,
+  const std::function<RGB(std::uint32_t triangle, const Vec3& x, const Vec3& n)>& at)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<RGB> values(probes.size(), RGB(nan));
+  tbb::parallel_for(std::size_t(0), probes.size(), [&](std::size_t i) {
+    const Vec3 n = glm::normalize(probes[i].Normal);
+    double best = std::numeric_limits<double>::infinity();
+    std::int64_t nearest = -1;
+    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+    {
+      if (glm::dot(scene.Normal(t), n) <= 0)
+      {
+        continue;
+      }
+      double u, v, w;
+      if (!ProjectOnTriangle(probes[i].Position, scene.Vertex(t, 0), scene.Vertex(t, 1),
+            scene.Vertex(t, 2), u, v, w))
+      {
+        continue;
+      }
+      const Vec3 q = u * scene.Vertex(t, 0) + v * scene.Vertex(t, 1) + w * scene.Vertex(t, 2);
+      const Vec3 c = std::clamp(u, 0.0, 1.0) * scene.Vertex(t, 0) +
+        std::clamp(v, 0.0, 1.0) * scene.Vertex(t, 1) + std::clamp(w, 0.0, 1.0) * scene.Vertex(t, 2);
+      const double d = glm::length(probes[i].Position - q) + glm::length(q - c);
+      if (d < best)
+      {
+        best = d;
+        nearest = static_cast<std::int64_t>(t);
+      }
+    }
+    if (nearest >= 0)
+    {
+      values[i] = at(static_cast<std::uint32_t>(nearest), probes[i].Position, n);
+    }
+  });
+  return values;
 }
 } // namespace radiosity

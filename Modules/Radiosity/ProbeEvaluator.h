@@ -5,6 +5,8 @@
 
 #include "Radiosity/SolutionMesh.h"
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -17,6 +19,16 @@ struct Probe
   Vec3 Position{ 0.0 };
   Vec3 Normal{ 0.0, 0.0, 1.0 };
 };
+
+/**
+ * For each probe, `at` on the input triangle nearest to it among those
+ * facing its normal (the distance to the triangle's plane plus the distance
+ * from the foot to the triangle): how the methods whose solution lives on
+ * the input triangles (meshless, face cluster) answer probes. NaN where no
+ * triangle faces the probe.
+ */
+std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vector<Probe>& probes,
+  const std::function<RGB(std::uint32_t triangle, const Vec3& x, const Vec3& n)>& at);
 
 class ProbeEvaluator
 {
