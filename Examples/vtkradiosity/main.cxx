@@ -237,6 +237,11 @@ int RunSolve(const SolveArguments& args)
     // SPEC: the meshless method's probes come from its Shepard field.
     probeValues = filter->GetMeshlessSolution()->Evaluate(probes);
   }
+  else if ((!args.ProbeOutput.empty() || !reference.empty()) && faceCluster)
+  {
+    // SPEC: the face cluster method's from its vector irradiance bases.
+    probeValues = filter->GetFaceClusterSolution()->Evaluate(probes);
+  }
   else if (!args.ProbeOutput.empty() || !reference.empty())
   {
     ProbeEvaluator evaluator(solution, filter->GetScene());
