@@ -61,8 +61,7 @@ bool ClusterFaces(const FaceCluster& from, const FaceCluster& to)
 
 double SelfTransferError(const FaceCluster& c, double radiosityMax)
 {
-  const double rho = std::max({ c.ReflectanceMax.x, c.ReflectanceMax.y, c.ReflectanceMax.z });
-  return rho * radiosityMax * (c.SelfFormFactorUpper() - c.SelfFormFactorLower()) * c.Area;
+  return radiosityMax * (c.SelfFormFactorUpper() - c.SelfFormFactorLower()) * c.Area;
 }
 
 Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter,
@@ -123,7 +122,6 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     return sum;
   };
 
-  const double rhoMax = std::max({ ri.ReflectanceMax.x, ri.ReflectanceMax.y, ri.ReflectanceMax.z });
   const std::size_t np = rr.Size(), nq = er.Size();
   double departure = 0.0;
   std::vector<Vec3> atNode(np * nb, Vec3(0.0)); // sum_q Phi_b(y_q) g_pq
@@ -193,7 +191,7 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     const double lo = std::isfinite(lower[p]) ? lower[p] : 0.0;
     departure = std::max({ departure, std::abs(bfa - upper[p]), std::abs(bfa - lo) });
   }
-  out.Error = rhoMax * departure;
+  out.Error = departure;
   return out;
 }
 } // namespace radiosity
