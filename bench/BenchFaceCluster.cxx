@@ -12,6 +12,7 @@
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/FaceClusterRadiosity.h"
 #include "Radiosity/PathTracer.h"
+#include "Radiosity/SceneGenerators.h"
 #include "Radiosity/StandardScenes.h"
 #include "Radiosity/SystemInfo.h"
 
@@ -27,6 +28,33 @@ using namespace radiosity;
 
 namespace
 {
+// Every triangle split into 4^levels at edge midpoints, materials and objects
+// kept: face cluster radiosity refines no further than its input.
+Scene Subdivided(const Scene& scene, int levels)
+{
+  Scene out = scene;
+  for (int l = 0; l < levels; ++l)
+  {
+    SubdivideAtMidpoints(out.Points, out.Triangles);
+    auto repeat = [](auto& values) {
+      std::remove_reference_t<decltype(values)> four;
+      four.reserve(4 * values.size());
+      for (const auto& v : values)
+      {
+        four.insert(four.end(), 4, v);
+      }
+      values.swap(four);
+    };
+    repeat(out.Materials);
+    repeat(out.ObjectIds);
+    if (!out.SourceCells.empty())
+    {
+      repeat(out.SourceCells);
+    }
+  }
+  return out;
+}
+
 const char* BasisName(BasisKind kind)
 {
   switch (kind)
@@ -124,10 +152,29 @@ int main(int argc, char* argv[])
   csv << "scene,transfer_tolerance,time_s,leaf_elements,transfers,iterations,rms_error,max_rel_error\n";
   const std::vector<double> tolerances =
     quick ? std::vector<double>{ 1e-4 } : std::vector<double>{ 1e-3, 1e-4, 1e-5 };
+  struct Case
+  {
+    std::string Name;
+    Scene Geometry;
+    std::vector<Probe> Probes;
+    std::vector<double> Tolerances;
+  };
+  std::vector<Case> cases;
   for (const StandardScene& standard : StandardScenes())
   {
     const Scene scene = standard.Make();
-    const std::vector<Probe> probes = standard.Probes(scene);
+    cases.push_back({ standard.Name, scene, standard.Probes(scene), tolerances });
+    // The coarse scenes again, each triangle split in 16, at the default
+    // tolerance: what the method needs of its input.
+    if (!quick && (standard.Name == "cornell" || standard.Name == "shadow" || standard.Name == "contact"))
+    {
+      cases.push_back({ standard.Name + " x16", Subdivided(scene, 2), standard.Probes(scene), { 1e-5 } });
+    }
+  }
+  for (const Case& c : cases)
+  {
+    const Scene& scene = c.Geometry;
+    const std::vector<Probe>& probes = c.Probes;
     std::vector<RGB> reference;
     std::string kind;
     AnalyticReference analytic;
@@ -147,7 +194,7 @@ int main(int argc, char* argv[])
       }
       kind = "path traced";
     }
-    for (double tolerance : tolerances)
+    for (double tolerance : c.Tolerances)
     {
       FaceClusterSettings settings;
       settings.TransferTolerance = tolerance;
@@ -157,10 +204,10 @@ int main(int argc, char* argv[])
       const FaceClusterStatistics& f = solver.Statistics();
       char row[256];
       std::snprintf(row, sizeof row, "| %s | %s | %.0e | %.3f | %zu | %zu | %lld | %.2e | %.2e |\n",
-        standard.Name.c_str(), kind.c_str(), tolerance, stats.SolveSeconds, f.LeafElements,
+        c.Name.c_str(), kind.c_str(), tolerance, stats.SolveSeconds, f.LeafElements,
         f.Transfers, stats.Iterations, e.Rms, e.Max);
       md << row;
-      csv << standard.Name << "," << tolerance << "," << stats.SolveSeconds << "," << f.LeafElements
+      csv << c.Name << "," << tolerance << "," << stats.SolveSeconds << "," << f.LeafElements
           << "," << f.Transfers << "," << stats.Iterations << "," << e.Rms << "," << e.Max << "\n";
       std::cout << row << std::flush;
     }

@@ -480,6 +480,11 @@ void FaceClusterHierarchy::LayOut()
       stack.push_back({ c.Child[0], depth + 1 });
     }
   }
+  this->Cumulative.assign(this->Order.size() + 1, 0.0);
+  for (std::size_t i = 0; i < this->Order.size(); ++i)
+  {
+    this->Cumulative[i + 1] = this->Cumulative[i] + this->Source.Area(this->Order[i]);
+  }
   // Ranges bottom-up: children have smaller ids than their parent.
   for (std::size_t i = 0; i < this->Internal.size(); ++i)
   {
@@ -615,6 +620,7 @@ std::size_t FaceClusterHierarchy::MemoryBytes() const
   return this->Internal.capacity() * sizeof(FaceCluster) +
     (this->LeafParent.capacity() + this->LeafDepth.capacity() + this->LeafPosition.capacity() +
       this->Order.capacity() + this->RootIds.capacity()) *
-    sizeof(std::uint32_t);
+    sizeof(std::uint32_t) +
+    this->Cumulative.capacity() * sizeof(double);
 }
 } // namespace radiosity

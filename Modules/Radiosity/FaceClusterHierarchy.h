@@ -124,6 +124,9 @@ public:
   }
   /// Where triangle t is in TriangleOrder().
   std::uint32_t TrianglePosition(std::uint32_t t) const { return this->LeafPosition[t]; }
+  /// Prefix sums of the triangles' areas in TriangleOrder() (size + 1): a
+  /// cluster's area quantiles by binary search.
+  const std::vector<double>& CumulativeArea() const { return this->Cumulative; }
   /// Triangles sorted so that each cluster's are [First, First + Count).
   const std::vector<std::uint32_t>& TriangleOrder() const { return this->Order; }
   std::uint32_t Parent(std::uint32_t id) const;
@@ -150,6 +153,7 @@ private:
   std::vector<std::uint32_t> LeafPosition; // per triangle: index in Order
   std::vector<std::uint32_t> RootIds;
   std::vector<std::uint32_t> Order;
+  std::vector<double> Cumulative;
   int MaxDepth = 0;
   double Seconds = 0.0;
   std::uint64_t Key = 0;

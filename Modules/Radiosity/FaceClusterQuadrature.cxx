@@ -119,7 +119,32 @@ SurfaceRule MakeSurfaceRule(const FaceClusterHierarchy& hierarchy, std::uint32_t
   const Vec3 axis(c.Axis[2]);
   const double plane = std::max(double(c.HalfSize.x), double(c.HalfSize.y));
   const double reach = 1.01 * double(c.HalfSize.z) + 1e-6 * plane + 1e-12;
-  for (int i = 0; i < n; ++i)
+  // A cluster that is not one flat sheet (its faces do not all look along
+  // its normal) gets nodes at its area quantiles instead, on every face:
+  // projected along the normal, the nodes would all land on the faces that
+  // look that way, and the transfer error would never see the others (the
+  // paper: "to ensure subdivision of side-on clusters, we distribute sample
+  // points on the entire cluster").
+  const bool sheet = c.DMinus[2] <= 1e-6f * c.Area && c.NormalProjectedArea() >= 0.98 * double(c.Area);
+  if (!sheet && c.Count > 1)
+  {
+    const std::vector<double>& cumulative = hierarchy.CumulativeArea();
+    const double start = cumulative[c.First], total = cumulative[c.First + c.Count] - start;
+    const int count = n * n;
+    for (int k = 0; k < count; ++k)
+    {
+      const double target = start + (k + 0.5) / count * total;
+      const auto it = std::upper_bound(cumulative.begin() + c.First + 1,
+        cumulative.begin() + c.First + c.Count + 1, target);
+      const std::size_t position = static_cast<std::size_t>(it - cumulative.begin()) - 1;
+      const std::uint32_t t = hierarchy.TriangleOrder()[std::min<std::size_t>(position, c.First + c.Count - 1)];
+      const Scene& scene = hierarchy.GetScene();
+      rule.Points.push_back(scene.Centroid(t));
+      rule.Normals.push_back(scene.Normal(t));
+      rule.Weights.push_back(1.0);
+    }
+  }
+  for (int i = 0; i < n && (sheet || c.Count <= 1); ++i)
   {
     for (int j = 0; j < n; ++j)
     {
