@@ -53,10 +53,8 @@ std::string DescribeCell(vtkPolyData* input, vtkIdType cellId, vtkIdType numberO
 
 //------------------------------------------------------------------------------
 vtkQuadraticInterpolantMapper::vtkQuadraticInterpolantMapper()
-  : InterpolantTexels(new vtkRadiosityTexelBuffer)
+  : vtkRadiosityCellTexelMapper("interpolantTexture", FloatsPerTriangle, "the quadratic interpolants")
 {
-  // The colour is the radiance: never map scalars through a lookup table.
-  this->ScalarVisibilityOff();
   this->MapDataArrayToVertexAttribute(
     BarycentricAttribute, BarycentricArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
@@ -170,8 +168,8 @@ bool vtkQuadraticInterpolantMapper::UpdateTriangles(vtkPolyData* input)
   {
     vtkErrorMacro(<< this->InputError);
     this->Triangles->Initialize();
-    this->TriangleTexels.clear();
-    this->TriangleTexelsTime.Modified();
+    this->CellTexels.clear();
+    this->CellTexelsTime.Modified();
     return false;
   }
 
@@ -206,7 +204,7 @@ bool vtkQuadraticInterpolantMapper::UpdateTriangles(vtkPolyData* input)
   offsets->SetNumberOfTuples(n + 1);
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfTuples(3 * n);
-  this->TriangleTexels.assign(static_cast<size_t>(n) * FloatsPerTriangle, 0.0f);
+  this->CellTexels.assign(static_cast<size_t>(n) * FloatsPerTriangle, 0.0f);
 
   static const float corners[3][2] = { { 0.0f, 0.0f }, { 1.0f, 0.0f }, { 0.0f, 1.0f } };
   vtkCellArray* polys = input->GetPolys();
@@ -237,7 +235,7 @@ bool vtkQuadraticInterpolantMapper::UpdateTriangles(vtkPolyData* input)
     {
       emission->GetTuple(i, e);
     }
-    float* texel = this->TriangleTexels.data() + static_cast<size_t>(i) * FloatsPerTriangle;
+    float* texel = this->CellTexels.data() + static_cast<size_t>(i) * FloatsPerTriangle;
     // Coefficient-major: texel[3k + c] is coefficient k of channel c, the
     // array's component 6c + k.
     for (int k = 0; k < 6; ++k)
@@ -261,7 +259,7 @@ bool vtkQuadraticInterpolantMapper::UpdateTriangles(vtkPolyData* input)
   this->Triangles->SetPoints(points);
   this->Triangles->SetPolys(triangles);
   this->Triangles->GetPointData()->AddArray(st);
-  this->TriangleTexelsTime.Modified();
+  this->CellTexelsTime.Modified();
   return true;
 }
 
@@ -289,67 +287,9 @@ void vtkQuadraticInterpolantMapper::UpdateCameraShiftScale(vtkRenderer* ren, vtk
       BarycentricAttribute, BarycentricArray, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
   }
   this->CurrentInput = this->Triangles;
+  this->DrawnPolyData = this->Triangles;
   this->DrawPiece = true;
   this->Superclass::UpdateCameraShiftScale(ren, actor);
-}
-
-//------------------------------------------------------------------------------
-void vtkQuadraticInterpolantMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
-{
-  if (!this->DrawPiece)
-  {
-    return;
-  }
-  // Builds the VBO/IBOs of the copy (and the superclass's cell-to-cell map).
-  this->Superclass::RenderPieceStart(ren, actor);
-  this->InterpolantTextureReady = this->UpdateInterpolantTexture(ren, actor);
-  if (this->InterpolantTextureReady)
-  {
-    this->InterpolantTexels->Activate();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkQuadraticInterpolantMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
-{
-  if (this->DrawPiece && this->InterpolantTextureReady)
-  {
-    this->Superclass::RenderPieceDraw(ren, actor);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkQuadraticInterpolantMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
-{
-  if (!this->DrawPiece)
-  {
-    return;
-  }
-  if (this->InterpolantTextureReady)
-  {
-    this->InterpolantTexels->Deactivate();
-  }
-  this->Superclass::RenderPieceFinish(ren, actor);
-}
-
-//------------------------------------------------------------------------------
-bool vtkQuadraticInterpolantMapper::UpdateInterpolantTexture(vtkRenderer* ren, vtkActor* actor)
-{
-  const int representation = actor->GetProperty()->GetRepresentation();
-  if (this->InterpolantTexels->IsCurrent(this->TriangleTexelsTime, representation))
-  {
-    return true;
-  }
-  std::string error;
-  if (!this->InterpolantTexels->UploadPerPrimitive(
-        static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()), this->CellCellMap,
-        this->Triangles, representation, this->TriangleTexels, FloatsPerTriangle,
-        "the quadratic interpolants", error))
-  {
-    vtkErrorMacro(<< error);
-    return false;
-  }
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -380,7 +320,7 @@ void vtkQuadraticInterpolantMapper::ReplaceShaderLight(
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
   std::string impl =
     // Six texels per OpenGL primitive (see the class description).
-    "  int interpolantTexel = 6 * (gl_PrimitiveID + PrimitiveIDOffset);\n"
+    "  int interpolantTexel = " + this->CellTexelIndex() + ";\n"
     "  vec4 q0 = texelFetchBuffer(interpolantTexture, interpolantTexel);\n"
     "  vec4 q1 = texelFetchBuffer(interpolantTexture, interpolantTexel + 1);\n"
     "  vec4 q2 = texelFetchBuffer(interpolantTexture, interpolantTexel + 2);\n"
@@ -412,21 +352,11 @@ void vtkQuadraticInterpolantMapper::ReplaceShaderLight(
 }
 
 //------------------------------------------------------------------------------
-void vtkQuadraticInterpolantMapper::ReplaceShaderTCoord(
-  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
-{
-}
-
-//------------------------------------------------------------------------------
 void vtkQuadraticInterpolantMapper::SetMapperShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
   vtkShaderProgram* program = cellBO.Program;
-  if (this->InterpolantTextureReady && program->IsUniformUsed("interpolantTexture"))
-  {
-    program->SetUniformi("interpolantTexture", this->InterpolantTexels->GetTextureUnit());
-  }
   if (program->IsUniformUsed("radianceScale"))
   {
     // Lambertian surfaces: L = B / pi.
@@ -435,16 +365,6 @@ void vtkQuadraticInterpolantMapper::SetMapperShaderParameters(
   if (program->IsUniformUsed("inverseGamma"))
   {
     program->SetUniformf("inverseGamma", static_cast<float>(1.0 / this->Gamma));
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkQuadraticInterpolantMapper::SetLightingShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
-{
-  if (this->DrawingVertices)
-  {
-    this->Superclass::SetLightingShaderParameters(cellBO, ren, actor);
   }
 }
 
@@ -463,14 +383,6 @@ vtkUnsignedCharArray* vtkQuadraticInterpolantMapper::MapScalars(double alpha, in
 }
 
 //------------------------------------------------------------------------------
-void vtkQuadraticInterpolantMapper::ReleaseGraphicsResources(vtkWindow* win)
-{
-  this->InterpolantTexels->ReleaseGraphicsResources(win);
-  this->InterpolantTextureReady = false;
-  this->Superclass::ReleaseGraphicsResources(win);
-}
-
-//------------------------------------------------------------------------------
 void vtkQuadraticInterpolantMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -486,11 +398,6 @@ void vtkQuadraticInterpolantMapper::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << indent << "Triangles (unshared-vertex copy): " << this->Triangles->GetNumberOfCells()
      << " triangles, " << this->Triangles->GetNumberOfPoints() << " points\n";
-  os << indent << "TriangleTexels: " << this->TriangleTexels.size() << " floats\n";
-  os << indent << "InterpolantTexels:\n";
-  this->InterpolantTexels->PrintSelf(os, indent.GetNextIndent());
-  os << indent << "InterpolantTextureReady: " << (this->InterpolantTextureReady ? "true" : "false")
-     << "\n";
   os << indent << "WarnedNoReflectance: " << (this->WarnedNoReflectance ? "true" : "false") << "\n";
   os << indent << "WarnedNoEmission: " << (this->WarnedNoEmission ? "true" : "false") << "\n";
 }

@@ -79,20 +79,17 @@
 
 #include "RadiosityRenderingModule.h" // For export macro
 #include "vtkNew.h"                   // For members
-#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkRadiosityCellTexelMapper.h"
 
-#include <memory> // For members
 #include <string> // For ValidateInput
-#include <vector> // For members
 
 class vtkPolyData;
-class vtkRadiosityTexelBuffer;
 
-class RADIOSITYRENDERING_EXPORT vtkQuadraticInterpolantMapper : public vtkOpenGLPolyDataMapper
+class RADIOSITYRENDERING_EXPORT vtkQuadraticInterpolantMapper : public vtkRadiosityCellTexelMapper
 {
 public:
   static vtkQuadraticInterpolantMapper* New();
-  vtkTypeMacro(vtkQuadraticInterpolantMapper, vtkOpenGLPolyDataMapper);
+  vtkTypeMacro(vtkQuadraticInterpolantMapper, vtkRadiosityCellTexelMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -133,12 +130,6 @@ public:
    */
   static bool ValidateInput(vtkPolyData* input, std::string* message);
 
-  /**
-   * Releases the texture buffer of coefficients with the superclass's
-   * resources.
-   */
-  void ReleaseGraphicsResources(vtkWindow* win) override;
-
   ///@{
   /**
    * Scalar colouring does not apply: the colour is the radiance.
@@ -159,12 +150,6 @@ protected:
   bool UpdateTriangles(vtkPolyData* input);
 
   /**
-   * Uploads the texel data, laid out per OpenGL primitive, when it or the
-   * representation changed; false (with an error) when the GPU cannot hold it.
-   */
-  bool UpdateInterpolantTexture(vtkRenderer* ren, vtkActor* act);
-
-  /**
    * vtkOpenGLPolyDataMapper::RenderPiece calls this after updating the input
    * and before drawing: here the input is checked (an error, and nothing
    * drawn, when ValidateInput refuses it) and the copy replaces it as
@@ -172,27 +157,12 @@ protected:
    */
   void UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* act) override;
 
-  ///@{
-  /**
-   * Draw the copy with the texture buffer bound; nothing for a refused input.
-   */
-  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
-  ///@}
-
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderLight(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  /// Textures do not apply: nothing to replace.
-  void ReplaceShaderTCoord(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
 
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  /// No lighting: sets nothing (except for vertices drawn by VertexVisibility).
-  void SetLightingShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   double Exposure = 1.0;
   double Gamma = 2.2;
@@ -203,17 +173,11 @@ protected:
   vtkPolyData* TrianglesSource = nullptr; // not referenced: compared only
   vtkMTimeType TrianglesSourceTime = 0;
   bool InputValid = false;
-  bool DrawPiece = false;
   std::string InputError;
   bool WarnedNoReflectance = false;
   bool WarnedNoEmission = false;
 
-  // 24 floats per triangle (see the class description), on the host; the
-  // GPU copy is laid out per OpenGL primitive.
-  std::vector<float> TriangleTexels;
-  vtkTimeStamp TriangleTexelsTime;
-  std::unique_ptr<vtkRadiosityTexelBuffer> InterpolantTexels;
-  bool InterpolantTextureReady = false;
+  // CellTexels: 24 floats per triangle (see the class description).
 
 private:
   vtkQuadraticInterpolantMapper(const vtkQuadraticInterpolantMapper&) = delete;

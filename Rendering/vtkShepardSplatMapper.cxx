@@ -87,12 +87,11 @@ vtkDataArray* FieldArray(vtkPolyData* field, const char* name, int components, s
 
 //------------------------------------------------------------------------------
 vtkShepardSplatMapper::vtkShepardSplatMapper()
-  : CellBuffer(new vtkRadiosityTexelBuffer)
+  : vtkRadiosityCellTexelMapper("splatCellTexels", FloatsPerCell, "the surface's materials")
   , PointBuffer(new vtkRadiosityTexelBuffer)
   , Passes(new vtkShepardSplatPasses)
 {
   this->SetNumberOfInputPorts(2);
-  this->ScalarVisibilityOff();
   // The G-buffer holds model coordinates, as the field does.
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
 }
@@ -340,53 +339,8 @@ void vtkShepardSplatMapper::UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* a
     return;
   }
   this->DrawPiece = true;
+  this->DrawnPolyData = input;
   this->Superclass::UpdateCameraShiftScale(ren, actor);
-}
-
-//------------------------------------------------------------------------------
-void vtkShepardSplatMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
-{
-  this->CellTexelsReady = false;
-  if (!this->DrawPiece)
-  {
-    return;
-  }
-  this->Superclass::RenderPieceStart(ren, actor);
-  const int representation = actor->GetProperty()->GetRepresentation();
-  std::string error;
-  this->CellTexelsReady = this->CellBuffer->IsCurrent(this->CellTexelsTime, representation) ||
-    this->CellBuffer->UploadPerPrimitive(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()),
-      this->CellCellMap, this->CurrentInput, representation, this->CellTexels, FloatsPerCell,
-      "the surface's materials", error);
-  if (!this->CellTexelsReady)
-  {
-    vtkErrorMacro(<< error);
-    return;
-  }
-  this->CellBuffer->Activate();
-}
-
-//------------------------------------------------------------------------------
-void vtkShepardSplatMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
-{
-  if (this->DrawPiece && this->CellTexelsReady)
-  {
-    this->Superclass::RenderPieceDraw(ren, actor);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkShepardSplatMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
-{
-  if (!this->DrawPiece)
-  {
-    return;
-  }
-  if (this->CellTexelsReady)
-  {
-    this->CellBuffer->Deactivate();
-  }
-  this->Superclass::RenderPieceFinish(ren, actor);
 }
 
 //------------------------------------------------------------------------------
@@ -510,7 +464,7 @@ void vtkShepardSplatMapper::ReplaceShaderLight(
   vtkShaderProgram::Substitute(FSSource, "//VTK::Light::Impl",
     // Three texels per OpenGL primitive: (Reflectance, group), (Emission, 0),
     // (normal, 0).
-    "  int splatCell = 3 * (gl_PrimitiveID + PrimitiveIDOffset);\n"
+    "  int splatCell = " + this->CellTexelIndex() + ";\n"
     "  vec4 cell0 = texelFetchBuffer(splatCellTexels, splatCell);\n"
     "  vec4 cell1 = texelFetchBuffer(splatCellTexels, splatCell + 1);\n"
     "  vec4 cell2 = texelFetchBuffer(splatCellTexels, splatCell + 2);\n"
@@ -523,39 +477,10 @@ void vtkShepardSplatMapper::ReplaceShaderLight(
 }
 
 //------------------------------------------------------------------------------
-void vtkShepardSplatMapper::ReplaceShaderTCoord(
-  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
-{
-}
-
-//------------------------------------------------------------------------------
-void vtkShepardSplatMapper::SetMapperShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
-{
-  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
-  if (this->CellTexelsReady && cellBO.Program->IsUniformUsed("splatCellTexels"))
-  {
-    cellBO.Program->SetUniformi("splatCellTexels", this->CellBuffer->GetTextureUnit());
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkShepardSplatMapper::SetLightingShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
-{
-  if (this->DrawingVertices)
-  {
-    this->Superclass::SetLightingShaderParameters(cellBO, ren, actor);
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkShepardSplatMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
-  this->CellBuffer->ReleaseGraphicsResources(win);
   this->PointBuffer->ReleaseGraphicsResources(win);
   this->Passes->ReleaseGraphicsResources(win);
-  this->CellTexelsReady = false;
   this->Superclass::ReleaseGraphicsResources(win);
 }
 
@@ -577,11 +502,8 @@ void vtkShepardSplatMapper::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent << "SurfaceError: " << this->SurfaceError << "\n";
   }
-  os << indent << "SurfaceCells: " << this->CellTexels.size() / FloatsPerCell << "\n";
   os << indent << "G-buffer: " << this->Passes->GetWidth() << " x " << this->Passes->GetHeight()
      << "\n";
-  os << indent << "CellBuffer:\n";
-  this->CellBuffer->PrintSelf(os, indent.GetNextIndent());
   os << indent << "PointBuffer:\n";
   this->PointBuffer->PrintSelf(os, indent.GetNextIndent());
   os << indent << "WarnedNoReflectance: " << (this->WarnedNoReflectance ? "true" : "false")

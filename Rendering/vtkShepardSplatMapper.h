@@ -67,7 +67,7 @@
 #define vtkShepardSplatMapper_h
 
 #include "RadiosityRenderingModule.h" // For export macro
-#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkRadiosityCellTexelMapper.h"
 
 #include <memory> // For members
 #include <string> // For ValidateSurface
@@ -79,11 +79,11 @@ class vtkMatrix4x4;
 class vtkRadiosityTexelBuffer;
 class vtkShepardSplatPasses;
 
-class RADIOSITYRENDERING_EXPORT vtkShepardSplatMapper : public vtkOpenGLPolyDataMapper
+class RADIOSITYRENDERING_EXPORT vtkShepardSplatMapper : public vtkRadiosityCellTexelMapper
 {
 public:
   static vtkShepardSplatMapper* New();
-  vtkTypeMacro(vtkShepardSplatMapper, vtkOpenGLPolyDataMapper);
+  vtkTypeMacro(vtkShepardSplatMapper, vtkRadiosityCellTexelMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -150,22 +150,10 @@ protected:
    */
   void UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* act) override;
 
-  ///@{
-  /// Draw the surface with its per-cell texels bound.
-  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
-  ///@}
-
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderLight(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderTCoord(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  void SetLightingShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   double Exposure = 1.0;
   double Gamma = 2.2;
@@ -180,14 +168,10 @@ private:
   // MCDCMatrix of the actor and camera, for the splats.
   static void ModelToClip(vtkRenderer* ren, vtkActor* act, vtkMatrix4x4* out);
 
-  // Per cell: (Reflectance, group), (Emission, 0), (normal, 0).
-  std::vector<float> CellTexels;
-  vtkTimeStamp CellTexelsTime;
+  // CellTexels per cell: (Reflectance, group), (Emission, 0), (normal, 0).
   vtkPolyData* CellTexelsSource = nullptr; // compared only
   vtkMTimeType CellTexelsSourceTime = 0;
   bool SurfaceValid = false;
-  bool DrawPiece = false;
-  bool CellTexelsReady = false;
   std::string SurfaceError;
   bool WarnedNoReflectance = false;
 
@@ -200,7 +184,6 @@ private:
   vtkMTimeType PointTexelsSourceTime = 0;
   std::string FieldError;
 
-  std::unique_ptr<vtkRadiosityTexelBuffer> CellBuffer;
   std::unique_ptr<vtkRadiosityTexelBuffer> PointBuffer;
   std::unique_ptr<vtkShepardSplatPasses> Passes;
 };

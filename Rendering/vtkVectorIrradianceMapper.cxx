@@ -20,7 +20,6 @@
 #include "vtkProperty.h"
 #include "vtkRadiosityCellArrays.h"
 #include "vtkRadiosityShaderVarying.h"
-#include "vtkRadiosityTexelBuffer.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 
@@ -39,9 +38,8 @@ const char* const Attributes[4][2] = { { "irradianceR", "vtkVectorIrradianceR" }
 
 //------------------------------------------------------------------------------
 vtkVectorIrradianceMapper::vtkVectorIrradianceMapper()
-  : CellBuffer(new vtkRadiosityTexelBuffer)
+  : vtkRadiosityCellTexelMapper("vectorCellTexels", FloatsPerCell, "the materials")
 {
-  this->ScalarVisibilityOff();
   // The view direction is formed in model coordinates.
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
   for (const auto& a : Attributes)
@@ -226,54 +224,9 @@ void vtkVectorIrradianceMapper::UpdateCameraShiftScale(vtkRenderer* ren, vtkActo
     }
   }
   this->CurrentInput = this->Copy;
+  this->DrawnPolyData = this->Copy;
   this->DrawPiece = true;
   this->Superclass::UpdateCameraShiftScale(ren, actor);
-}
-
-//------------------------------------------------------------------------------
-void vtkVectorIrradianceMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
-{
-  this->CellTexelsReady = false;
-  if (!this->DrawPiece)
-  {
-    return;
-  }
-  this->Superclass::RenderPieceStart(ren, actor);
-  const int representation = actor->GetProperty()->GetRepresentation();
-  std::string error;
-  this->CellTexelsReady = this->CellBuffer->IsCurrent(this->CellTexelsTime, representation) ||
-    this->CellBuffer->UploadPerPrimitive(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()),
-      this->CellCellMap, this->Copy, representation, this->CellTexels, FloatsPerCell,
-      "the materials", error);
-  if (!this->CellTexelsReady)
-  {
-    vtkErrorMacro(<< error);
-    return;
-  }
-  this->CellBuffer->Activate();
-}
-
-//------------------------------------------------------------------------------
-void vtkVectorIrradianceMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
-{
-  if (this->DrawPiece && this->CellTexelsReady)
-  {
-    this->Superclass::RenderPieceDraw(ren, actor);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkVectorIrradianceMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
-{
-  if (!this->DrawPiece)
-  {
-    return;
-  }
-  if (this->CellTexelsReady)
-  {
-    this->CellBuffer->Deactivate();
-  }
-  this->Superclass::RenderPieceFinish(ren, actor);
 }
 
 //------------------------------------------------------------------------------
@@ -313,7 +266,7 @@ void vtkVectorIrradianceMapper::ReplaceShaderLight(
   std::string impl =
     // Three texels per primitive: (Reflectance, Shininess), (Specular, 0),
     // (Emission, 0).
-    "  int vectorCell = 3 * (gl_PrimitiveID + PrimitiveIDOffset);\n"
+    "  int vectorCell = " + this->CellTexelIndex() + ";\n"
     "  vec4 diffuseShininess = texelFetchBuffer(vectorCellTexels, vectorCell);\n"
     "  vec4 specularColour = texelFetchBuffer(vectorCellTexels, vectorCell + 1);\n"
     "  vec4 emitted = texelFetchBuffer(vectorCellTexels, vectorCell + 2);\n"
@@ -349,21 +302,11 @@ void vtkVectorIrradianceMapper::ReplaceShaderLight(
 }
 
 //------------------------------------------------------------------------------
-void vtkVectorIrradianceMapper::ReplaceShaderTCoord(
-  std::map<vtkShader::Type, vtkShader*>, vtkRenderer*, vtkActor*)
-{
-}
-
-//------------------------------------------------------------------------------
 void vtkVectorIrradianceMapper::SetMapperShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
   vtkShaderProgram* program = cellBO.Program;
-  if (this->CellTexelsReady && program->IsUniformUsed("vectorCellTexels"))
-  {
-    program->SetUniformi("vectorCellTexels", this->CellBuffer->GetTextureUnit());
-  }
   if (program->IsUniformUsed("eyePositionMC"))
   {
     // The eye in model coordinates: the camera position through the inverse
@@ -389,24 +332,6 @@ void vtkVectorIrradianceMapper::SetMapperShaderParameters(
 }
 
 //------------------------------------------------------------------------------
-void vtkVectorIrradianceMapper::SetLightingShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
-{
-  if (this->DrawingVertices)
-  {
-    this->Superclass::SetLightingShaderParameters(cellBO, ren, actor);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkVectorIrradianceMapper::ReleaseGraphicsResources(vtkWindow* win)
-{
-  this->CellBuffer->ReleaseGraphicsResources(win);
-  this->CellTexelsReady = false;
-  this->Superclass::ReleaseGraphicsResources(win);
-}
-
-//------------------------------------------------------------------------------
 void vtkVectorIrradianceMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -418,7 +343,4 @@ void vtkVectorIrradianceMapper::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent << "InputError: " << this->InputError << "\n";
   }
-  os << indent << "Cells: " << this->CellTexels.size() / FloatsPerCell << "\n";
-  os << indent << "CellBuffer:\n";
-  this->CellBuffer->PrintSelf(os, indent.GetNextIndent());
 }

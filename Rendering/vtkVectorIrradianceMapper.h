@@ -37,20 +37,17 @@
 
 #include "RadiosityRenderingModule.h" // For export macro
 #include "vtkNew.h"                   // For members
-#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkRadiosityCellTexelMapper.h"
 
-#include <memory> // For members
 #include <string> // For ValidateInput
-#include <vector> // For members
 
 class vtkPolyData;
-class vtkRadiosityTexelBuffer;
 
-class RADIOSITYRENDERING_EXPORT vtkVectorIrradianceMapper : public vtkOpenGLPolyDataMapper
+class RADIOSITYRENDERING_EXPORT vtkVectorIrradianceMapper : public vtkRadiosityCellTexelMapper
 {
 public:
   static vtkVectorIrradianceMapper* New();
-  vtkTypeMacro(vtkVectorIrradianceMapper, vtkOpenGLPolyDataMapper);
+  vtkTypeMacro(vtkVectorIrradianceMapper, vtkRadiosityCellTexelMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -76,26 +73,17 @@ public:
   /// Whether the last drawn input had a non-zero Specular (the glossy path).
   bool GetGlossy() const { return this->Glossy; }
 
-  void ReleaseGraphicsResources(vtkWindow* win) override;
-
 protected:
   vtkVectorIrradianceMapper();
   ~vtkVectorIrradianceMapper() override;
 
   /// Checks the input and swaps in the copy with split attribute arrays.
   void UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
-  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderLight(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderTCoord(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  void SetLightingShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   double Exposure = 1.0;
@@ -111,15 +99,10 @@ private:
   vtkPolyData* CopySource = nullptr; // compared only
   vtkMTimeType CopySourceTime = 0;
   bool InputValid = false;
-  bool DrawPiece = false;
   bool Glossy = false;
   bool ShaderGlossy = false;
   std::string InputError;
-  // Per cell: (Reflectance, Shininess), (Specular, 0), (Emission, 0).
-  std::vector<float> CellTexels;
-  vtkTimeStamp CellTexelsTime;
-  std::unique_ptr<vtkRadiosityTexelBuffer> CellBuffer;
-  bool CellTexelsReady = false;
+  // CellTexels per cell: (Reflectance, Shininess), (Specular, 0), (Emission, 0).
 };
 
 #endif

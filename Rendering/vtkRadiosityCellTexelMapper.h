@@ -1,0 +1,82 @@
+/**
+ * @class   vtkRadiosityCellTexelMapper
+ * @brief   base of the radiosity mappers: a polydata mapper whose fragment
+ *          shader reads per-cell data from a float texture buffer
+ *
+ * The radiosity mappers (vtkQuadraticInterpolantMapper,
+ * vtkShepardSplatMapper, vtkVectorIrradianceMapper) carry per-cell floats
+ * (coefficients, materials) that VTK's vertex buffers have no place for. A
+ * subclass fills CellTexels (CellFloats floats per cell of the polydata
+ * it draws, a multiple of 4), sets DrawnPolyData and DrawPiece when its
+ * input is valid (in UpdateCameraShiftScale, before the draw), and reads the
+ * texels in its fragment shader at CellTexelIndex(n) with the sampler named
+ * by CellTexelUniform. This class lays the texels out per OpenGL primitive
+ * through the superclass's cell-to-cell map (so the wireframe and points
+ * representations work too), uploads them when they or the representation
+ * change, binds them around the draw, and draws nothing for an input the
+ * subclass refused. Lighting and textures do not apply.
+ */
+#ifndef vtkRadiosityCellTexelMapper_h
+#define vtkRadiosityCellTexelMapper_h
+
+#include "RadiosityRenderingModule.h" // For export macro
+#include "vtkOpenGLPolyDataMapper.h"
+
+#include <memory> // For members
+#include <string> // For members
+#include <vector> // For members
+
+class vtkRadiosityTexelBuffer;
+
+class RADIOSITYRENDERING_EXPORT vtkRadiosityCellTexelMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  vtkAbstractTypeMacro(vtkRadiosityCellTexelMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Releases the texture buffer with the superclass's resources.
+  void ReleaseGraphicsResources(vtkWindow* win) override;
+
+protected:
+  vtkRadiosityCellTexelMapper(const char* uniform, int floatsPerCell, const char* what);
+  ~vtkRadiosityCellTexelMapper() override;
+
+  ///@{
+  /// Upload and bind the texels around the superclass's draw; nothing for a
+  /// refused input.
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
+  ///@}
+
+  /// Binds the sampler uniform.
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// No lighting: sets nothing (except for vertices drawn by VertexVisibility).
+  void SetLightingShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// Textures do not apply: nothing to replace.
+  void ReplaceShaderTCoord(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+
+  /// GLSL: the index of the first texel of the current primitive's block.
+  std::string CellTexelIndex() const;
+
+  // Filled by the subclass.
+  std::vector<float> CellTexels;
+  vtkTimeStamp CellTexelsTime;
+  vtkPolyData* DrawnPolyData = nullptr;
+  bool DrawPiece = false;
+  bool CellTexelsReady = false;
+
+  const std::string CellTexelUniform;
+  const int CellFloats;
+
+private:
+  vtkRadiosityCellTexelMapper(const vtkRadiosityCellTexelMapper&) = delete;
+  void operator=(const vtkRadiosityCellTexelMapper&) = delete;
+
+  const std::string What;
+  std::unique_ptr<vtkRadiosityTexelBuffer> CellBuffer;
+};
+
+#endif
