@@ -7,11 +7,9 @@
 // of `vtkradiosity bench`) over a sweep of transfer tolerances. Writes
 // <dir>/facecluster.md and <dir>/facecluster-error-vs-time.csv.
 //   bench_facecluster <dir> [--quick] [--bunny index.js]
-#include "Radiosity/AnalyticReference.h"
 #include "Radiosity/BunnyScene.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/FaceClusterRadiosity.h"
-#include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
 #include "Radiosity/StandardScenes.h"
 #include "Radiosity/SystemInfo.h"
@@ -175,25 +173,10 @@ int main(int argc, char* argv[])
   {
     const Scene& scene = c.Geometry;
     const std::vector<Probe>& probes = c.Probes;
-    std::vector<RGB> reference;
-    std::string kind;
-    AnalyticReference analytic;
-    std::string why;
-    if (ComputeAnalyticReference(scene, probes, analytic, why))
-    {
-      reference = analytic.Irradiance;
-      kind = "analytic";
-    }
-    else
-    {
-      PathTracerOptions pto;
-      pto.SamplesPerProbe = quick ? 16384 : 65536;
-      for (const ReferenceValue& v : PathTracer(scene, pto).Irradiance(probes))
-      {
-        reference.push_back(v.Value);
-      }
-      kind = "path traced";
-    }
+    bool analytic = false;
+    const std::vector<RGB> reference =
+      StandardReference(scene, probes, quick ? 16384 : 65536, &analytic).Irradiance;
+    const std::string kind = analytic ? "analytic" : "path traced";
     for (double tolerance : c.Tolerances)
     {
       FaceClusterSettings settings;

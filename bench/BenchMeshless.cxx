@@ -4,11 +4,9 @@
 // probes and references as `vtkradiosity bench`). Writes
 // <dir>/meshless.md and <dir>/meshless-error-vs-time.csv.
 //   bench_meshless <dir> [--quick]
-#include "Radiosity/AnalyticReference.h"
 #include "Radiosity/BunnyScene.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/MeshlessRadiosity.h"
-#include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
 #include "Radiosity/StandardScenes.h"
 #include "Radiosity/SystemInfo.h"
@@ -106,25 +104,10 @@ int main(int argc, char* argv[])
   {
     const Scene scene = standard.Make();
     const std::vector<Probe> probes = standard.Probes(scene);
-    std::vector<RGB> reference;
-    std::string kind;
-    AnalyticReference analytic;
-    std::string why;
-    if (ComputeAnalyticReference(scene, probes, analytic, why))
-    {
-      reference = analytic.Irradiance;
-      kind = "analytic";
-    }
-    else
-    {
-      PathTracerOptions pto;
-      pto.SamplesPerProbe = quick ? 16384 : 65536;
-      for (const ReferenceValue& v : PathTracer(scene, pto).Irradiance(probes))
-      {
-        reference.push_back(v.Value);
-      }
-      kind = "path traced";
-    }
+    bool analytic = false;
+    const std::vector<RGB> reference =
+      StandardReference(scene, probes, quick ? 16384 : 65536, &analytic).Irradiance;
+    const std::string kind = analytic ? "analytic" : "path traced";
     for (int l : levels)
     {
       MeshlessOptions options;

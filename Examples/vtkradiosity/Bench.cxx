@@ -13,7 +13,6 @@
 #include "Radiosity/DiscontinuityMesher.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/HierarchicalRadiosity.h"
-#include "Radiosity/PathTracer.h"
 #include "Radiosity/ProgressiveRadiosity.h"
 #include "Radiosity/SceneGenerators.h"
 #include "Radiosity/StandardScenes.h"
@@ -150,26 +149,7 @@ int RunBench(const std::string& outputDir, bool quick)
     }
     const Scene scene = standard.Make();
     const std::vector<Probe> probes = standard.Probes(scene);
-    AnalyticReference reference;
-    std::string why;
-    if (!ComputeAnalyticReference(scene, probes, reference, why))
-    {
-      // No closed form: the path-traced reference (MIS, fixed seed).
-      PathTracerOptions options;
-      options.SamplesPerProbe = quick ? 16384 : 65536;
-      const PathTracer tracer(scene, options);
-      double worst = 0.0;
-      reference.Irradiance.clear();
-      for (const ReferenceValue& v : tracer.Irradiance(probes))
-      {
-        reference.Irradiance.push_back(v.Value);
-        worst = std::max(worst, Luminance(v.StandardError) / std::max(Luminance(v.Value), 1e-300));
-      }
-      char kind[128];
-      std::snprintf(kind, sizeof kind, "path traced, %zu paths per probe, largest relative SE %.1e",
-        options.SamplesPerProbe, worst);
-      reference.Kind = kind;
-    }
+    const AnalyticReference reference = StandardReference(scene, probes, quick ? 16384 : 65536);
     std::ostringstream csv;
     csv << "method,setting,element_size,tolerance,preprocess_s,solve_s,peak_memory_bytes,"
            "elements,rays,iterations,stop,relative_unshot,rms_error,max_rel_error,link_tolerance,"

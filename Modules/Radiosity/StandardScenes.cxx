@@ -1,9 +1,11 @@
 #include "Radiosity/StandardScenes.h"
 
 #include "Radiosity/BunnyScene.h"
+#include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace radiosity
 {
@@ -16,6 +18,37 @@ std::vector<Probe> CentroidSample(const Scene& scene)
     probes.push_back(Probe{ scene.Centroid(t), scene.Normal(t) });
   }
   return probes;
+}
+
+AnalyticReference StandardReference(const Scene& scene, const std::vector<Probe>& probes,
+  std::size_t pathsPerProbe, bool* analytic)
+{
+  AnalyticReference reference;
+  std::string why;
+  const bool closedForm = ComputeAnalyticReference(scene, probes, reference, why);
+  if (analytic)
+  {
+    *analytic = closedForm;
+  }
+  if (closedForm)
+  {
+    return reference;
+  }
+  PathTracerOptions options;
+  options.SamplesPerProbe = pathsPerProbe;
+  const PathTracer tracer(scene, options);
+  double worst = 0.0;
+  reference.Irradiance.clear();
+  for (const ReferenceValue& v : tracer.Irradiance(probes))
+  {
+    reference.Irradiance.push_back(v.Value);
+    worst = std::max(worst, Luminance(v.StandardError) / std::max(Luminance(v.Value), 1e-300));
+  }
+  char kind[128];
+  std::snprintf(kind, sizeof kind, "path traced, %zu paths per probe, largest relative SE %.1e",
+    options.SamplesPerProbe, worst);
+  reference.Kind = kind;
+  return reference;
 }
 
 std::vector<StandardScene> StandardScenes(const std::string& bunnyJs)

@@ -4,6 +4,7 @@
 #ifndef Radiosity_StandardScenes_h
 #define Radiosity_StandardScenes_h
 
+#include "Radiosity/AnalyticReference.h"
 #include "Radiosity/ProbeEvaluator.h"
 #include "Radiosity/Scene.h"
 
@@ -28,6 +29,15 @@ struct StandardScene
 
 /// About 40 triangle centroids with their normals.
 std::vector<Probe> CentroidSample(const Scene& scene);
+
+/**
+ * The reference irradiance at `probes`: the closed form where the scene has
+ * one (ComputeAnalyticReference), else the path tracer (MIS, fixed seed) with
+ * `pathsPerProbe` paths, its Kind then naming the paths and the largest
+ * relative standard error. `analytic`, when given, tells which.
+ */
+AnalyticReference StandardReference(const Scene& scene, const std::vector<Probe>& probes,
+  std::size_t pathsPerProbe, bool* analytic = nullptr);
 
 /// The standard scenes; `bunnyJs` (the npm package's index.js) adds the
 /// bunny room, an empty string leaves it out.
