@@ -3,7 +3,6 @@
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
@@ -39,16 +38,6 @@ const char* const BarycentricArray = "vtkQuadraticInterpolantST";
 // Reflectance, Emission), each RGB; six RGBA texels.
 constexpr int FloatsPerTriangle = 24;
 constexpr int InterpolantComponents = 18;
-
-// "cell 12 is a vtkQuad (4 points)": the cell named by its VTK class.
-std::string DescribeCell(vtkPolyData* input, vtkIdType cellId, vtkIdType numberOfPoints)
-{
-  std::ostringstream os;
-  const char* type = vtkCellTypes::GetClassNameFromTypeId(input->GetCellType(cellId));
-  os << "cell " << cellId << " is a " << (type ? type : "cell of unknown type") << " ("
-     << numberOfPoints << (numberOfPoints == 1 ? " point" : " points") << ")";
-  return os.str();
-}
 }
 
 //------------------------------------------------------------------------------
@@ -79,32 +68,11 @@ bool vtkQuadraticInterpolantMapper::ValidateInput(vtkPolyData* input, std::strin
     return true;
   }
 
-  // Triangles only. VTK numbers vertices first, then lines, polys and strips,
-  // so a vertex or line, if any, is cell 0 and the first strip follows the
-  // polys.
-  const vtkIdType numberOfPolys = input->GetNumberOfPolys();
-  const char* const hint =
-    ": vtkQuadraticInterpolantMapper draws triangles only (the cells the interpolants are "
-    "defined on).";
-  if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0)
+  if (!vtkRadiosityCellArrays::CheckPolygons(input, true,
+        ": vtkQuadraticInterpolantMapper draws triangles only (the cells the interpolants are "
+        "defined on).",
+        why))
   {
-    vtkCellArray* cells = input->GetNumberOfVerts() > 0 ? input->GetVerts() : input->GetLines();
-    why = "Input " + DescribeCell(input, 0, cells->GetCellSize(0)) + hint;
-    return false;
-  }
-  vtkCellArray* polys = input->GetPolys();
-  for (vtkIdType i = 0; i < numberOfPolys; ++i)
-  {
-    const vtkIdType size = polys->GetCellSize(i);
-    if (size != 3)
-    {
-      why = "Input " + DescribeCell(input, i, size) + hint;
-      return false;
-    }
-  }
-  if (input->GetNumberOfStrips() > 0)
-  {
-    why = "Input " + DescribeCell(input, numberOfPolys, input->GetStrips()->GetCellSize(0)) + hint;
     return false;
   }
 

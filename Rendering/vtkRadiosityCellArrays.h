@@ -1,7 +1,10 @@
-// Checks of the optional cell arrays the radiosity mappers read (SPEC.md:
-// `Reflectance`, `Emission`, `ObjectId`), shared by the mappers; not wrapped.
+// Checks of the cells and of the optional cell arrays the radiosity mappers
+// read (SPEC.md: `Reflectance`, `Emission`, `ObjectId`), shared by the
+// mappers; not wrapped.
 #ifndef vtkRadiosityCellArrays_h
 #define vtkRadiosityCellArrays_h
+
+#include "vtkType.h"
 
 #include <string>
 
@@ -15,6 +18,16 @@ namespace vtkRadiosityCellArrays
  * array and what is wrong with it.
  */
 bool CheckOptional(vtkPolyData* input, const char* name, int components, std::string& message);
+
+/// "cell 12 is a vtkQuad (4 points)": the cell named by its VTK class.
+std::string DescribeCell(vtkPolyData* input, vtkIdType cellId);
+
+/**
+ * True when `input` has polygons only (no vertices, lines or strips) and,
+ * with `trianglesOnly`, no polygon but triangles; otherwise false with
+ * `message` "Input <the first offending cell>" followed by `hint`.
+ */
+bool CheckPolygons(vtkPolyData* input, bool trianglesOnly, const std::string& hint, std::string& message);
 }
 
 #endif

@@ -4,7 +4,6 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
@@ -44,15 +43,6 @@ constexpr int FloatsPerCell = 12;
 constexpr int FloatsPerPoint = 12;
 constexpr int MaximumLevels = 64;
 
-
-std::string DescribeCell(vtkPolyData* input, vtkIdType cellId)
-{
-  std::ostringstream os;
-  const char* type = vtkCellTypes::GetClassNameFromTypeId(input->GetCellType(cellId));
-  os << "Input cell " << cellId << " is a " << (type ? type : "cell of unknown type")
-     << ": vtkShepardSplatMapper draws polygons only (the surfaces the field lies on).";
-  return os.str();
-}
 
 // The field array `name` with `components` components and a tuple per point,
 // or null with `message` set.
@@ -151,17 +141,9 @@ bool vtkShepardSplatMapper::ValidateSurface(vtkPolyData* surface, std::string* m
     why = "No input polydata.";
     return false;
   }
-  if (surface->GetNumberOfVerts() > 0 || surface->GetNumberOfLines() > 0)
-  {
-    why = DescribeCell(surface, 0);
-    return false;
-  }
-  if (surface->GetNumberOfStrips() > 0)
-  {
-    why = DescribeCell(surface, surface->GetNumberOfPolys());
-    return false;
-  }
-  return vtkRadiosityCellArrays::CheckOptional(surface, "Reflectance", 3, why) &&
+  return vtkRadiosityCellArrays::CheckPolygons(surface, false,
+           ": vtkShepardSplatMapper draws polygons only (the surfaces the field lies on).", why) &&
+    vtkRadiosityCellArrays::CheckOptional(surface, "Reflectance", 3, why) &&
     vtkRadiosityCellArrays::CheckOptional(surface, "Emission", 3, why) &&
     vtkRadiosityCellArrays::CheckOptional(surface, "ObjectId", 1, why);
 }

@@ -4,7 +4,6 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
@@ -62,14 +61,9 @@ bool vtkVectorIrradianceMapper::ValidateInput(vtkPolyData* input, std::string* m
     why = "No input polydata.";
     return false;
   }
-  if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0 || input->GetNumberOfStrips() > 0)
+  if (!vtkRadiosityCellArrays::CheckPolygons(
+        input, false, ": vtkVectorIrradianceMapper draws polygons only.", why))
   {
-    const vtkIdType cell = input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0
-      ? 0
-      : input->GetNumberOfPolys();
-    const char* type = vtkCellTypes::GetClassNameFromTypeId(input->GetCellType(cell));
-    why = "Input cell " + std::to_string(cell) + " is a " + (type ? type : "cell of unknown type") +
-      ": vtkVectorIrradianceMapper draws polygons only.";
     return false;
   }
   vtkPointData* pd = input->GetPointData();
