@@ -33,20 +33,9 @@ bool ProjectOntoCluster(const FaceClusterHierarchy& h, std::uint32_t id, const V
       }
       continue;
     }
-    const Vec3 a = scene.Vertex(node, 0), b = scene.Vertex(node, 1), c = scene.Vertex(node, 2);
-    const Vec3 e1 = b - a, e2 = c - a;
-    const Vec3 pv = glm::cross(n, e2);
-    const double det = glm::dot(e1, pv);
-    if (std::abs(det) < 1e-300)
-    {
-      continue;
-    }
-    const Vec3 tv = p - a;
-    const double u = glm::dot(tv, pv) / det;
-    const Vec3 qv = glm::cross(tv, e1);
-    const double v = glm::dot(n, qv) / det;
-    const double t = glm::dot(e2, qv) / det;
-    if (u < 0.0 || v < 0.0 || u + v > 1.0 || std::abs(t) > reach || std::abs(t) >= best)
+    double t = 0.0;
+    if (!LineHitsTriangle(scene.Vertex(node, 0), scene.Vertex(node, 1), scene.Vertex(node, 2), p, n, t) ||
+      std::abs(t) > reach || std::abs(t) >= best)
     {
       continue;
     }

@@ -9,9 +9,21 @@ namespace
 {
 thread_local std::size_t Visited = 0;
 
-// Moller-Trumbore, for t in (t0, t1) of p + t d.
-bool SegmentHitsTriangle(
-  const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, const Vec3& d, double t0, double t1)
+struct Range
+{
+  std::uint32_t First = 0, End = 0;
+  bool Contains(std::uint32_t first, std::uint32_t count) const
+  {
+    return first >= this->First && first + count <= this->End;
+  }
+  bool Overlaps(std::uint32_t first, std::uint32_t count) const
+  {
+    return first < this->End && first + count > this->First;
+  }
+};
+}
+
+bool LineHitsTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, const Vec3& d, double& t)
 {
   const Vec3 e1 = b - a, e2 = c - a;
   const Vec3 pv = glm::cross(d, e2);
@@ -33,22 +45,8 @@ bool SegmentHitsTriangle(
   {
     return false;
   }
-  const double t = glm::dot(e2, qv) * inv;
-  return t > t0 && t < t1;
-}
-
-struct Range
-{
-  std::uint32_t First = 0, End = 0;
-  bool Contains(std::uint32_t first, std::uint32_t count) const
-  {
-    return first >= this->First && first + count <= this->End;
-  }
-  bool Overlaps(std::uint32_t first, std::uint32_t count) const
-  {
-    return first < this->End && first + count > this->First;
-  }
-};
+  t = glm::dot(e2, qv) * inv;
+  return true;
 }
 
 bool SegmentCrossesBox(const FaceCluster& c, const Vec3& p, const Vec3& d, double t0, double t1)
@@ -143,7 +141,9 @@ double FaceClusterVisibility::Transmittance(const Vec3& x, const Vec3& y, std::u
     }
     if (!c)
     {
-      if (SegmentHitsTriangle(scene.Vertex(id, 0), scene.Vertex(id, 1), scene.Vertex(id, 2), x, d, t0, t1))
+      double t = 0.0;
+      if (LineHitsTriangle(scene.Vertex(id, 0), scene.Vertex(id, 1), scene.Vertex(id, 2), x, d, t) &&
+        t > t0 && t < t1)
       {
         return 0.0;
       }

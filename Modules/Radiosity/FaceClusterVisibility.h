@@ -40,6 +40,9 @@ private:
   const FaceClusterHierarchy& Source;
 };
 
+/// Moller-Trumbore: whether the line p + t d meets triangle abc, with its t.
+bool LineHitsTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, const Vec3& d, double& t);
+
 /// Whether the segment p + t d, t in [t0, t1], crosses the oriented box of c.
 bool SegmentCrossesBox(const FaceCluster& c, const Vec3& p, const Vec3& d, double t0, double t1);
 } // namespace radiosity
