@@ -4,6 +4,7 @@
 #define PixelTestSupport_h
 
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -40,6 +41,33 @@ inline void PixelRay(vtkRenderer* ren, int x, int y, Vec3& origin, Vec3& directi
     origin[i] = p[0][i];
     direction[i] = p[1][i] - p[0][i];
   }
+}
+
+// Moller-Trumbore: the ray parameter h > 0 and (s, t) of the hit of o + h d
+// with the frame a + s (b - a) + t (c - a), inside the triangle abc (or, with
+// `parallelogram`, inside the parallelogram it spans).
+inline bool IntersectFrame(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& o, const Vec3& d,
+  double& h, double& s, double& t, bool parallelogram = false)
+{
+  double e1[3], e2[3], pv[3], tv[3], qv[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    e1[i] = b[i] - a[i];
+    e2[i] = c[i] - a[i];
+    tv[i] = o[i] - a[i];
+  }
+  vtkMath::Cross(d.data(), e2, pv);
+  const double det = vtkMath::Dot(e1, pv);
+  if (std::abs(det) < 1e-14)
+  {
+    return false;
+  }
+  s = vtkMath::Dot(tv, pv) / det;
+  vtkMath::Cross(tv, e1, qv);
+  t = vtkMath::Dot(d.data(), qv) / det;
+  h = vtkMath::Dot(e2, qv) / det;
+  const bool inside = parallelogram ? (s <= 1.0 && t <= 1.0) : (s + t <= 1.0);
+  return h > 0.0 && s >= 0.0 && t >= 0.0 && inside;
 }
 
 // The 8-bit value the pipeline should show for radiance L: the mapper

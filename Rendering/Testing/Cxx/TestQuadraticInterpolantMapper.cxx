@@ -231,29 +231,6 @@ void PlaceCamera(vtkCamera* camera)
   camera->SetClippingRange(0.5, 20.0);
 }
 
-// Moller-Trumbore: the ray parameter and (s,t) in the frame p0 + s e1 + t e2.
-bool Intersect(const Triangle& tri, const Vec3& o, const Vec3& d, double& h, double& s, double& t)
-{
-  double e1[3], e2[3], pv[3], tv[3], qv[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    e1[i] = tri.P[1][i] - tri.P[0][i];
-    e2[i] = tri.P[2][i] - tri.P[0][i];
-    tv[i] = o[i] - tri.P[0][i];
-  }
-  vtkMath::Cross(d.data(), e2, pv);
-  const double det = vtkMath::Dot(e1, pv);
-  if (std::abs(det) < 1e-14)
-  {
-    return false;
-  }
-  s = vtkMath::Dot(tv, pv) / det;
-  vtkMath::Cross(tv, e1, qv);
-  t = vtkMath::Dot(d.data(), qv) / det;
-  h = vtkMath::Dot(e2, qv) / det;
-  return h > 0.0 && s >= 0.0 && t >= 0.0 && s + t <= 1.0;
-}
-
 // Compares every 3rd pixel whose centre sees a triangle well inside its edges
 // with the interpolant evaluated on the CPU at that point's barycentrics.
 // Also reports how far a screen-space (affine, not perspective-correct)
@@ -292,7 +269,7 @@ bool CheckPixels(vtkRenderer* ren, vtkRenderWindow* window, const std::vector<Tr
       for (size_t i = 0; i < scene.size(); ++i)
       {
         double h, si, ti;
-        if (Intersect(scene[i], o, d, h, si, ti) && h < nearest)
+        if (IntersectFrame(scene[i].P[0], scene[i].P[1], scene[i].P[2], o, d, h, si, ti) && h < nearest)
         {
           nearest = h;
           s = si;

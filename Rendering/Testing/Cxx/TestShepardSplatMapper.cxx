@@ -301,24 +301,8 @@ int Hit(const std::vector<Face>& faces, const Vec3& o, const Vec3& d, double& u,
   for (size_t f = 0; f < faces.size(); ++f)
   {
     const Face& face = faces[f];
-    double e1[3], e2[3], pv[3], tv[3], qv[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      e1[i] = face.P[1][i] - face.P[0][i];
-      e2[i] = face.P[3][i] - face.P[0][i];
-      tv[i] = o[i] - face.P[0][i];
-    }
-    vtkMath::Cross(d.data(), e2, pv);
-    const double det = vtkMath::Dot(e1, pv);
-    if (std::abs(det) < 1e-14)
-    {
-      continue;
-    }
-    const double s = vtkMath::Dot(tv, pv) / det;
-    vtkMath::Cross(tv, e1, qv);
-    const double t = vtkMath::Dot(d.data(), qv) / det;
-    const double h = vtkMath::Dot(e2, qv) / det;
-    if (h > 0.0 && h < nearest && s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0)
+    double h, s, t;
+    if (IntersectFrame(face.P[0], face.P[1], face.P[3], o, d, h, s, t, true) && h < nearest)
     {
       nearest = h;
       hit = static_cast<int>(f);

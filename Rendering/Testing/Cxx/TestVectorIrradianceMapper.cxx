@@ -229,27 +229,12 @@ bool CheckPixels(vtkRenderer* ren, vtkRenderWindow* window, const std::vector<Tr
       double nearest = std::numeric_limits<double>::infinity(), bb[3] = { 0, 0, 0 };
       for (std::size_t i = 0; i < scene.size(); ++i)
       {
-        const Vec3& a = scene[i].C[0].P;
-        const Vec3& b = scene[i].C[1].P;
-        const Vec3& c = scene[i].C[2].P;
-        double e1[3], e2[3], pv[3], tv[3], qv[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          e1[k] = b[k] - a[k];
-          e2[k] = c[k] - a[k];
-          tv[k] = o[k] - a[k];
-        }
-        vtkMath::Cross(d.data(), e2, pv);
-        const double det = vtkMath::Dot(e1, pv);
-        if (std::abs(det) < 1e-14)
+        double h, s, t;
+        if (!IntersectFrame(scene[i].C[0].P, scene[i].C[1].P, scene[i].C[2].P, o, d, h, s, t))
         {
           continue;
         }
-        const double s = vtkMath::Dot(tv, pv) / det;
-        vtkMath::Cross(tv, e1, qv);
-        const double t = vtkMath::Dot(d.data(), qv) / det;
-        const double h = vtkMath::Dot(e2, qv) / det;
-        if (h > 0 && h < nearest && s >= 0 && t >= 0 && s + t <= 1)
+        if (h < nearest)
         {
           nearest = h;
           hit = static_cast<int>(i);
