@@ -7,6 +7,8 @@
 // of `vtkradiosity bench`) over a sweep of transfer tolerances. Writes
 // <dir>/facecluster.md and <dir>/facecluster-error-vs-time.csv.
 //   bench_facecluster <dir> [--quick] [--bunny index.js]
+#include "BenchArguments.h"
+
 #include "Radiosity/BunnyScene.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/FaceClusterRadiosity.h"
@@ -74,30 +76,16 @@ const char* BasisName(BasisKind kind)
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  BenchArguments args;
+  if (!args.Parse(argc, argv))
   {
-    std::cerr << "usage: bench_facecluster <output dir> [--quick] [--bunny index.js]\n";
     return 2;
   }
-  const std::string dir = argv[1];
-  bool quick = false;
-  std::string bunnyJs;
-  for (int i = 2; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    if (a == "--quick")
-    {
-      quick = true;
-    }
-    else if (a == "--bunny" && i + 1 < argc)
-    {
-      bunnyJs = argv[++i];
-    }
-  }
+  const std::string& dir = args.Directory;
+  const bool quick = args.Quick;
+  const std::string& bunnyJs = args.BunnyJs;
   std::ostringstream md;
-  md << "# Higher-order face cluster radiosity (Gobbetti et al. 2003)\n\nMachine: " << CpuModel()
-     << ", " << std::thread::hardware_concurrency() << " hardware threads. Mode: "
-     << (quick ? "quick" : "full") << ".\n\n";
+  args.WriteHeading(md, "Higher-order face cluster radiosity (Gobbetti et al. 2003)");
 
   if (!bunnyJs.empty())
   {

@@ -4,6 +4,8 @@
 // probes and references as `vtkradiosity bench`). Writes
 // <dir>/meshless.md and <dir>/meshless-error-vs-time.csv.
 //   bench_meshless <dir> [--quick]
+#include "BenchArguments.h"
+
 #include "Radiosity/BunnyScene.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/MeshlessRadiosity.h"
@@ -41,30 +43,16 @@ std::string Table1Row(const std::string& name, const Scene& scene, const Meshles
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  BenchArguments args;
+  if (!args.Parse(argc, argv))
   {
-    std::cerr << "usage: bench_meshless <output dir> [--quick] [--bunny index.js]\n";
     return 2;
   }
-  const std::string dir = argv[1];
-  bool quick = false;
-  std::string bunnyJs;
-  for (int i = 2; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    if (a == "--quick")
-    {
-      quick = true;
-    }
-    else if (a == "--bunny" && i + 1 < argc)
-    {
-      bunnyJs = argv[++i];
-    }
-  }
+  const std::string& dir = args.Directory;
+  const bool quick = args.Quick;
+  const std::string& bunnyJs = args.BunnyJs;
   std::ostringstream md;
-  md << "# Meshless radiosity (Lehtinen et al. 2007)\n\nMachine: " << CpuModel() << ", "
-     << std::thread::hardware_concurrency() << " hardware threads. Mode: " << (quick ? "quick" : "full")
-     << ".\n\n";
+  args.WriteHeading(md, "Meshless radiosity (Lehtinen et al. 2007)");
   md << "## Table 1 columns\n\n"
         "Default options (5 levels, coarsest Poisson radius 0.1 of the diagonal, 256 gather rays, "
         "epsilon_E 0.01 of the largest direct irradiance, epsilon_Omega pi/10). Times are phases of "
