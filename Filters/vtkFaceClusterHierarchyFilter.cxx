@@ -82,10 +82,12 @@ int vtkFaceClusterHierarchyFilter::RequestData(
     return !this->GetAbortExecute();
 #endif
   };
+  // The hierarchy keeps its scene: handed over, not copied.
+  const auto shared = std::make_shared<const radiosity::Scene>(std::move(scene));
   try
   {
     this->Hierarchy =
-      radiosity::FaceClusterHierarchy::Shared(scene, options, progress, &this->Reused);
+      radiosity::FaceClusterHierarchy::Shared(shared, options, progress, &this->Reused);
   }
   catch (const radiosity::FaceClusterBuildAborted&)
   {
@@ -106,13 +108,13 @@ int vtkFaceClusterHierarchyFilter::RequestData(
   }
   else
   {
-    output->ShallowCopy(vtkRadiositySceneConverter::FromScene(scene));
+    output->ShallowCopy(vtkRadiositySceneConverter::FromScene(*shared));
   }
   const vtkIdType cells = output->GetNumberOfCells();
   std::vector<vtkIdType> leafOfCell(static_cast<std::size_t>(cells), -1);
-  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  for (std::size_t t = 0; t < shared->Triangles.size(); ++t)
   {
-    const vtkIdType cell = polyInput ? static_cast<vtkIdType>(scene.SourceCells[t])
+    const vtkIdType cell = polyInput ? static_cast<vtkIdType>(shared->SourceCells[t])
                                      : static_cast<vtkIdType>(t);
     if (cell >= 0 && cell < cells && leafOfCell[cell] < 0)
     {

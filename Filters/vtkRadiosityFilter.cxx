@@ -57,7 +57,10 @@ struct FaceClusterHolder
     const radiosity::FaceClusterSettings& settings,
     std::shared_ptr<const radiosity::FaceClusterHierarchy> hierarchy)
     : SceneRef(std::move(scene))
-    , Instance(*this->SceneRef, settings, std::move(hierarchy))
+    , Instance(*this->SceneRef, settings,
+        // Built on the shared scene itself: no copy of it.
+        hierarchy ? std::move(hierarchy)
+                  : radiosity::FaceClusterHierarchy::Shared(this->SceneRef, settings.Clustering))
   {
   }
 };

@@ -165,6 +165,21 @@ std::shared_ptr<const FaceClusterHierarchy> FaceClusterHierarchy::Shared(
   const Scene& scene, const FaceClusterOptions& options, const ProgressCallback& progress,
   bool* reused)
 {
+  return Share(scene, [&scene] { return std::make_shared<const Scene>(scene); }, options,
+    progress, reused);
+}
+
+std::shared_ptr<const FaceClusterHierarchy> FaceClusterHierarchy::Shared(
+  std::shared_ptr<const Scene> scene, const FaceClusterOptions& options,
+  const ProgressCallback& progress, bool* reused)
+{
+  return Share(*scene, [&scene] { return scene; }, options, progress, reused);
+}
+
+std::shared_ptr<const FaceClusterHierarchy> FaceClusterHierarchy::Share(const Scene& scene,
+  const std::function<std::shared_ptr<const Scene>()>& own, const FaceClusterOptions& options,
+  const ProgressCallback& progress, bool* reused)
+{
   static std::mutex mutex;
   static std::map<std::uint64_t, std::weak_ptr<const FaceClusterHierarchy>> cache;
   const std::uint64_t key = FingerprintOf(scene, options);
@@ -187,7 +202,8 @@ std::shared_ptr<const FaceClusterHierarchy> FaceClusterHierarchy::Shared(
       }
     }
   }
-  auto built = std::make_shared<const FaceClusterHierarchy>(scene, options, progress);
+  std::shared_ptr<const FaceClusterHierarchy> built(
+    new FaceClusterHierarchy(own(), key, options, progress));
   const std::lock_guard<std::mutex> lock(mutex);
   cache[key] = built;
   return built;
@@ -196,12 +212,24 @@ std::shared_ptr<const FaceClusterHierarchy> FaceClusterHierarchy::Shared(
 //------------------------------------------------------------------------------
 FaceClusterHierarchy::FaceClusterHierarchy(
   const Scene& scene, const FaceClusterOptions& options, const ProgressCallback& progress)
-  : Source(scene)
-  , Triangles(scene.Triangles.size())
+  : FaceClusterHierarchy(std::make_shared<const Scene>(scene), options, progress)
+{
+}
+
+FaceClusterHierarchy::FaceClusterHierarchy(std::shared_ptr<const Scene> scene,
+  const FaceClusterOptions& options, const ProgressCallback& progress)
+  : FaceClusterHierarchy(scene, FingerprintOf(*scene, options), options, progress)
+{
+}
+
+FaceClusterHierarchy::FaceClusterHierarchy(std::shared_ptr<const Scene> scene, std::uint64_t key,
+  const FaceClusterOptions& options, const ProgressCallback& progress)
+  : Source(std::move(scene))
+  , Triangles(this->Source->Triangles.size())
+  , Key(key)
 {
   const Stopwatch clock;
   const auto threads = LimitThreads(options.Threads);
-  this->Key = FingerprintOf(scene, options);
   if (this->Triangles >= None / 2)
   {
     throw SceneError("Face cluster hierarchy: " + std::to_string(this->Triangles) +
@@ -216,7 +244,7 @@ FaceClusterHierarchy::FaceClusterHierarchy(
 //------------------------------------------------------------------------------
 void FaceClusterHierarchy::Contract(const FaceClusterOptions& options, const ProgressCallback& progress)
 {
-  const Scene& scene = this->Source;
+  const Scene& scene = *this->Source;
   const std::size_t n = this->Triangles;
   Vec3 lo, hi;
   scene.BoundingBox(lo, hi);
@@ -483,7 +511,7 @@ void FaceClusterHierarchy::LayOut()
   this->Cumulative.assign(this->Order.size() + 1, 0.0);
   for (std::size_t i = 0; i < this->Order.size(); ++i)
   {
-    this->Cumulative[i + 1] = this->Cumulative[i] + this->Source.Area(this->Order[i]);
+    this->Cumulative[i + 1] = this->Cumulative[i] + this->Source->Area(this->Order[i]);
   }
   // Ranges bottom-up: children have smaller ids than their parent.
   for (std::size_t i = 0; i < this->Internal.size(); ++i)
@@ -505,7 +533,7 @@ void FaceClusterHierarchy::LayOut()
 //------------------------------------------------------------------------------
 void FaceClusterHierarchy::ComputeBoxes(const FaceClusterOptions&)
 {
-  const Scene& scene = this->Source;
+  const Scene& scene = *this->Source;
   const std::size_t n = this->Triangles;
   // Pass 1, bottom-up: areas, area vectors, materials, and the box axes from
   // the hull candidates (the vertices of the children's projected hulls).
@@ -588,7 +616,7 @@ FaceCluster FaceClusterHierarchy::Cluster(std::uint32_t id) const
   {
     return this->Internal[id - this->Triangles];
   }
-  FaceCluster c = TriangleCluster(this->Source, id);
+  FaceCluster c = TriangleCluster(*this->Source, id);
   c.Parent = this->LeafParent[id];
   c.First = this->LeafPosition[id];
   c.Count = 1;

@@ -31,6 +31,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -99,17 +100,26 @@ class FaceClusterHierarchy
 {
 public:
   /// Builds the hierarchy; `progress` (fraction in [0, 1]) may abort by
-  /// returning false, which throws SolverAborted.
+  /// returning false, which throws FaceClusterBuildAborted. The hierarchy
+  /// keeps the scene it was built on: a copy of `scene`, or the shared one.
   explicit FaceClusterHierarchy(const Scene& scene, const FaceClusterOptions& options = {},
     const ProgressCallback& progress = {});
+  explicit FaceClusterHierarchy(std::shared_ptr<const Scene> scene,
+    const FaceClusterOptions& options = {}, const ProgressCallback& progress = {});
 
+  ///@{
   /// A hierarchy shared by every caller with the same geometry and materials
   /// (a fingerprint of the scene), built at the first call: a second solve on
   /// the same scene does not rebuild it. Held while anyone uses it.
   /// `reused`, when given, tells whether an existing hierarchy was returned.
+  /// A scene given by reference is copied only when the hierarchy is built.
   static std::shared_ptr<const FaceClusterHierarchy> Shared(const Scene& scene,
     const FaceClusterOptions& options = {}, const ProgressCallback& progress = {},
     bool* reused = nullptr);
+  static std::shared_ptr<const FaceClusterHierarchy> Shared(std::shared_ptr<const Scene> scene,
+    const FaceClusterOptions& options = {}, const ProgressCallback& progress = {},
+    bool* reused = nullptr);
+  ///@}
 
   std::size_t NumberOfTriangles() const { return this->Triangles; }
   /// Clusters: the leaves (triangles) then the internal ones.
@@ -138,14 +148,20 @@ public:
   std::size_t MemoryBytes() const;
   double BuildSeconds() const { return this->Seconds; }
   std::uint64_t Fingerprint() const { return this->Key; }
-  const Scene& GetScene() const { return this->Source; }
+  const Scene& GetScene() const { return *this->Source; }
 
   /// The fingerprint Shared() keys on: points, triangles, objects, materials
   /// and the options.
   static std::uint64_t FingerprintOf(const Scene& scene, const FaceClusterOptions& options = {});
 
 private:
-  Scene Source;
+  FaceClusterHierarchy(std::shared_ptr<const Scene> scene, std::uint64_t key,
+    const FaceClusterOptions& options, const ProgressCallback& progress);
+  static std::shared_ptr<const FaceClusterHierarchy> Share(const Scene& scene,
+    const std::function<std::shared_ptr<const Scene>()>& own, const FaceClusterOptions& options,
+    const ProgressCallback& progress, bool* reused);
+
+  std::shared_ptr<const Scene> Source;
   std::size_t Triangles = 0;
   std::vector<FaceCluster> Internal;       // cluster Triangles + i
   std::vector<std::uint32_t> LeafParent;   // per triangle
