@@ -509,10 +509,9 @@ std::int32_t FaceClusterRadiosity::LeafOf(std::uint32_t t) const
   return e;
 }
 
-IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const Vec3& x) const
+IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x) const
 {
   IrradianceVector v{};
-  const std::int32_t e = this->LeafOf(t);
   if (e < 0)
   {
     return v;
@@ -531,11 +530,23 @@ IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const
   return v;
 }
 
-RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const
+namespace
 {
-  const IrradianceVector v = this->IrradianceVectorAt(t, x);
+RGB Received(const IrradianceVector& v, const Vec3& n)
+{
   return RGB(std::max(glm::dot(n, v[0]), 0.0), std::max(glm::dot(n, v[1]), 0.0),
     std::max(glm::dot(n, v[2]), 0.0));
+}
+}
+
+IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const Vec3& x) const
+{
+  return this->Expansion(this->LeafOf(t), x);
+}
+
+RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const
+{
+  return Received(this->IrradianceVectorAt(t, x), n);
 }
 
 std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors() const
@@ -545,10 +556,11 @@ std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors
   std::vector<int> count(scene.Points.size(), 0);
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
+    const std::int32_t leaf = this->LeafOf(static_cast<std::uint32_t>(t));
     for (int k = 0; k < 3; ++k)
     {
       const std::uint32_t v = scene.Triangles[t].V[k];
-      const IrradianceVector e = this->IrradianceVectorAt(static_cast<std::uint32_t>(t), scene.Points[v]);
+      const IrradianceVector e = this->Expansion(leaf, scene.Points[v]);
       for (int c = 0; c < 3; ++c)
       {
         for (int d = 0; d < 3; ++d)
@@ -586,14 +598,14 @@ SolutionMesh FaceClusterRadiosity::Surface() const
     const auto id = static_cast<std::uint32_t>(t);
     const Vec3 n = scene.Normal(t);
     const Material& m = scene.Materials[t];
+    const std::int32_t leaf = this->LeafOf(id);
     ElementSamples samples;
     for (int k = 0; k < 3; ++k)
     {
-      samples.Corner[k] = this->IrradianceAt(id, scene.Vertex(t, k), n);
+      samples.Corner[k] = Received(this->Expansion(leaf, scene.Vertex(t, k)), n);
     }
-    samples.Centre = this->IrradianceAt(id, scene.Centroid(t), n);
+    samples.Centre = Received(this->Expansion(leaf, scene.Centroid(t)), n);
     const RGB h = samples.Mean();
-    const std::int32_t leaf = this->LeafOf(id);
     out.CellIrradiance.push_back(h);
     out.CellRadiosity.push_back(m.Emission + m.Reflectance * h);
     out.ElementId.push_back(leaf >= 0 ? this->Nodes[leaf].Cluster : 0u);

@@ -126,6 +126,8 @@ private:
   int Iteration = 0;
   double Epsilon = 0.0;
 
+  /// The irradiance vector of element e's expansion at x (zero for e < 0).
+  IrradianceVector Expansion(std::int32_t e, const Vec3& x) const;
   std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent);
   void Subdivide(std::int32_t e);
   bool HasUnshot(const FaceClusterElement& e) const;
