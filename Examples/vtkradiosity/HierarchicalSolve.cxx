@@ -177,13 +177,8 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       { "discontinuities_per_leaf", meshFilter->GetMaxDiscontinuitiesPerLeaf() },
       { "min_discontinuity_weight", meshFilter->GetMinDiscontinuityWeight() },
       { "conforming_boundaries", meshFilter->GetConformingBoundaries() } };
-    std::size_t emitters = 0;
-    for (const auto& m : scene.Materials)
-    {
-      emitters += MaxComponent(m.Emission) > 0 ? 1 : 0;
-    }
     report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
-      { "objects", scene.ObjectNames.size() }, { "emitters", emitters },
+      { "objects", scene.ObjectNames.size() }, { "emitters", scene.NumberOfEmitters() },
       { "emitted_power_W", stats.EmittedPowerW }, { "warnings", warnings },
       { "left_out",
         { { "degenerate_triangles_dropped", cleanup.DegenerateTrianglesDropped },

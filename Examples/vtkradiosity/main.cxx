@@ -266,13 +266,8 @@ int RunSolve(const SolveArguments& args)
       { "form_factor_tolerance", filter->GetFormFactorTolerance() },
       { "visibility_samples", filter->GetVisibilitySamples() },
       { "indirect_visibility_samples", filter->GetIndirectVisibilitySamples() } };
-    std::size_t emitters = 0;
-    for (const auto& m : scene.Materials)
-    {
-      emitters += MaxComponent(m.Emission) > 0 ? 1 : 0;
-    }
     report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
-      { "objects", scene.ObjectNames.size() }, { "emitters", emitters },
+      { "objects", scene.ObjectNames.size() }, { "emitters", scene.NumberOfEmitters() },
       { "emitted_power_W", stats.EmittedPowerW }, { "warnings", filter->GetWarnings() },
       { "left_out",
         { { "degenerate_triangles_dropped", filter->GetCleanupReport().DegenerateTrianglesDropped },

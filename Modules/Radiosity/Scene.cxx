@@ -1,5 +1,6 @@
 #include "Radiosity/Scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -51,14 +52,14 @@ double Scene::Diagonal() const
 
 bool Scene::HasEmitters() const
 {
-  for (const Material& m : Materials)
-  {
-    if (MaxComponent(m.Emission) > 0)
-    {
-      return true;
-    }
-  }
-  return false;
+  return std::any_of(Materials.begin(), Materials.end(),
+    [](const Material& m) { return MaxComponent(m.Emission) > 0; });
+}
+
+std::size_t Scene::NumberOfEmitters() const
+{
+  return static_cast<std::size_t>(std::count_if(Materials.begin(), Materials.end(),
+    [](const Material& m) { return MaxComponent(m.Emission) > 0; }));
 }
 
 double Scene::EmittedPower() const

@@ -45,6 +45,7 @@ struct Scene
   void BoundingBox(Vec3& lo, Vec3& hi) const;
   double Diagonal() const;
   bool HasEmitters() const;
+  std::size_t NumberOfEmitters() const; ///< triangles with a non-zero emission
   double EmittedPower() const; ///< sum of luminance-free RGB power: sum of (r+g+b)/3 * area
 };
 
