@@ -84,14 +84,19 @@ double FaceCluster::BoxProjectedArea(const Vec3& r) const
 
 FaceCluster TriangleCluster(const Scene& scene, std::size_t t)
 {
-  FaceCluster c;
   const Vec3 p[3] = { scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) };
+  return TriangleCluster(p, scene.Materials[t], scene.ObjectIds[t]);
+}
+
+FaceCluster TriangleCluster(const Vec3 p[3], const Material& m, int object)
+{
+  FaceCluster c;
   const Vec3 areaVector = 0.5 * glm::cross(p[1] - p[0], p[2] - p[0]);
   const double area = glm::length(areaVector);
   c.Area = static_cast<float>(area);
   c.AreaVector = glm::vec3(areaVector);
   c.Centroid = glm::vec3((p[0] + p[1] + p[2]) / 3.0);
-  c.Object = scene.ObjectIds[t];
+  c.Object = object;
   Vec3 z = area > 0.0 ? areaVector / area : Vec3(0.0, 0.0, 1.0);
   int longest = 0;
   double length = -1.0;
@@ -119,8 +124,9 @@ FaceCluster TriangleCluster(const Scene& scene, std::size_t t)
   c.Axis[1] = glm::vec3(glm::cross(z, x));
   c.Axis[2] = glm::vec3(z);
   Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const Vec3& q : p)
+  for (int k = 0; k < 3; ++k)
   {
+    const Vec3& q = p[k];
     const Vec3 local(glm::dot(q, x), glm::dot(q, Vec3(c.Axis[1])), glm::dot(q, z));
     lo = glm::min(lo, local);
     hi = glm::max(hi, local);
@@ -135,7 +141,6 @@ FaceCluster TriangleCluster(const Scene& scene, std::size_t t)
     c.DPlus[j] = static_cast<float>(dPlus[j]);
     c.DMinus[j] = static_cast<float>(dMinus[j]);
   }
-  const Material& m = scene.Materials[t];
   c.ReflectanceMin = c.ReflectanceMax = c.ReflectanceMean = ToFloat(m.Reflectance);
   c.EmissionMin = c.EmissionMax = c.EmissionMean = ToFloat(m.Emission);
   return c;

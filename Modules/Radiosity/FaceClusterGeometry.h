@@ -12,6 +12,9 @@ namespace radiosity
 {
 /// Triangle `t` as a leaf cluster (tree fields left at their defaults).
 FaceCluster TriangleCluster(const Scene& scene, std::size_t t);
+/// The triangle p[0..2] of material `m` as a leaf cluster (the solver's
+/// elements below the input triangles).
+FaceCluster TriangleCluster(const Vec3 p[3], const Material& m, int object);
 
 /// Area, area vector and materials (min, max, area-weighted mean) of the
 /// union of `a` and `b` into `out`; the convexity flag is the caller's.

@@ -97,9 +97,79 @@ std::vector<double> DualWeights(const FaceCluster& frame, const PolynomialBasis&
   return dual;
 }
 
+namespace
+{
+// The basis at the rule's nodes, its least-squares weights, and the weights
+// scaled to sum to the cluster's area.
+void FinishRule(const FaceCluster& c, const PolynomialBasis& basis, SurfaceRule& rule)
+{
+  double total = 0.0;
+  for (double w : rule.Weights)
+  {
+    total += w;
+  }
+  for (double& w : rule.Weights)
+  {
+    w *= double(c.Area) / total;
+  }
+  double values[PolynomialBasis::MaximumSize];
+  for (const Vec3& p : rule.Points)
+  {
+    const glm::dvec2 uv = BoxCoordinates(c, p);
+    basis.Evaluate(uv.x, uv.y, values);
+    rule.Phi.insert(rule.Phi.end(), values, values + rule.Functions);
+  }
+  rule.Dual = DualWeights(c, basis, rule.Points, rule.Weights);
+}
+}
+
+SurfaceRule MakeTriangleRule(const Vec3 corner[3], const FaceCluster& c, const PolynomialBasis& basis,
+  int nodesPerAxis)
+{
+  SurfaceRule rule;
+  rule.Functions = basis.Size();
+  double nodes[5], weights[5];
+  const int n = std::clamp(nodesPerAxis, 1, 5);
+  GaussLegendre(n, nodes, weights);
+  // Stroud's conical product: (s, t) in the square to corner0 + s e1 +
+  // (1 - s) t e2, Jacobian (1 - s).
+  const Vec3 e1 = corner[1] - corner[0], e2 = corner[2] - corner[0];
+  const Vec3 normal = c.MeanNormal();
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      rule.Points.push_back(corner[0] + nodes[i] * e1 + (1.0 - nodes[i]) * nodes[j] * e2);
+      rule.Normals.push_back(normal);
+      rule.Weights.push_back(weights[i] * weights[j] * (1.0 - nodes[i]));
+    }
+  }
+  FinishRule(c, basis, rule);
+  // Just inside, so that a corner on an emitter's edge (a contact edge) is
+  // not on the kernel's singularity.
+  const Vec3 centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
+  double values[PolynomialBasis::MaximumSize];
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3 x = corner[k] + 0.01 * (centroid - corner[k]);
+    rule.Controls.push_back(x);
+    rule.ControlNormals.push_back(normal);
+    const glm::dvec2 uv = BoxCoordinates(c, x);
+    basis.Evaluate(uv.x, uv.y, values);
+    rule.ControlPhi.insert(rule.ControlPhi.end(), values, values + rule.Functions);
+  }
+  return rule;
+}
+
 SurfaceRule MakeSurfaceRule(const FaceClusterHierarchy& hierarchy, std::uint32_t id,
   const FaceCluster& c, const PolynomialBasis& basis, int nodesPerAxis)
 {
+  if (!hierarchy.InternalCluster(id))
+  {
+    const Scene& scene = hierarchy.GetScene();
+    const Vec3 corner[3] = { scene.Vertex(id, 0), scene.Vertex(id, 1), scene.Vertex(id, 2) };
+    return MakeTriangleRule(corner, c, basis, nodesPerAxis);
+  }
   SurfaceRule rule;
   rule.Functions = basis.Size();
   double nodes[5], weights[5];
@@ -153,23 +223,7 @@ SurfaceRule MakeSurfaceRule(const FaceClusterHierarchy& hierarchy, std::uint32_t
     rule.Normals.push_back(c.MeanNormal());
     rule.Weights.push_back(1.0);
   }
-  double total = 0.0;
-  for (double w : rule.Weights)
-  {
-    total += w;
-  }
-  for (double& w : rule.Weights)
-  {
-    w *= double(c.Area) / total;
-  }
-  double values[PolynomialBasis::MaximumSize];
-  for (const Vec3& p : rule.Points)
-  {
-    const glm::dvec2 uv = BoxCoordinates(c, p);
-    basis.Evaluate(uv.x, uv.y, values);
-    rule.Phi.insert(rule.Phi.end(), values, values + rule.Functions);
-  }
-  rule.Dual = DualWeights(c, basis, rule.Points, rule.Weights);
+  FinishRule(c, basis, rule);
   return rule;
 }
 } // namespace radiosity

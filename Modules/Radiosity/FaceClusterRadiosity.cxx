@@ -1,5 +1,6 @@
 #include "Radiosity/FaceClusterRadiosity.h"
 
+#include "Radiosity/FaceClusterGeometry.h"
 #include "Radiosity/Stopwatch.h"
 #include "Radiosity/ThreadLimit.h"
 
@@ -40,7 +41,8 @@ FaceClusterRadiosity::FaceClusterRadiosity(const Scene& scene, const FaceCluster
   this->Visibility = std::make_unique<FaceClusterVisibility>(*this->Clusters);
 }
 
-std::int32_t FaceClusterRadiosity::NewElement(std::uint32_t cluster, std::int32_t parent)
+std::int32_t FaceClusterRadiosity::NewElement(
+  std::uint32_t cluster, std::int32_t parent, const Vec3* corners)
 {
   const int ne = this->IrradianceBasis.Size(), nb = this->RadiosityBasis.Size();
   const auto id = static_cast<std::int32_t>(this->Nodes.size());
@@ -48,8 +50,33 @@ std::int32_t FaceClusterRadiosity::NewElement(std::uint32_t cluster, std::int32_
   FaceClusterElement& e = this->Nodes.back();
   e.Cluster = cluster;
   e.Parent = parent;
-  e.Data = this->Clusters->Cluster(cluster);
-  e.Rule = MakeSurfaceRule(*this->Clusters, cluster, e.Data, this->IrradianceBasis, this->Settings.Rule.Nodes);
+  if (corners)
+  {
+    const Scene& scene = this->GetScene();
+    const FaceClusterElement& whole = this->Nodes[parent];
+    e.Data = TriangleCluster(corners, scene.Materials[cluster], scene.ObjectIds[cluster]);
+    e.Data.First = whole.Data.First;
+    e.Data.Count = 1;
+    e.Data.Depth = whole.Data.Depth + 1;
+    e.Bisections = whole.Bisections + 1;
+    e.ErrorArea = whole.ErrorArea;
+    std::copy(corners, corners + 3, e.Corners.begin());
+    e.Triangle = true;
+  }
+  else
+  {
+    e.Data = this->Clusters->Cluster(cluster);
+    e.ErrorArea = e.Data.Area;
+    if (e.Data.IsLeaf())
+    {
+      const Scene& scene = this->GetScene();
+      e.Corners = { scene.Vertex(cluster, 0), scene.Vertex(cluster, 1), scene.Vertex(cluster, 2) };
+      e.Triangle = true;
+    }
+  }
+  e.Rule = e.Triangle
+    ? MakeTriangleRule(e.Corners.data(), e.Data, this->IrradianceBasis, this->Settings.Rule.Nodes)
+    : MakeSurfaceRule(*this->Clusters, cluster, e.Data, this->IrradianceBasis, this->Settings.Rule.Nodes);
   e.RadiosityDual = DualWeights(e.Data, this->RadiosityBasis, e.Rule.Points, e.Rule.Weights);
   e.Unshot.assign(nb, RGB(0.0));
   e.Next.assign(nb, RGB(0.0));
@@ -58,6 +85,8 @@ std::int32_t FaceClusterRadiosity::NewElement(std::uint32_t cluster, std::int32_
   if (parent < 0)
   {
     e.Unshot[0] = RGB(e.Data.EmissionMean);
+    e.UnshotMin = Mean(RGB(e.Data.EmissionMin));
+    e.UnshotMax = Mean(RGB(e.Data.EmissionMax));
     return id;
   }
   const FaceClusterElement& p = this->Nodes[parent];
@@ -100,7 +129,16 @@ std::int32_t FaceClusterRadiosity::NewElement(std::uint32_t cluster, std::int32_
   if (this->Iteration == 0)
   {
     e.Unshot[0] = RGB(e.Data.EmissionMean);
+    e.UnshotMin = Mean(RGB(e.Data.EmissionMin));
+    e.UnshotMax = Mean(RGB(e.Data.EmissionMax));
   }
+  else
+  {
+    e.UnshotMin = p.UnshotMin;
+    e.UnshotMax = p.UnshotMax;
+  }
+  e.NextMin = p.NextMin;
+  e.NextMax = p.NextMax;
   const Vec3 n = e.Data.MeanNormal();
   for (int c = 0; c < 3; ++c)
   {
@@ -121,15 +159,46 @@ std::int32_t FaceClusterRadiosity::NewElement(std::uint32_t cluster, std::int32_
   return id;
 }
 
+bool FaceClusterRadiosity::CanSubdivide(const FaceClusterElement& e) const
+{
+  return !e.Data.IsLeaf() || (e.Triangle && e.Bisections < this->Settings.MaxBisections && e.Data.Area > 0.0f);
+}
+
 void FaceClusterRadiosity::Subdivide(std::int32_t e)
 {
-  if (!this->Nodes[e].IsLeaf() || this->Nodes[e].Data.IsLeaf())
+  if (!this->Nodes[e].IsLeaf() || !this->CanSubdivide(this->Nodes[e]))
   {
     return;
   }
-  const std::uint32_t c0 = this->Nodes[e].Data.Child[0], c1 = this->Nodes[e].Data.Child[1];
-  const std::int32_t k0 = this->NewElement(c0, e);
-  const std::int32_t k1 = this->NewElement(c1, e);
+  std::int32_t k0, k1;
+  if (this->Nodes[e].Data.IsLeaf())
+  {
+    // Below the input: halve the longest edge, so that slivers become
+    // rounder and no T-vertex is left inside the triangle's own parts.
+    const std::array<Vec3, 3> c = this->Nodes[e].Corners;
+    int longest = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      if (glm::length(c[(k + 1) % 3] - c[k]) > glm::length(c[(longest + 1) % 3] - c[longest]))
+      {
+        longest = k;
+      }
+    }
+    const Vec3& a = c[longest];
+    const Vec3& b = c[(longest + 1) % 3];
+    const Vec3& o = c[(longest + 2) % 3];
+    const Vec3 m = 0.5 * (a + b);
+    const Vec3 first[3] = { a, m, o }, second[3] = { m, b, o };
+    const std::uint32_t triangle = this->Nodes[e].Cluster;
+    k0 = this->NewElement(triangle, e, first);
+    k1 = this->NewElement(triangle, e, second);
+  }
+  else
+  {
+    const std::uint32_t c0 = this->Nodes[e].Data.Child[0], c1 = this->Nodes[e].Data.Child[1];
+    k0 = this->NewElement(c0, e);
+    k1 = this->NewElement(c1, e);
+  }
   FaceClusterElement& parent = this->Nodes[e];
   parent.Child[0] = k0;
   parent.Child[1] = k1;
@@ -190,32 +259,34 @@ void FaceClusterRadiosity::Gather(std::int32_t i, std::int32_t j, std::vector<Ir
 {
   const FaceClusterElement& receiver = this->Nodes[i];
   const FaceClusterElement& emitter = this->Nodes[j];
-  // Bounds on the emitter's radiosity: its emission's range in the first
-  // shot, the expansion's range later.
-  double bMin, bMax;
-  if (this->Iteration == 0)
+  // Bounds on the emitter's radiosity: the range over its leaves' nodes
+  // (its emission's in the first shot), widened by the expansion's own.
+  double higher = 0.0;
+  for (std::size_t b = 1; b < emitter.Unshot.size(); ++b)
   {
-    bMin = Mean(RGB(emitter.Data.EmissionMin));
-    bMax = Mean(RGB(emitter.Data.EmissionMax));
+    higher += std::abs(Mean(emitter.Unshot[b]));
   }
-  else
-  {
-    double higher = 0.0;
-    for (std::size_t b = 1; b < emitter.Unshot.size(); ++b)
-    {
-      higher += std::abs(Mean(emitter.Unshot[b]));
-    }
-    const double mean = Mean(emitter.Unshot[0]);
-    bMin = std::max(0.0, mean - BasisBound * higher);
-    bMax = mean + BasisBound * higher;
-  }
+  const double mean = Mean(emitter.Unshot[0]);
+  const double bMin = std::max(0.0, std::min(emitter.UnshotMin, mean - BasisBound * higher));
+  const double bMax = std::max(emitter.UnshotMax, mean + BasisBound * higher);
   const Transfer t = ComputeTransfer(
     { &receiver.Data, receiver.Cluster, &receiver.Rule, this->IrradianceBasis.Size() },
-    { &emitter.Data, emitter.Cluster, &emitter.Rule, this->RadiosityBasis.Size() }, emitter.Unshot,
-    bMin, bMax, *this->Visibility, this->Settings.Rule);
-  const bool splitReceiver = !receiver.Data.IsLeaf();
-  const bool splitEmitter = !emitter.Data.IsLeaf();
-  if (t.Error <= this->Epsilon || (!splitReceiver && !splitEmitter))
+    { &emitter.Data, emitter.Cluster, &emitter.Rule, this->RadiosityBasis.Size(),
+      emitter.Triangle ? emitter.Corners.data() : nullptr },
+    emitter.Unshot, bMin, bMax, *this->Visibility, this->Settings.Rule);
+  // Below the input triangles only receivers are refined, and only where
+  // their basis cannot follow the irradiance (the fit error at their nodes
+  // and corners, judged at the input triangle's area): an emitter's parts
+  // would each cast a field no smoother across the receiver than the whole
+  // triangle's, and the bounds of 3.3.2 never tighten next to a shared
+  // edge. Measured in a closed room (rho 0.5) halving both ends four times
+  // on the bounds: 3.3% worst error against 0.3% without halving.
+  const bool clusterReceiver = !receiver.Data.IsLeaf();
+  const bool clusterEmitter = !emitter.Data.IsLeaf();
+  const double scale = receiver.Data.Area > 0.0f ? receiver.ErrorArea / receiver.Data.Area : 1.0;
+  const bool fitFails = scale * t.FitError > this->Epsilon;
+  const bool bisect = !clusterReceiver && fitFails && this->CanSubdivide(receiver);
+  if (scale * t.Error <= this->Epsilon || (!clusterReceiver && !clusterEmitter && !bisect))
   {
     const int ne = t.Receivers, nb = t.Emitters;
     for (int a = 0; a < ne; ++a)
@@ -233,7 +304,10 @@ void FaceClusterRadiosity::Gather(std::int32_t i, std::int32_t j, std::vector<Ir
     return;
   }
   ++this->Stats.Refinements;
-  if (splitEmitter && (!splitReceiver || emitter.Data.Area > receiver.Data.Area))
+  // A receiver whose basis cannot follow the irradiance is split whatever
+  // the sizes.
+  if (clusterEmitter && !bisect && !(clusterReceiver && fitFails) &&
+    (!clusterReceiver || emitter.Data.Area > receiver.Data.Area))
   {
     this->Subdivide(j);
     const std::int32_t k0 = this->Nodes[j].Child[0], k1 = this->Nodes[j].Child[1];
@@ -297,6 +371,8 @@ void FaceClusterRadiosity::TransportLight(std::int32_t i, const std::vector<Irra
   }
   FaceClusterElement& e = this->Nodes[i];
   std::fill(e.Next.begin(), e.Next.end(), RGB(0.0));
+  e.NextMin = std::numeric_limits<double>::infinity();
+  e.NextMax = 0.0;
   if (e.IsLeaf())
   {
     const double self = 0.5 * (e.Data.SelfFormFactorLower() + e.Data.SelfFormFactorUpper());
@@ -313,6 +389,7 @@ void FaceClusterRadiosity::TransportLight(std::int32_t i, const std::vector<Irra
     const SurfaceRule& rule = e.Rule;
     for (std::size_t q = 0; q < rule.Size(); ++q)
     {
+      RGB reflected(0.0);
       for (int c = 0; c < 3; ++c)
       {
         Vec3 atNode(0.0);
@@ -321,11 +398,14 @@ void FaceClusterRadiosity::TransportLight(std::int32_t i, const std::vector<Irra
           atNode += rule.Phi[q * ne + a] * dE[a][c];
         }
         const double b = (1.0 - self) * e.Data.ReflectanceMean[c] * std::max(glm::dot(rule.Normals[q], atNode), 0.0);
+        reflected[c] = b;
         for (int a = 0; a < nb; ++a)
         {
           e.Next[a][c] += e.RadiosityDual[q * nb + a] * b;
         }
       }
+      e.NextMin = std::min(e.NextMin, Mean(reflected));
+      e.NextMax = std::max(e.NextMax, Mean(reflected));
     }
     return;
   }
@@ -346,6 +426,8 @@ void FaceClusterRadiosity::TransportLight(std::int32_t i, const std::vector<Irra
         p.Next[a] += child.PullB[a * nb + b] * child.Next[b];
       }
     }
+    p.NextMin = std::min(p.NextMin, child.NextMin);
+    p.NextMax = std::max(p.NextMax, child.NextMax);
   }
 }
 
@@ -401,6 +483,10 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     {
       e.Unshot.swap(e.Next);
       std::fill(e.Next.begin(), e.Next.end(), RGB(0.0));
+      e.UnshotMin = std::isfinite(e.NextMin) ? e.NextMin : 0.0;
+      e.UnshotMax = e.NextMax;
+      e.NextMin = std::numeric_limits<double>::infinity();
+      e.NextMax = 0.0;
       if (e.IsLeaf())
       {
         residual = std::max(residual, Magnitude(e.Unshot));
@@ -484,158 +570,5 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
   stats.SolveSeconds = this->Stats.SolveSeconds;
   stats.PreprocessSeconds = this->Stats.HierarchySeconds;
   return stats;
-}
-
-std::int32_t FaceClusterRadiosity::LeafOf(std::uint32_t t) const
-{
-  const std::uint32_t position = this->Clusters->TrianglePosition(t);
-  auto holds = [position](const FaceClusterElement& e) {
-    return position >= e.Data.First && position < e.Data.First + e.Data.Count;
-  };
-  std::int32_t e = -1;
-  for (std::int32_t top : this->Top)
-  {
-    if (holds(this->Nodes[top]))
-    {
-      e = top;
-      break;
-    }
-  }
-  while (e >= 0 && !this->Nodes[e].IsLeaf())
-  {
-    const std::int32_t k0 = this->Nodes[e].Child[0];
-    e = holds(this->Nodes[k0]) ? k0 : this->Nodes[e].Child[1];
-  }
-  return e;
-}
-
-IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x) const
-{
-  IrradianceVector v{};
-  if (e < 0)
-  {
-    return v;
-  }
-  const FaceClusterElement& leaf = this->Nodes[e];
-  const glm::dvec2 uv = glm::clamp(BoxCoordinates(leaf.Data, x), glm::dvec2(0.0), glm::dvec2(1.0));
-  double phi[PolynomialBasis::MaximumSize];
-  this->IrradianceBasis.Evaluate(uv.x, uv.y, phi);
-  for (int a = 0; a < this->IrradianceBasis.Size(); ++a)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      v[c] += phi[a] * leaf.Irradiance[a][c];
-    }
-  }
-  return v;
-}
-
-namespace
-{
-RGB Received(const IrradianceVector& v, const Vec3& n)
-{
-  return RGB(std::max(glm::dot(n, v[0]), 0.0), std::max(glm::dot(n, v[1]), 0.0),
-    std::max(glm::dot(n, v[2]), 0.0));
-}
-}
-
-IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const Vec3& x) const
-{
-  return this->Expansion(this->LeafOf(t), x);
-}
-
-RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const
-{
-  return Received(this->IrradianceVectorAt(t, x), n);
-}
-
-std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors() const
-{
-  const Scene& scene = this->GetScene();
-  std::vector<std::array<double, 9>> out(scene.Points.size(), std::array<double, 9>{});
-  std::vector<int> count(scene.Points.size(), 0);
-  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-  {
-    const std::int32_t leaf = this->LeafOf(static_cast<std::uint32_t>(t));
-    for (int k = 0; k < 3; ++k)
-    {
-      const std::uint32_t v = scene.Triangles[t].V[k];
-      const IrradianceVector e = this->Expansion(leaf, scene.Points[v]);
-      for (int c = 0; c < 3; ++c)
-      {
-        for (int d = 0; d < 3; ++d)
-        {
-          out[v][3 * c + d] += e[c][d];
-        }
-      }
-      ++count[v];
-    }
-  }
-  for (std::size_t v = 0; v < out.size(); ++v)
-  {
-    if (count[v] > 0)
-    {
-      for (double& x : out[v])
-      {
-        x /= count[v];
-      }
-    }
-  }
-  return out;
-}
-
-SolutionMesh FaceClusterRadiosity::Surface() const
-{
-  const Scene& scene = this->GetScene();
-  SolutionMesh out;
-  out.Points = scene.Points;
-  out.Triangles = scene.Triangles;
-  out.PointIrradiance.assign(scene.Points.size(), RGB(0.0));
-  out.PointRadiosity.assign(scene.Points.size(), RGB(0.0));
-  std::vector<double> weight(scene.Points.size(), 0.0);
-  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-  {
-    const auto id = static_cast<std::uint32_t>(t);
-    const Vec3 n = scene.Normal(t);
-    const Material& m = scene.Materials[t];
-    const std::int32_t leaf = this->LeafOf(id);
-    ElementSamples samples;
-    for (int k = 0; k < 3; ++k)
-    {
-      samples.Corner[k] = Received(this->Expansion(leaf, scene.Vertex(t, k)), n);
-    }
-    samples.Centre = Received(this->Expansion(leaf, scene.Centroid(t)), n);
-    const RGB h = samples.Mean();
-    out.CellIrradiance.push_back(h);
-    out.CellRadiosity.push_back(m.Emission + m.Reflectance * h);
-    out.ElementId.push_back(leaf >= 0 ? this->Nodes[leaf].Cluster : 0u);
-    out.Level.push_back(static_cast<std::uint16_t>(leaf >= 0 ? this->Nodes[leaf].Data.Depth : 0));
-    out.SourceTriangle.push_back(id);
-    out.Samples.push_back(samples);
-    out.Normals.push_back(n);
-    const double area = scene.Area(t);
-    for (int k = 0; k < 3; ++k)
-    {
-      const std::uint32_t v = scene.Triangles[t].V[k];
-      out.PointIrradiance[v] += area * samples.Corner[k];
-      out.PointRadiosity[v] += area * (m.Emission + m.Reflectance * samples.Corner[k]);
-      weight[v] += area;
-    }
-  }
-  for (std::size_t p = 0; p < weight.size(); ++p)
-  {
-    if (weight[p] > 0.0)
-    {
-      out.PointIrradiance[p] /= weight[p];
-      out.PointRadiosity[p] /= weight[p];
-    }
-  }
-  return out;
-}
-
-std::vector<RGB> FaceClusterRadiosity::Evaluate(const std::vector<Probe>& probes) const
-{
-  return EvaluateOnNearestTriangles(this->GetScene(), probes,
-    [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->IrradianceAt(t, x, n); });
 }
 } // namespace radiosity

@@ -46,6 +46,12 @@ struct FaceClusterSettings
   int MaxIterations = 200;
   double MaxTimeSeconds = 0.0; ///< 0: no limit
   int Threads = 0;
+  /// How many times an input triangle may be halved (longest-edge
+  /// bisection) below the face cluster hierarchy's leaves when a transfer
+  /// between two leaves is still too inaccurate; 0 keeps the paper's
+  /// leaves. A coarse input (a Cornell box of 32 triangles, a contact edge,
+  /// slivers) otherwise keeps one expansion per triangle whatever the light.
+  int MaxBisections = 4;
   TransferRule Rule;
   FaceClusterOptions Clustering;
 };
@@ -65,9 +71,20 @@ struct FaceClusterElement
   std::vector<double> PushB;         ///< radiosity from the parent, N_b x N_b
   std::vector<double> PullB;         ///< radiosity to the parent, N_b x N_b
   std::vector<RGB> Unshot, Next;           ///< radiosity coefficients, N_b
+  /// The range of the unshot radiosity (mean of the channels) over the
+  /// leaves' nodes below: the emitter bounds of the transfer error (3.3.2).
+  double UnshotMin = 0.0, UnshotMax = 0.0, NextMin = 0.0, NextMax = 0.0;
   std::vector<IrradianceVector> Irradiance; ///< N_e coefficients, leaves only
   std::vector<IrradianceVector> LastIncrement;
   std::vector<std::int32_t> Shooters;
+  /// A single triangle's corners (an input triangle, or a part of one).
+  std::array<Vec3, 3> Corners{};
+  bool Triangle = false;
+  int Bisections = 0; ///< halvings below the input triangle
+  /// The area the transfer error is judged at: the input triangle's for
+  /// its parts, so that halving a receiver does not halve the accepted
+  /// error of its irradiance (3.3.2's delta is a power).
+  double ErrorArea = 0.0;
   bool IsLeaf() const { return this->Child[0] < 0; }
 };
 
@@ -91,7 +108,7 @@ public:
 
   SolverStatistics Solve(const ProgressCallback& progress = {});
 
-  /// The irradiance vector at x on triangle t, from its leaf element.
+  /// The irradiance vector at x on triangle t, from the leaf element there.
   IrradianceVector IrradianceVectorAt(std::uint32_t t, const Vec3& x) const;
   /// Irradiance (W/m^2) at x with normal n on triangle t: (n . E_c)_+.
   RGB IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const;
@@ -105,8 +122,9 @@ public:
   /// irradiance of its leaf element's expansion at its corners and centre;
   /// `ElementId` is the leaf element's cluster, `Level` its depth.
   SolutionMesh Surface() const;
-  /// The leaf element holding triangle t.
-  std::int32_t LeafOf(std::uint32_t t) const;
+  /// The leaf element holding x on triangle t (triangle t itself, a part
+  /// of it, or a cluster holding it).
+  std::int32_t LeafAt(std::uint32_t t, const Vec3& x) const;
 
   const FaceClusterStatistics& Statistics() const { return this->Stats; }
   const std::deque<FaceClusterElement>& Elements() const { return this->Nodes; }
@@ -128,7 +146,10 @@ private:
 
   /// The irradiance vector of element e's expansion at x (zero for e < 0).
   IrradianceVector Expansion(std::int32_t e, const Vec3& x) const;
-  std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent);
+  /// An element of `cluster`, or with `corners`, of a part of that
+  /// triangle (cluster) below the input.
+  std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent, const Vec3* corners = nullptr);
+  bool CanSubdivide(const FaceClusterElement& e) const;
   void Subdivide(std::int32_t e);
   bool HasUnshot(const FaceClusterElement& e) const;
   void TransportLight(std::int32_t i, const std::vector<IrradianceVector>& up);

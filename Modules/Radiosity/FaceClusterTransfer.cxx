@@ -108,6 +108,10 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
   // below a node's tangent plane would otherwise cancel the parts above in
   // n . E (a floor running under a block's face).
   auto exactVector = [&](const Vec3& x, const Vec3& n) {
+    if (emitter.Corners)
+    {
+      return PointToPolygonVectorFormFactor(x, emitter.Corners, 3, &n);
+    }
     if (flat)
     {
       return coverage * PointToPolygonVectorFormFactor(x, rectangle, 4, &n);
@@ -122,13 +126,16 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     return sum;
   };
 
-  const std::size_t np = rr.Size(), nq = er.Size();
+  // The receiver's nodes, then its control points.
+  const std::size_t np = rr.Size(), nc = rr.Controls.size(), nq = er.Size();
   double departure = 0.0;
-  std::vector<Vec3> atNode(np * nb, Vec3(0.0)); // sum_q Phi_b(y_q) g_pq
-  std::vector<double> upper(np, 0.0), lower(np, std::numeric_limits<double>::infinity());
-  // The receiver's nodes in parallel: each its emitter nodes' rays.
-  tbb::parallel_for(std::size_t(0), np, [&](std::size_t p) {
-    const Vec3& x = rr.Points[p];
+  std::vector<Vec3> atNode((np + nc) * nb, Vec3(0.0)); // sum_q Phi_b(y_q) g_pq
+  std::vector<double> upper(np + nc, 0.0), lower(np + nc, std::numeric_limits<double>::infinity());
+  std::vector<char> shadowed(np + nc, 0);
+  // In parallel: each point's emitter nodes' rays.
+  tbb::parallel_for(std::size_t(0), np + nc, [&](std::size_t p) {
+    const Vec3& x = p < np ? rr.Points[p] : rr.Controls[p - np];
+    const Vec3& normal = p < np ? rr.Normals[p] : rr.ControlNormals[p - np];
     double visibleSum = 0.0, weightSum = 0.0;
     for (std::size_t q = 0; q < nq; ++q)
     {
@@ -140,11 +147,12 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
         continue;
       }
       const Vec3 dir = r / std::sqrt(d2);
-      if (glm::dot(rr.Normals[p], dir) <= 0.0)
+      if (glm::dot(normal, dir) <= 0.0)
       {
-        continue; // below the node's horizon
+        continue; // below the point's horizon
       }
       const double v = visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing);
+      shadowed[p] |= v < 1.0 ? 1 : 0;
       visibleSum += er.Weights[q] * v;
       weightSum += er.Weights[q];
       // The point kernel m(x, y) dA_y of eq. 3 with the node's own normal.
@@ -162,7 +170,7 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     if (exactConstant)
     {
       const double v = weightSum > 0.0 ? visibleSum / weightSum : 1.0;
-      atNode[p * nb] = v * exactVector(x, rr.Normals[p]);
+      atNode[p * nb] = v * exactVector(x, normal);
     }
   });
   for (std::size_t p = 0; p < np; ++p)
@@ -176,8 +184,37 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
       }
     }
   }
-  // BFA' at the receiver's nodes from the coefficients, against the bounds.
-  for (std::size_t p = 0; p < np; ++p)
+  // 3.3.2, "the value interpolated using the element basis" against direct
+  // integration, at the nodes and at the control points.
+  for (std::size_t p = 0; p < np + nc; ++p)
+  {
+    const double* phi = p < np ? &rr.Phi[p * rr.Functions] : &rr.ControlPhi[(p - np) * rr.Functions];
+    const Vec3& normal = p < np ? rr.Normals[p] : rr.ControlNormals[p - np];
+    Vec3 fitted(0.0), direct(0.0);
+    for (int b = 0; b < nb; ++b)
+    {
+      const double radiosityB = Mean(radiosity[b]);
+      direct += radiosityB * atNode[p * nb + b];
+      for (int a = 0; a < ne; ++a)
+      {
+        fitted += (phi[a] * radiosityB) * out.K[a * nb + b];
+      }
+    }
+    out.FitError = std::max(out.FitError, ri.Area * std::abs(glm::dot(normal, fitted - direct)));
+  }
+  // The bounds on BFA over the emitter's nodes (3.3.2) where the direct
+  // values are themselves estimates: occluded or sampled emitters, or a
+  // radiosity that is not uniform (over the emitter's leaves, as the solver
+  // tracks it). An unoccluded uniform emitter's direct values are exact
+  // (vector form factors), and its parts' bounds, which never tighten next
+  // to a shared edge, would refine it for nothing.
+  bool uniform = exactConstant && radiosityMax - radiosityMin <= 1e-6 * radiosityMax;
+  for (int b = 1; b < nb && uniform; ++b)
+  {
+    uniform = MaxComponent(glm::abs(radiosity[b])) <= 1e-9 * MaxComponent(glm::abs(radiosity[0]));
+  }
+  const bool exact = uniform && std::none_of(shadowed.begin(), shadowed.end(), [](char c) { return c != 0; });
+  for (std::size_t p = 0; p < np && !exact; ++p)
   {
     Vec3 e(0.0);
     for (int a = 0; a < ne; ++a)
@@ -191,7 +228,7 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     const double lo = std::isfinite(lower[p]) ? lower[p] : 0.0;
     departure = std::max({ departure, std::abs(bfa - upper[p]), std::abs(bfa - lo) });
   }
-  out.Error = departure;
+  out.Error = std::max(departure, out.FitError);
   return out;
 }
 } // namespace radiosity

@@ -46,13 +46,15 @@ struct TransferRule
 };
 
 /// One side of a transfer: a cluster, its id, its surface rule, and how many
-/// of the rule's basis functions take part.
+/// of the rule's basis functions take part. An element below the input
+/// triangles has its input triangle's id and its own corners.
 struct TransferEnd
 {
   const FaceCluster* Cluster;
   std::uint32_t Id;
   const SurfaceRule* Rule;
   int Functions;
+  const Vec3* Corners = nullptr; ///< a part of triangle Id, or null
 };
 
 struct Transfer
@@ -63,6 +65,9 @@ struct Transfer
   std::vector<Vec3> K;
   /// delta_ij (W).
   double Error = 0.0;
+  /// The part of it at the receiver's control points: the receiver's basis
+  /// cannot follow the irradiance there, so the receiver is the one to split.
+  double FitError = 0.0;
 };
 
 /**

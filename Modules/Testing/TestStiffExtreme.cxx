@@ -1,6 +1,7 @@
-// The stiff and extreme suite, run for every method (the progressive method
-// and hierarchical radiosity, whose probes are read from its quadratic
-// interpolants as SPEC says): emission over 16
+// The stiff and extreme suite, run for every method (progressive,
+// hierarchical radiosity, whose probes are read from its quadratic
+// interpolants as SPEC says, meshless from its Shepard field, and face
+// cluster radiosity from its vector irradiance bases): emission over 16
 // orders of magnitude in one scene, probes 1e-3 from a contact edge, sliver
 // triangles of aspect ratio 1e4, zero-area and duplicate triangles, coplanar
 // overlapping faces. (Reflectance 0.999 and 1e-4 m / 1e4 m scenes are in
@@ -8,6 +9,7 @@
 #include "Radiosity/AnalyticReference.h"
 #include "Radiosity/DiscontinuityMesher.h"
 #include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/FaceClusterRadiosity.h"
 #include "Radiosity/HierarchicalRadiosity.h"
 #include "Radiosity/MeshlessRadiosity.h"
 #include "Radiosity/ProgressiveRadiosity.h"
@@ -39,7 +41,8 @@ enum class Method
 {
   Progressive,
   Hierarchical,
-  Meshless
+  Meshless,
+  FaceCluster
 };
 
 /// Solves with `method`; the returned row carries the final error at the
@@ -85,6 +88,27 @@ ConvergenceRow SolveAgainst(Method method, const Scene& scene, const std::vector
     if (!probes.empty())
     {
       const ErrorFigures errors = RelativeErrors(solver.Evaluate(probes), ref.Irradiance);
+      row.RmsError = errors.Rms;
+      row.MaxRelError = errors.Max;
+    }
+    return row;
+  }
+  if (method == Method::FaceCluster)
+  {
+    FaceClusterSettings settings;
+    settings.Tolerance = tolerance;
+    FaceClusterRadiosity solver(scene, settings);
+    const SolverStatistics stats = solver.Solve();
+    EXPECT_EQ(stats.Stop, StopReason::Converged);
+    if (solution)
+    {
+      *solution = solver.Surface();
+    }
+    ConvergenceRow row = stats.History.Rows.back();
+    if (!probes.empty())
+    {
+      const std::vector<RGB> values = solver.Evaluate(probes);
+      const ErrorFigures errors = RelativeErrors(values, ref.Irradiance);
       row.RmsError = errors.Rms;
       row.MaxRelError = errors.Max;
     }
@@ -246,11 +270,13 @@ TEST_P(StiffExtreme, ZeroAreaDuplicateAndOverlappingTriangles)
   SolutionMesh solution;
   const ConvergenceRow last = SolveAgainst(GetParam(), s, {}, &solution, 1e-6);
   ExpectFinite(solution);
-  if (GetParam() == Method::Meshless)
+  if (GetParam() == Method::Meshless || GetParam() == Method::FaceCluster)
   {
     // A collocation method (section 3: scattered-data approximation, not a
     // Galerkin projection) keeps no power bookkeeping: its history reports
     // the energy balance as NaN, and the finite surface above is the check.
+    // Nor does the face cluster solver's linkless shooting (no links, the
+    // unshot power lives in the elements' expansions).
     EXPECT_TRUE(std::isnan(last.EnergyBalance));
   }
   else
@@ -260,9 +286,10 @@ TEST_P(StiffExtreme, ZeroAreaDuplicateAndOverlappingTriangles)
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, StiffExtreme,
-  ::testing::Values(Method::Progressive, Method::Hierarchical, Method::Meshless),
+  ::testing::Values(Method::Progressive, Method::Hierarchical, Method::Meshless, Method::FaceCluster),
   [](const ::testing::TestParamInfo<Method>& info) {
     return info.param == Method::Progressive ? "Progressive"
       : info.param == Method::Hierarchical   ? "Hierarchical"
-                                             : "Meshless";
+      : info.param == Method::Meshless       ? "Meshless"
+                                             : "FaceCluster";
   });
