@@ -253,6 +253,7 @@ int vtkRadiosityFilter::RequestData(
     settings.IrradianceBasis = BasisKinds[this->IrradianceBasis];
     settings.RadiosityBasis = BasisKinds[std::min(this->RadiosityBasis, this->IrradianceBasis)];
     settings.TransferTolerance = this->TransferTolerance;
+    settings.MaxBisections = this->MaxBisections;
     settings.Tolerance = this->Tolerance;
     settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
     settings.MaxTimeSeconds = this->MaxTime;
@@ -372,6 +373,7 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IrradianceBasis: " << GetBasisName(this->IrradianceBasis) << "\n";
   os << indent << "RadiosityBasis: " << GetBasisName(this->RadiosityBasis) << "\n";
   os << indent << "TransferTolerance: " << this->TransferTolerance << "\n";
+  os << indent << "MaxBisections: " << this->MaxBisections << "\n";
   os << indent << "FaceClusterSolution: " << (this->FaceClusterSolution ? "yes" : "none") << "\n";
   os << indent << "HierarchicalSolution: " << (this->HierarchicalSolution ? "yes" : "none") << "\n";
   os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";

@@ -260,6 +260,15 @@ public:
   vtkGetMacro(TransferTolerance, double);
   ///@}
 
+  ///@{
+  /// Face cluster: how many times an input triangle may be halved below the
+  /// hierarchy's leaves where a receiver's basis cannot follow the light
+  /// (a coarse input: a contact edge, slivers, a box of a few polygons);
+  /// 0 keeps the paper's leaves. Default 4.
+  vtkSetClampMacro(MaxBisections, int, 0, 16);
+  vtkGetMacro(MaxBisections, int);
+  ///@}
+
   /// The last face cluster solution; null otherwise.
   std::shared_ptr<const radiosity::FaceClusterRadiosity> GetFaceClusterSolution() const
   {
@@ -328,6 +337,7 @@ protected:
   int IrradianceBasis = LinearBasis;
   int RadiosityBasis = ConstantBasis;
   double TransferTolerance = 1e-5;
+  int MaxBisections = 4;
 
 private:
   vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;

@@ -227,8 +227,23 @@ expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --irradia
   --output "${WORK}/bad.vtp")
 expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --irradiance-basis linear
   --radiosity-basis quadratic --output "${WORK}/bad.vtp")
+expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --max-bisections 99
+  --output "${WORK}/bad.vtp")
 if (EXISTS "${WORK}/bad.vtp")
   message(FATAL_ERROR "bad input wrote an output")
+endif ()
+# Probes by a contact edge: halving the floor's triangles where the linear
+# basis cannot follow the light, against the paper's leaves.
+file(WRITE "${WORK}/edge_probes.csv" "x,y,z,nx,ny,nz\n0.001,0.5,0,0,0,1\n0.01,0.5,0,0,0,1\n0.3,0.4,0,0,0,1\n")
+foreach (halvings 0 4)
+  expect_exit(0 "${PROGRAM}" solve contact --method facecluster --max-bisections ${halvings}
+    --probes "${WORK}/edge_probes.csv" --reference analytic --probe-output "${WORK}/edge_values.csv"
+    --report "${WORK}/edge_${halvings}.json")
+  file(READ "${WORK}/edge_${halvings}.json" edge)
+  string(JSON edge_rms_${halvings} GET "${edge}" error probe_output_rms_relative_error)
+endforeach ()
+if (NOT edge_rms_4 LESS 0.02 OR NOT edge_rms_4 LESS edge_rms_0)
+  message(FATAL_ERROR "facecluster by a contact edge: rms ${edge_rms_4} halved, ${edge_rms_0} not")
 endif ()
 
 expect_exit(2 "${PROGRAM}" solve shadow --probes "${DATA}/room_probes.csv"

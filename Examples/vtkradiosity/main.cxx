@@ -195,6 +195,7 @@ int RunSolve(const SolveArguments& args)
   filter->SetIrradianceBasis(irradianceBasis);
   filter->SetRadiosityBasis(radiosityBasis);
   filter->SetTransferTolerance(args.TransferTolerance);
+  filter->SetMaxBisections(args.MaxBisections);
   filter->SetPointRadius(args.PointRadius);
   filter->SetPointLevels(args.PointLevels);
   filter->SetGatherRays(args.GatherRays);
@@ -307,6 +308,7 @@ int RunSolve(const SolveArguments& args)
       report["parameters"]["irradiance_basis"] = args.IrradianceBasis;
       report["parameters"]["radiosity_basis"] = args.RadiosityBasis;
       report["parameters"]["transfer_tolerance"] = args.TransferTolerance;
+      report["parameters"]["max_bisections"] = args.MaxBisections;
       report["facecluster"] = { { "clusters", filter->GetFaceClusterSolution()->Hierarchy().NumberOfClusters() },
         { "elements", f.Elements }, { "leaf_elements", f.LeafElements }, { "transfers", f.Transfers },
         { "refinements", f.Refinements }, { "solution_memory_bytes", f.SolutionBytes },
@@ -384,6 +386,9 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--transfer-tolerance", solve.TransferTolerance,
     "facecluster: transfer error accepted, relative to the emitted power (default 1e-5)")
     ->check(CLI::Range(1e-12, 1.0));
+  solveCommand->add_option("--max-bisections", solve.MaxBisections,
+    "facecluster: halvings of an input triangle allowed below the hierarchy's leaves (default 4)")
+    ->check(CLI::Range(0, 16));
   solveCommand->add_option("--link-tolerance", solve.LinkTolerance,
     "hierarchical: link refinement threshold on B F, relative to the scene's mean irradiance "
     "(default 0.05)")

@@ -16,6 +16,14 @@ namespace radiosity
 {
 namespace
 {
+double DistanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = b - a;
+  const double length2 = glm::dot(ab, ab);
+  const double s = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + s * ab));
+}
+
 Scene AsScene(const SolutionMesh& solution)
 {
   Scene s;
@@ -137,10 +145,17 @@ std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vecto
       {
         continue;
       }
-      const Vec3 q = u * scene.Vertex(t, 0) + v * scene.Vertex(t, 1) + w * scene.Vertex(t, 2);
-      const Vec3 c = std::clamp(u, 0.0, 1.0) * scene.Vertex(t, 0) +
-        std::clamp(v, 0.0, 1.0) * scene.Vertex(t, 1) + std::clamp(w, 0.0, 1.0) * scene.Vertex(t, 2);
-      const double d = glm::length(probes[i].Position - q) + glm::length(q - c);
+      const Vec3 corner[3] = { scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) };
+      const Vec3 q = u * corner[0] + v * corner[1] + w * corner[2];
+      double d = glm::length(probes[i].Position - q);
+      if (u < 0.0 || v < 0.0 || w < 0.0)
+      {
+        d = std::numeric_limits<double>::infinity(); // off the triangle: its nearest edge
+        for (int k = 0; k < 3; ++k)
+        {
+          d = std::min(d, DistanceToSegment(probes[i].Position, corner[k], corner[(k + 1) % 3]));
+        }
+      }
       if (d < best)
       {
         best = d;
