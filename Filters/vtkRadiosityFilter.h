@@ -264,7 +264,7 @@ public:
   /// Face cluster: how many times an input triangle may be halved below the
   /// hierarchy's leaves where a receiver's basis cannot follow the light
   /// (a coarse input: a contact edge, slivers, a box of a few polygons);
-  /// 0 keeps the paper's leaves. Default 4.
+  /// 0 (the default) keeps the paper's leaves.
   vtkSetClampMacro(MaxBisections, int, 0, 16);
   vtkGetMacro(MaxBisections, int);
   ///@}
@@ -337,7 +337,7 @@ protected:
   int IrradianceBasis = LinearBasis;
   int RadiosityBasis = ConstantBasis;
   double TransferTolerance = 1e-5;
-  int MaxBisections = 4;
+  int MaxBisections = 0;
 
 private:
   vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;

@@ -71,7 +71,7 @@ struct SolveArguments
   std::string IrradianceBasis = "linear";
   std::string RadiosityBasis = "constant";
   double TransferTolerance = 1e-5; ///< relative to the emitted power
-  int MaxBisections = 4;
+  int MaxBisections = 0;
 };
 
 double Since(Clock::time_point t);

@@ -548,6 +548,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     }
   }
 
+  this->BoundLeafExpansions();
   this->Stats.Elements = this->Nodes.size();
   this->Stats.LeafElements = 0;
   std::size_t bytes = 0;

@@ -49,9 +49,10 @@ struct FaceClusterSettings
   /// How many times an input triangle may be halved (longest-edge
   /// bisection) below the face cluster hierarchy's leaves when a transfer
   /// between two leaves is still too inaccurate; 0 keeps the paper's
-  /// leaves. A coarse input (a Cornell box of 32 triangles, a contact edge,
-  /// slivers) otherwise keeps one expansion per triangle whatever the light.
-  int MaxBisections = 4;
+  /// leaves (the default: the paper's method, whose cost does not grow with
+  /// the input). A coarse input (a contact edge, slivers) otherwise keeps
+  /// one expansion per triangle whatever the light.
+  int MaxBisections = 0;
   TransferRule Rule;
   FaceClusterOptions Clustering;
 };
@@ -77,6 +78,9 @@ struct FaceClusterElement
   std::vector<IrradianceVector> Irradiance; ///< N_e coefficients, leaves only
   std::vector<IrradianceVector> LastIncrement;
   std::vector<std::int32_t> Shooters;
+  /// Per channel, the bounds of the expansion's components at the nodes:
+  /// the limiter of Expansion (leaves, after the solve).
+  IrradianceVector Lowest{}, Highest{};
   /// A single triangle's corners (an input triangle, or a part of one).
   std::array<Vec3, 3> Corners{};
   bool Triangle = false;
@@ -144,8 +148,11 @@ private:
   int Iteration = 0;
   double Epsilon = 0.0;
 
-  /// The irradiance vector of element e's expansion at x (zero for e < 0).
+  /// The irradiance vector of element e's expansion at x (zero for e < 0),
+  /// limited to the range it takes at the element's nodes.
   IrradianceVector Expansion(std::int32_t e, const Vec3& x) const;
+  /// Lowest and Highest of every leaf.
+  void BoundLeafExpansions();
   /// An element of `cluster`, or with `corners`, of a part of that
   /// triangle (cluster) below the input.
   std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent, const Vec3* corners = nullptr);

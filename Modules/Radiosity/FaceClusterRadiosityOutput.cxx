@@ -4,6 +4,7 @@
 #include "Radiosity/FaceClusterRadiosity.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace radiosity
 {
@@ -82,7 +83,73 @@ IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x) 
       v[c] += phi[a] * leaf.Irradiance[a][c];
     }
   }
+  // A limiter, as for discontinuous Galerkin solutions (Barth & Jespersen
+  // 1989): between its nodes a fit is faithful, but out at a curved
+  // cluster's vertices a quadratic one can overshoot, even below zero
+  // (black specks on a glossy statue). The part above the mean is scaled
+  // back until every component lies within its range at the nodes, widened
+  // by half of it.
+  double theta = 1.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const Vec3 mean = phi[0] * leaf.Irradiance[0][c];
+    for (int k = 0; k < 3; ++k)
+    {
+      // Slack of half the range: a steady gradient runs on past the
+      // outermost nodes to the element's edge (a contact edge), an
+      // overshoot does not.
+      const double slack = 0.5 * (leaf.Highest[c][k] - leaf.Lowest[c][k]);
+      const double high = leaf.Highest[c][k] + slack, low = leaf.Lowest[c][k] - slack;
+      const double rise = v[c][k] - mean[k];
+      if (v[c][k] > high && rise > 0.0)
+      {
+        theta = std::min(theta, std::max(high - mean[k], 0.0) / rise);
+      }
+      else if (v[c][k] < low && rise < 0.0)
+      {
+        theta = std::min(theta, std::min(low - mean[k], 0.0) / rise);
+      }
+    }
+  }
+  if (theta < 1.0)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const Vec3 mean = phi[0] * leaf.Irradiance[0][c];
+      v[c] = mean + theta * (v[c] - mean);
+    }
+  }
   return v;
+}
+
+void FaceClusterRadiosity::BoundLeafExpansions()
+{
+  const int ne = this->IrradianceBasis.Size();
+  for (FaceClusterElement& e : this->Nodes)
+  {
+    if (!e.IsLeaf())
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      e.Lowest[c] = Vec3(std::numeric_limits<double>::infinity());
+      e.Highest[c] = Vec3(-std::numeric_limits<double>::infinity());
+    }
+    for (std::size_t q = 0; q < e.Rule.Size(); ++q)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        Vec3 atNode(0.0);
+        for (int a = 0; a < ne; ++a)
+        {
+          atNode += e.Rule.Phi[q * ne + a] * e.Irradiance[a][c];
+        }
+        e.Lowest[c] = glm::min(e.Lowest[c], atNode);
+        e.Highest[c] = glm::max(e.Highest[c], atNode);
+      }
+    }
+  }
 }
 
 IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const Vec3& x) const

@@ -1,0 +1,166 @@
+// The glossy statue: the Stanford bunny (subdivided once, 14,696
+// triangles, Phong exponent 10) in the Cornell box (its blocks taken out,
+// every triangle split in 16), solved by face cluster radiosity and shaded
+// per pixel by vtkVectorIrradianceMapper (vtkRadiosityView): left with the
+// constant irradiance basis (plain face cluster radiosity), right with the
+// quadratic one. The two must differ, and the window matches its baseline.
+#include "vtkCellData.h"
+#include "vtkFloatingPointExceptions.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityView.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "Radiosity/BunnyScene.h"
+#include "Radiosity/FaceClusterRadiosity.h"
+#include "Radiosity/SceneGenerators.h"
+
+#include <cmath>
+#include <iostream>
+
+using namespace radiosity;
+
+namespace
+{
+Scene MakeGlossyBunnyCornell()
+{
+  // The box without its blocks, every triangle split in 16.
+  const Scene box = MakeCornellBox();
+  Scene room;
+  room.Points = box.Points;
+  room.ObjectNames = box.ObjectNames;
+  for (std::size_t t = 0; t < box.Triangles.size(); ++t)
+  {
+    if (box.ObjectIds[t] < 6)
+    {
+      room.Triangles.push_back(box.Triangles[t]);
+      room.Materials.push_back(box.Materials[t]);
+      room.ObjectIds.push_back(box.ObjectIds[t]);
+    }
+  }
+  room.ObjectNames.resize(6);
+  for (int l = 0; l < 2; ++l)
+  {
+    SubdivideAtMidpoints(room.Points, room.Triangles);
+    std::vector<Material> materials;
+    std::vector<int> objects;
+    for (std::size_t t = 0; t < room.Materials.size(); ++t)
+    {
+      materials.insert(materials.end(), 4, room.Materials[t]);
+      objects.insert(objects.end(), 4, room.ObjectIds[t]);
+    }
+    room.Materials.swap(materials);
+    room.ObjectIds.swap(objects);
+  }
+  // The bunny, 0.25 m high, standing in the middle of the floor, glossy.
+  Scene bunny = ReadNpmBunny(RADIOSITY_BUNNY_JS);
+  SubdivideAtMidpoints(bunny.Points, bunny.Triangles);
+  double volume = 0.0;
+  for (std::size_t t = 0; t < bunny.Triangles.size(); ++t)
+  {
+    volume += glm::dot(bunny.Vertex(t, 0), glm::cross(bunny.Vertex(t, 1), bunny.Vertex(t, 2)));
+  }
+  if (volume < 0)
+  {
+    for (Triangle& t : bunny.Triangles)
+    {
+      std::swap(t.V[1], t.V[2]);
+    }
+  }
+  Vec3 lo, hi;
+  bunny.BoundingBox(lo, hi);
+  const double scale = 0.25 / (hi.y - lo.y);
+  for (Vec3& p : bunny.Points)
+  {
+    p = (p - Vec3(0.5 * (lo.x + hi.x), lo.y, 0.5 * (lo.z + hi.z))) * scale + Vec3(0.278, 0.0, 0.3);
+  }
+  Material statue;
+  statue.Reflectance = RGB(0.6, 0.55, 0.5);
+  statue.Specular = RGB(0.35);
+  statue.Shininess = 10.0;
+  bunny.Materials.assign(bunny.Triangles.size(), statue);
+  bunny.ObjectIds.assign(bunny.Triangles.size(), 0);
+  bunny.ObjectNames = { "bunny" };
+  AppendScene(room, bunny);
+  room.SourceCells.clear();
+  return room;
+}
+}
+
+int TestGlossyBunnyCornell(int argc, char* argv[])
+{
+  vtkFloatingPointExceptions::Disable();
+  vtkSmartPointer<vtkPolyData> scene = vtkRadiositySceneConverter::FromScene(MakeGlossyBunnyCornell());
+  const int width = 400, height = 400;
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetOffScreenRendering(1);
+  window->SetSize(2 * width, height);
+  const double position[3] = { 0.278, 0.2, -0.25 }, focal[3] = { 0.278, 0.11, 0.3 },
+               up[3] = { 0.0, 1.0, 0.0 };
+  vtkNew<vtkRadiosityFilter> solvers[2];
+  vtkNew<vtkRadiosityView> views[2];
+  vtkNew<vtkPolyData> shaded[2];
+  const int bases[2] = { vtkRadiosityFilter::ConstantBasis, vtkRadiosityFilter::QuadraticBasis };
+  for (int half = 0; half < 2; ++half)
+  {
+    solvers[half]->SetInputData(scene);
+    solvers[half]->SetMethodToFaceCluster();
+    solvers[half]->SetIrradianceBasis(bases[half]);
+    solvers[half]->Update();
+    if (!solvers[half]->GetLastError().empty())
+    {
+      std::cerr << "solve failed: " << solvers[half]->GetLastError() << "\n";
+      return EXIT_FAILURE;
+    }
+    const FaceClusterStatistics& s = solvers[half]->GetFaceClusterSolution()->Statistics();
+    std::cout << vtkRadiosityFilter::GetBasisName(bases[half]) << " basis: "
+              << scene->GetNumberOfCells() << " triangles, " << s.LeafElements << " leaf elements, "
+              << s.Transfers << " transfers, " << s.SolveSeconds << " s\n";
+    // The solution's cells are the scene's triangles: the glossy materials
+    // ride along for the display.
+    shaded[half]->ShallowCopy(solvers[half]->GetOutput());
+    shaded[half]->GetCellData()->AddArray(scene->GetCellData()->GetArray("Specular"));
+    shaded[half]->GetCellData()->AddArray(scene->GetCellData()->GetArray("Shininess"));
+    views[half]->SetInputData(shaded[half]);
+    views[half]->SetRenderWindow(window);
+    views[half]->SetSize(2 * width, height);
+    views[half]->SetCamera(position, focal, up, 50.0);
+    views[half]->SetExposure(1.5);
+    views[half]->GetRenderer()->SetViewport(0.5 * half, 0.0, 0.5 * (half + 1), 1.0);
+    if (!views[half]->UsesVectorIrradianceMapper() || !views[half]->Render())
+    {
+      std::cerr << "the view does not shade the irradiance vectors\n";
+      return EXIT_FAILURE;
+    }
+  }
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(0, 0, 2 * width - 1, height - 1, 1, pixels);
+  double difference = 0.0, mean = 0.0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const double a = pixels->GetValue(4 * (y * 2 * width + x) + c);
+        const double b = pixels->GetValue(4 * (y * 2 * width + x + width) + c);
+        difference += std::abs(a - b) / (3.0 * width * height);
+        mean += a / (3.0 * width * height);
+      }
+    }
+  }
+  std::cout << "mean pixel " << mean << ", mean difference between the bases " << difference << "\n";
+  if (mean < 20.0 || difference < 0.2)
+  {
+    std::cerr << "the image is dark or the two bases do not differ\n";
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
