@@ -61,6 +61,15 @@ int vtkDiscontinuityMeshFilter::RequestData(
     : nullptr;
   std::shared_ptr<const radiosity::HierarchicalRadiosity> solution =
     carrier ? carrier->GetSolution() : nullptr;
+  // ParaView hands over a copy without the information: the solver that
+  // produced the input then answers.
+  if (!solution && this->GetNumberOfInputConnections(0) > 0)
+  {
+    if (auto* solver = vtkRadiosityFilter::FindUpstream(this->GetInputAlgorithm(0, 0)))
+    {
+      solution = solver->GetHierarchicalSolution();
+    }
+  }
   if (!solution)
   {
     this->LastError = "the input carries no hierarchical radiosity solution: run "

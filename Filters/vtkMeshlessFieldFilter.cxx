@@ -40,14 +40,24 @@ int vtkMeshlessFieldFilter::RequestData(
     ? vtkMeshlessRadiositySolution::SafeDownCast(
         input->GetInformation()->Get(vtkRadiosityFilter::MESHLESS_SOLUTION()))
     : nullptr;
-  if (!carrier || !carrier->GetSolution())
+  std::shared_ptr<const radiosity::MeshlessRadiosity> held = carrier ? carrier->GetSolution() : nullptr;
+  // ParaView hands over a copy without the information: the solver that
+  // produced the input then answers.
+  if (!held && this->GetNumberOfInputConnections(0) > 0)
+  {
+    if (auto* solver = vtkRadiosityFilter::FindUpstream(this->GetInputAlgorithm(0, 0)))
+    {
+      held = solver->GetMeshlessSolution();
+    }
+  }
+  if (!held)
   {
     this->LastError = "the input carries no meshless radiosity solution: run vtkRadiosityFilter "
                       "with Method Meshless upstream";
     vtkErrorMacro(<< this->LastError);
     return 1;
   }
-  const radiosity::MeshlessRadiosity& solution = *carrier->GetSolution();
+  const radiosity::MeshlessRadiosity& solution = *held;
   const auto& points = solution.Points().Points();
   const auto n = static_cast<vtkIdType>(points.size());
   const std::vector<radiosity::RGB>& b = solution.Irradiance().Coefficients();

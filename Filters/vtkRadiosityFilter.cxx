@@ -30,6 +30,23 @@ vtkStandardNewMacro(vtkRadiosityFilter);
 vtkInformationKeyMacro(vtkRadiosityFilter, HIERARCHICAL_SOLUTION, ObjectBase);
 vtkInformationKeyMacro(vtkRadiosityFilter, MESHLESS_SOLUTION, ObjectBase);
 
+vtkRadiosityFilter* vtkRadiosityFilter::FindUpstream(vtkAlgorithm* producer)
+{
+  for (int hop = 0; producer && hop < 4; ++hop)
+  {
+    if (auto* solver = vtkRadiosityFilter::SafeDownCast(producer))
+    {
+      return solver;
+    }
+    if (!producer->IsA("vtkPVPostFilter") || producer->GetNumberOfInputConnections(0) < 1)
+    {
+      return nullptr;
+    }
+    producer = producer->GetInputAlgorithm(0, 0);
+  }
+  return nullptr;
+}
+
 namespace
 {
 /// A solver together with the scene it references, so that the solver

@@ -161,6 +161,13 @@ public:
 
   /// Why the last execution failed ("" when it did not).
   const std::string& GetLastError() const { return this->LastError; }
+
+  /**
+   * The vtkRadiosityFilter that `producer` is, or that feeds it through
+   * ParaView's pass-through vtkPVPostFilter (which copies the data without
+   * the information keys that carry the solutions); null otherwise.
+   */
+  static vtkRadiosityFilter* FindUpstream(vtkAlgorithm* producer);
   /// What the last execution ignored or defaulted.
   const std::vector<std::string>& GetWarnings() const { return this->Warnings; }
   /// Statistics of the last solve (history, counts, times).

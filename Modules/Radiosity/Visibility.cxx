@@ -10,6 +10,19 @@
 
 namespace radiosity
 {
+namespace
+{
+// One Embree device for the process, never released: a solution held by a
+// VTK object until the process exits (ParaView keeps its pipelines to the
+// end) would otherwise release its device after Embree's own statics are
+// gone, and rtcReleaseDevice then waits forever on a destroyed mutex.
+RTCDevice SharedDevice()
+{
+  static RTCDevice device = rtcNewDevice("threads=0");
+  return device;
+}
+}
+
 struct Visibility::Internals
 {
   RTCDevice Device = nullptr;
@@ -41,7 +54,7 @@ Visibility::Visibility(const Scene& scene, const std::vector<unsigned char>& can
   }
   this->NumberOfOccluders = this->Impl->GeometryToTriangle.size();
 
-  this->Impl->Device = rtcNewDevice("threads=0");
+  this->Impl->Device = SharedDevice();
   if (!this->Impl->Device)
   {
     throw std::runtime_error("Embree: cannot create a device");
@@ -83,10 +96,6 @@ Visibility::~Visibility()
   if (this->Impl->Scene)
   {
     rtcReleaseScene(this->Impl->Scene);
-  }
-  if (this->Impl->Device)
-  {
-    rtcReleaseDevice(this->Impl->Device);
   }
 }
 

@@ -1,0 +1,102 @@
+"""pvbatch test of the Radiosity plugin's other filters, each on the Cornell
+box: the face cluster hierarchy's ClusterId levels, the discontinuity mesh's
+quadratic interpolants, the meshless field and its Shepard probe, and a
+screenshot of the solution (Surface coloured by Radiosity) against its
+baseline.
+
+Usage: pvbatch --force-offscreen-rendering TestRadiosityFilters.py <plugin.so> <baseline.png> <output dir>
+"""
+import math
+import os
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager
+from vtkmodules.vtkImagingCore import vtkImageDifference  # noqa: F401
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def finite_positive(array):
+    values = [array.GetComponent(i, c) for i in range(array.GetNumberOfTuples())
+              for c in range(array.GetNumberOfComponents())]
+    return bool(values) and all(math.isfinite(v) for v in values) and max(values) > 0.0
+
+
+LoadPlugin(sys.argv[1], remote=False, ns=globals())
+baseline, output = sys.argv[2], sys.argv[3]
+box = CornellBox()
+
+clusters = FaceClusterHierarchy(Input=box)
+clusters.NumberOfLevels = 3
+data = servermanager.Fetch(clusters)
+for level in range(3):
+    check(data.GetCellData().GetArray("ClusterId%d" % level) is not None, "no ClusterId%d" % level)
+check(data.GetCellData().GetArray("ClusterId3") is None, "NumberOfLevels 3 wrote a fourth level")
+
+hierarchical = Radiosity(Input=box)
+hierarchical.Method = "Hierarchical"
+mesh = DiscontinuityMesh(Input=hierarchical)
+data = servermanager.Fetch(mesh)
+interpolants = data.GetCellData().GetArray("QuadraticInterpolant")
+check(interpolants is not None and interpolants.GetNumberOfComponents() == 18,
+      "no 18-component QuadraticInterpolant")
+check(finite_positive(data.GetCellData().GetArray("Irradiance")), "discontinuity mesh irradiance")
+print("discontinuity mesh: %d triangles" % data.GetNumberOfCells())
+
+meshless = Radiosity(Input=box)
+meshless.Method = "Meshless"
+field = MeshlessField(Input=meshless)
+data = servermanager.Fetch(field)
+for name in ("Level", "Radius", "Coefficient", "Irradiance"):
+    check(data.GetPointData().GetArray(name) is not None, "meshless field: no %s" % name)
+probe = ShepardFieldProbe(Input=box, Field=field)
+data = servermanager.Fetch(probe)
+check(finite_positive(data.GetPointData().GetArray("Irradiance")), "Shepard probe irradiance")
+print("meshless field: %d basis functions" % servermanager.Fetch(field).GetNumberOfPoints())
+
+# The progressive solution as ParaView shows it, against the baseline.
+solve = Radiosity(Input=box)
+view = CreateRenderView()
+view.ViewSize = [400, 400]
+view.OrientationAxesVisibility = 0
+display = Show(solve, view)
+ColorBy(display, ("POINTS", "Radiosity", "Magnitude"))
+lut = GetColorTransferFunction("Radiosity")
+lut.ApplyPreset("Grayscale", True)
+lut.RescaleTransferFunction(0.0, 1.2)  # the walls; the light saturates
+# The radiosity alone, without ParaView's headlight shading.
+display.Ambient = 1.0
+display.Diffuse = 0.0
+view.CameraPosition = [0.278, 0.273, -0.8]
+view.CameraFocalPoint = [0.278, 0.273, 0.28]
+view.CameraViewUp = [0.0, 1.0, 0.0]
+view.CameraViewAngle = 39.0
+Render(view)
+image = os.path.join(output, "TestRadiosityFilters.png")
+SaveScreenshot(image, view, ImageResolution=[400, 400])
+if not os.path.exists(baseline):
+    check(False, "no baseline %s: look at %s and commit it" % (baseline, image))
+else:
+    readers = [vtkPNGReader(), vtkPNGReader()]
+    readers[0].SetFileName(baseline)
+    readers[1].SetFileName(image)
+    difference = vtkImageDifference()
+    difference.SetInputConnection(readers[1].GetOutputPort())
+    difference.SetImageConnection(readers[0].GetOutputPort())
+    difference.Update()
+    print("image difference %.3f" % difference.GetThresholdedError())
+    check(difference.GetThresholdedError() <= 0.15,
+          "screenshot differs from its baseline: %.3f" % difference.GetThresholdedError())
+
+if failures:
+    print("%d failure(s)" % len(failures))
+    sys.exit(1)
+print("all checks passed")
