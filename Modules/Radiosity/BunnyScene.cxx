@@ -201,11 +201,8 @@ Scene MakeBunnyRoomWithTriangles(const Scene& source, std::size_t triangles)
   return PlaceInRoom(std::move(bunny));
 }
 
-namespace
+void StandUpright(Scene& bunny, double height, const Vec3& base)
 {
-Scene PlaceInRoom(Scene bunny)
-{
-  // Faces outward: a positive enclosed volume.
   double volume = 0.0;
   for (std::size_t t = 0; t < bunny.Triangles.size(); ++t)
   {
@@ -220,12 +217,19 @@ Scene PlaceInRoom(Scene bunny)
   }
   Vec3 lo, hi;
   bunny.BoundingBox(lo, hi);
-  const double scale = 0.5 / (hi.y - lo.y);
-  const Vec3 base(0.5 * (lo.x + hi.x), lo.y, 0.5 * (lo.z + hi.z));
+  const double scale = height / (hi.y - lo.y);
+  const Vec3 foot(0.5 * (lo.x + hi.x), lo.y, 0.5 * (lo.z + hi.z));
   for (Vec3& p : bunny.Points)
   {
-    p = (p - base) * scale + Vec3(1.0, 0.0, 1.0);
+    p = (p - foot) * scale + base;
   }
+}
+
+namespace
+{
+Scene PlaceInRoom(Scene bunny)
+{
+  StandUpright(bunny, 0.5, Vec3(1.0, 0.0, 1.0));
   Material statue;
   statue.Reflectance = RGB(0.7);
   bunny.Materials.assign(bunny.Triangles.size(), statue);

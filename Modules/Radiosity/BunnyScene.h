@@ -23,6 +23,10 @@ Scene ReadNpmBunny(const std::string& indexJs);
  */
 Scene MakeBunnyRoom(const Scene& bunny, int levels);
 
+/// Turns `bunny`'s faces outward (a positive enclosed volume), scales it to
+/// `height` along y and stands it with the centre of its base at `base`.
+void StandUpright(Scene& bunny, double height, const Vec3& base);
+
 /**
  * The same room with the bunny at exactly `triangles` triangles (at least the
  * source's): midpoint subdivision while it fits, then the longest edges of

@@ -60,25 +60,7 @@ Scene MakeGlossyBunnyCornell()
   // The bunny, 0.25 m high, standing in the middle of the floor, glossy.
   Scene bunny = ReadNpmBunny(RADIOSITY_BUNNY_JS);
   SubdivideAtMidpoints(bunny.Points, bunny.Triangles);
-  double volume = 0.0;
-  for (std::size_t t = 0; t < bunny.Triangles.size(); ++t)
-  {
-    volume += glm::dot(bunny.Vertex(t, 0), glm::cross(bunny.Vertex(t, 1), bunny.Vertex(t, 2)));
-  }
-  if (volume < 0)
-  {
-    for (Triangle& t : bunny.Triangles)
-    {
-      std::swap(t.V[1], t.V[2]);
-    }
-  }
-  Vec3 lo, hi;
-  bunny.BoundingBox(lo, hi);
-  const double scale = 0.25 / (hi.y - lo.y);
-  for (Vec3& p : bunny.Points)
-  {
-    p = (p - Vec3(0.5 * (lo.x + hi.x), lo.y, 0.5 * (lo.z + hi.z))) * scale + Vec3(0.278, 0.0, 0.3);
-  }
+  StandUpright(bunny, 0.25, Vec3(0.278, 0.0, 0.3));
   Material statue;
   statue.Reflectance = RGB(0.6, 0.55, 0.5);
   statue.Specular = RGB(0.35);
