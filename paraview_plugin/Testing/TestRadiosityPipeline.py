@@ -69,6 +69,34 @@ twice = mean_irradiance(servermanager.Fetch(solve))
 check(abs(twice / once - 2.0) < 1e-6, "LightScale 2 gave %s times the irradiance" % (twice / once))
 print("light x2: irradiance x%.6f" % (twice / once))
 
+# Progress reaches ParaView (the progress bar listens to the algorithm's
+# ProgressEvent), rising; aborting from it stops the solve with a warning.
+progress = []
+solver = solve.GetClientSideObject()
+tag = solver.AddObserver("ProgressEvent", lambda o, e: progress.append(o.GetProgress()))
+box.LightScale = 1.5
+solve.UpdatePipeline()
+solver.RemoveObserver(tag)
+check(len(progress) >= 3, "only %d progress events" % len(progress))
+check(all(b >= a for a, b in zip(progress, progress[1:])), "progress went backwards")
+print("progress: %d events, last %.2f" % (len(progress), progress[-1] if progress else -1))
+messages = vtkStringOutputWindow()
+vtkOutputWindow.SetInstance(messages)
+
+
+def abort(o, e):
+    if o.GetProgress() > 0.05:
+        o.SetAbortExecute(1)
+
+
+tag = solver.AddObserver("ProgressEvent", abort)
+box.LightScale = 1.25
+solve.UpdatePipeline()
+solver.RemoveObserver(tag)
+vtkOutputWindow.SetInstance(None)
+check("aborted" in messages.GetOutput(), "no abort warning: %r" % messages.GetOutput()[:300])
+solver.SetAbortExecute(0)
+
 # Bad input: a Reflectance of one component; the error names the array.
 messages = vtkStringOutputWindow()
 vtkOutputWindow.SetInstance(messages)
