@@ -267,10 +267,7 @@ void vtkQuadraticInterpolantMapper::ReplaceShaderValues(
   // The barycentrics: a vertex attribute passed on as a smooth varying (the
   // default, perspective-correct interpolation).
   vtkRadiosityAddVarying(shaders, "vec2", "interpolantST", "in vec2 interpolantST;\n",
-    "interpolantST",
-    "uniform samplerBuffer interpolantTexture;\n"
-    "uniform float radianceScale;\n"
-    "uniform float inverseGamma;\n");
+    "interpolantST", std::string("uniform samplerBuffer interpolantTexture;\n") + RadianceUniforms());
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 }
 
@@ -307,8 +304,7 @@ void vtkQuadraticInterpolantMapper::ReplaceShaderLight(
     "  float t = interpolantSTVSOutput.y;\n"
     // Hardt & Teller eq. 1: eight multiplies and five adds per channel.
     "  vec3 irradiance = coefA*s*s + coef2B*s*t + coef2C*s + coefD*t*t + coef2E*t + coefF;\n"
-    "  vec3 radiance = (emission + reflectance*irradiance) * radianceScale;\n"
-    "  vec3 encoded = pow(max(radiance, vec3(0.0)), vec3(inverseGamma));\n";
+    "  vec3 encoded = " + EncodedRadiance("emission + reflectance*irradiance") + ";\n";
   if (this->DrawingEdges(ren, actor))
   {
     // emix: the superclass's edge coverage (//VTK::Edges::Impl).
@@ -317,23 +313,6 @@ void vtkQuadraticInterpolantMapper::ReplaceShaderLight(
   impl += "  gl_FragData[0] = vec4(encoded, opacity);\n";
   vtkShaderProgram::Substitute(FSSource, "//VTK::Light::Impl", impl);
   shaders[vtkShader::Fragment]->SetSource(FSSource);
-}
-
-//------------------------------------------------------------------------------
-void vtkQuadraticInterpolantMapper::SetMapperShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
-{
-  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
-  vtkShaderProgram* program = cellBO.Program;
-  if (program->IsUniformUsed("radianceScale"))
-  {
-    // Lambertian surfaces: L = B / pi.
-    program->SetUniformf("radianceScale", static_cast<float>(this->Exposure / vtkMath::Pi()));
-  }
-  if (program->IsUniformUsed("inverseGamma"))
-  {
-    program->SetUniformf("inverseGamma", static_cast<float>(1.0 / this->Gamma));
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -354,8 +333,6 @@ vtkUnsignedCharArray* vtkQuadraticInterpolantMapper::MapScalars(double alpha, in
 void vtkQuadraticInterpolantMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Exposure: " << this->Exposure << "\n";
-  os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "InterpolantArrayName: " << GetInterpolantArrayName() << "\n";
   os << indent << "ReflectanceArrayName: " << GetReflectanceArrayName() << "\n";
   os << indent << "EmissionArrayName: " << GetEmissionArrayName() << "\n";

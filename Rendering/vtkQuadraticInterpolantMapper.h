@@ -94,24 +94,6 @@ public:
 
   ///@{
   /**
-   * Scale applied to the radiance B / pi (default 1), clamped to [0, 1e12].
-   */
-  vtkSetClampMacro(Exposure, double, 0.0, 1e12);
-  vtkGetMacro(Exposure, double);
-  ///@}
-
-  ///@{
-  /**
-   * Gamma of the encoding of the fragment colour, L^(1/Gamma) (default 2.2,
-   * which vtkToneMappingPass decodes before its operator). 1 writes the
-   * linear radiance. Clamped to [0.1, 10].
-   */
-  vtkSetClampMacro(Gamma, double, 0.1, 10.0);
-  vtkGetMacro(Gamma, double);
-  ///@}
-
-  ///@{
-  /**
    * Names of the cell arrays read (SPEC.md): "QuadraticInterpolant"
    * (18 components), "Reflectance" (3) and "Emission" (3).
    */
@@ -162,10 +144,6 @@ protected:
   void ReplaceShaderLight(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
 
-  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-
-  double Exposure = 1.0;
-  double Gamma = 2.2;
 
   // The unshared-vertex copy of the input that the superclass draws, and the
   // input state it was built from.

@@ -1,5 +1,7 @@
 #include "vtkRadiosityCellTexelMapper.h"
 
+#include "vtkMath.h"
+
 #include "vtkActor.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -80,6 +82,26 @@ void vtkRadiosityCellTexelMapper::SetMapperShaderParameters(
   {
     cellBO.Program->SetUniformi(this->CellTexelUniform.c_str(), this->CellBuffer->GetTextureUnit());
   }
+  if (cellBO.Program->IsUniformUsed("radianceScale"))
+  {
+    // Lambertian surfaces: L = B / pi.
+    cellBO.Program->SetUniformf("radianceScale", static_cast<float>(this->Exposure / vtkMath::Pi()));
+  }
+  if (cellBO.Program->IsUniformUsed("inverseGamma"))
+  {
+    cellBO.Program->SetUniformf("inverseGamma", static_cast<float>(1.0 / this->Gamma));
+  }
+}
+
+const char* vtkRadiosityCellTexelMapper::RadianceUniforms()
+{
+  return "uniform float radianceScale;\n"
+         "uniform float inverseGamma;\n";
+}
+
+std::string vtkRadiosityCellTexelMapper::EncodedRadiance(const std::string& radiosity)
+{
+  return "pow(max((" + radiosity + ") * radianceScale, vec3(0.0)), vec3(inverseGamma))";
 }
 
 void vtkRadiosityCellTexelMapper::SetLightingShaderParameters(
@@ -106,6 +128,8 @@ void vtkRadiosityCellTexelMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkRadiosityCellTexelMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "CellTexelUniform: " << this->CellTexelUniform << "\n";
   os << indent << "CellFloats: " << this->CellFloats << "\n";
   os << indent << "Cells: " << this->CellTexels.size() / std::max(this->CellFloats, 1) << "\n";

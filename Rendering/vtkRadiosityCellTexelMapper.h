@@ -15,6 +15,11 @@
  * representations work too), uploads them when they or the representation
  * change, binds them around the draw, and draws nothing for an input the
  * subclass refused. Lighting and textures do not apply.
+ *
+ * All of them write the radiance L = B / pi * Exposure encoded as
+ * L^(1/Gamma) for a vtkToneMappingPass, which decodes it before its
+ * operator: the fragment shader declares RadianceUniforms() and ends with
+ * EncodedRadiance(); the uniforms are set here.
  */
 #ifndef vtkRadiosityCellTexelMapper_h
 #define vtkRadiosityCellTexelMapper_h
@@ -37,6 +42,24 @@ public:
   /// Releases the texture buffer with the superclass's resources.
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
+  ///@{
+  /**
+   * Scale applied to the radiance B / pi (default 1), clamped to [0, 1e12].
+   */
+  vtkSetClampMacro(Exposure, double, 0.0, 1e12);
+  vtkGetMacro(Exposure, double);
+  ///@}
+
+  ///@{
+  /**
+   * Gamma of the encoding of the fragment colour, L^(1/Gamma) (default 2.2,
+   * which vtkToneMappingPass decodes before its operator). 1 writes the
+   * linear radiance. Clamped to [0.1, 10].
+   */
+  vtkSetClampMacro(Gamma, double, 0.1, 10.0);
+  vtkGetMacro(Gamma, double);
+  ///@}
+
 protected:
   vtkRadiosityCellTexelMapper(const char* uniform, int floatsPerCell, const char* what);
   ~vtkRadiosityCellTexelMapper() override;
@@ -49,7 +72,8 @@ protected:
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* act) override;
   ///@}
 
-  /// Binds the sampler uniform.
+  /// Binds the sampler uniform, and radianceScale (Exposure / pi) and
+  /// inverseGamma when the shader uses them.
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   /// No lighting: sets nothing (except for vertices drawn by VertexVisibility).
   void SetLightingShaderParameters(
@@ -60,6 +84,14 @@ protected:
 
   /// GLSL: the index of the first texel of the current primitive's block.
   std::string CellTexelIndex() const;
+  /// GLSL declarations of the uniforms radianceScale and inverseGamma.
+  static const char* RadianceUniforms();
+  /// GLSL: the encoded colour of `radiosity` (a vec3 expression, W/m^2):
+  /// (radiosity * radianceScale)^inverseGamma, negative parts cut.
+  static std::string EncodedRadiance(const std::string& radiosity);
+
+  double Exposure = 1.0;
+  double Gamma = 2.2;
 
   // Filled by the subclass.
   std::vector<float> CellTexels;

@@ -470,8 +470,6 @@ void vtkShepardSplatMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkShepardSplatMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Exposure: " << this->Exposure << "\n";
-  os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "Field: " << this->GetField() << "\n";
   os << indent << "NumberOfLevels: " << this->GetNumberOfLevels() << "\n";
   os << indent << "FieldPoints: " << this->PointTexels.size() / FloatsPerPoint << "\n";

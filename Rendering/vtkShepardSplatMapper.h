@@ -88,23 +88,6 @@ public:
 
   ///@{
   /**
-   * Scale applied to the radiance B / pi (default 1), clamped to [0, 1e12].
-   */
-  vtkSetClampMacro(Exposure, double, 0.0, 1e12);
-  vtkGetMacro(Exposure, double);
-  ///@}
-
-  ///@{
-  /**
-   * Gamma of the encoding of the fragment colour, L^(1/Gamma) (default 2.2,
-   * which vtkToneMappingPass decodes). Clamped to [0.1, 10].
-   */
-  vtkSetClampMacro(Gamma, double, 0.1, 10.0);
-  vtkGetMacro(Gamma, double);
-  ///@}
-
-  ///@{
-  /**
    * The field (input port 1): vtkMeshlessFieldFilter's output.
    */
   void SetFieldConnection(vtkAlgorithmOutput* output);
@@ -155,8 +138,6 @@ protected:
   void ReplaceShaderLight(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
 
-  double Exposure = 1.0;
-  double Gamma = 2.2;
 
 private:
   vtkShepardSplatMapper(const vtkShepardSplatMapper&) = delete;

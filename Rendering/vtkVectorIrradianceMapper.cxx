@@ -239,10 +239,9 @@ void vtkVectorIrradianceMapper::ReplaceShaderValues(
   vtkRadiosityAddVarying(shaders, "vec3", "irradianceB", "in vec3 irradianceB;\n", "irradianceB", "");
   vtkRadiosityAddVarying(shaders, "vec3", "surfaceNormal", "in vec3 surfaceNormal;\n", "surfaceNormal", "");
   vtkRadiosityAddVarying(shaders, "vec3", "surfacePosition", "", "vertexMC.xyz",
-    "uniform samplerBuffer vectorCellTexels;\n"
-    "uniform vec3 eyePositionMC;\n"
-    "uniform float radianceScale;\n"
-    "uniform float inverseGamma;\n");
+    std::string("uniform samplerBuffer vectorCellTexels;\n"
+                "uniform vec3 eyePositionMC;\n") +
+      RadianceUniforms());
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 }
 
@@ -264,10 +263,10 @@ void vtkVectorIrradianceMapper::ReplaceShaderLight(
     "  vec4 diffuseShininess = texelFetchBuffer(vectorCellTexels, vectorCell);\n"
     "  vec4 specularColour = texelFetchBuffer(vectorCellTexels, vectorCell + 1);\n"
     "  vec4 emitted = texelFetchBuffer(vectorCellTexels, vectorCell + 2);\n"
-    "  const float pi = 3.14159265358979;\n"
     "  vec3 n = normalize(surfaceNormalVSOutput);\n"
     "  vec3 E[3] = vec3[3](irradianceRVSOutput, irradianceGVSOutput, irradianceBVSOutput);\n"
-    "  vec3 radiance = emitted.rgb / pi;\n";
+    // Radiosity-like: pi L, which EncodedRadiance scales by Exposure / pi.
+    "  vec3 radiosity = emitted.rgb;\n";
   if (this->Glossy)
   {
     impl += "  vec3 toEye = normalize(eyePositionMC - surfacePositionVSOutput);\n"
@@ -276,7 +275,7 @@ void vtkVectorIrradianceMapper::ReplaceShaderLight(
   }
   impl += "  for (int c = 0; c < 3; ++c)\n"
           "  {\n"
-          "    float brdf = diffuseShininess[c] / pi;\n";
+          "    float brdfTimesPi = diffuseShininess[c];\n";
   if (this->Glossy)
   {
     // Lewis's modified Phong lobe about the dominant direction (eq. 10).
@@ -284,13 +283,12 @@ void vtkVectorIrradianceMapper::ReplaceShaderLight(
             "    if (strength > 0.0)\n"
             "    {\n"
             "      float s = max(dot(mirror, E[c] / strength), 0.0);\n"
-            "      brdf += specularColour[c] * (q + 2.0) / (2.0 * pi) * pow(s, q);\n"
+            "      brdfTimesPi += specularColour[c] * (q + 2.0) / 2.0 * pow(s, q);\n"
             "    }\n";
   }
-  impl += "    radiance[c] += max(dot(n, E[c]), 0.0) * brdf;\n"
+  impl += "    radiosity[c] += max(dot(n, E[c]), 0.0) * brdfTimesPi;\n"
           "  }\n"
-          "  radiance *= radianceScale;\n"
-          "  gl_FragData[0] = vec4(pow(max(radiance, vec3(0.0)), vec3(inverseGamma)), opacity);\n";
+          "  gl_FragData[0] = vec4(" + EncodedRadiance("radiosity") + ", opacity);\n";
   vtkShaderProgram::Substitute(FSSource, "//VTK::Light::Impl", impl);
   shaders[vtkShader::Fragment]->SetSource(FSSource);
 }
@@ -315,22 +313,12 @@ void vtkVectorIrradianceMapper::SetMapperShaderParameters(
       static_cast<float>(mc[2] / mc[3]) };
     program->SetUniform3f("eyePositionMC", position);
   }
-  if (program->IsUniformUsed("radianceScale"))
-  {
-    program->SetUniformf("radianceScale", static_cast<float>(this->Exposure));
-  }
-  if (program->IsUniformUsed("inverseGamma"))
-  {
-    program->SetUniformf("inverseGamma", static_cast<float>(1.0 / this->Gamma));
-  }
 }
 
 //------------------------------------------------------------------------------
 void vtkVectorIrradianceMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Exposure: " << this->Exposure << "\n";
-  os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "Glossy: " << (this->Glossy ? "true" : "false") << "\n";
   os << indent << "InputValid: " << (this->InputValid ? "true" : "false") << "\n";
   if (!this->InputValid && !this->InputError.empty())

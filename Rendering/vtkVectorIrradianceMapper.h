@@ -50,18 +50,6 @@ public:
   vtkTypeMacro(vtkVectorIrradianceMapper, vtkRadiosityCellTexelMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /// Scale applied to the radiance (default 1), clamped to [0, 1e12].
-  vtkSetClampMacro(Exposure, double, 0.0, 1e12);
-  vtkGetMacro(Exposure, double);
-  ///@}
-
-  ///@{
-  /// Gamma of the fragment colour's encoding (default 2.2), clamped to [0.1, 10].
-  vtkSetClampMacro(Gamma, double, 0.1, 10.0);
-  vtkGetMacro(Gamma, double);
-  ///@}
-
   /**
    * Whether `input` can be drawn: polygons only, the point array
    * `IrradianceVector` with 9 components, and the optional arrays with the
@@ -86,8 +74,6 @@ protected:
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
-  double Exposure = 1.0;
-  double Gamma = 2.2;
 
 private:
   vtkVectorIrradianceMapper(const vtkVectorIrradianceMapper&) = delete;
