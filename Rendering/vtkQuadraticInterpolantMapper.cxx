@@ -6,7 +6,6 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
-#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCellToVTKCellMap.h"
 #include "vtkOpenGLHelper.h"
