@@ -12,10 +12,15 @@
 #include "vtkToneMappingPass.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkTestErrorObserver.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
+#include <string>
 
 namespace PixelTestSupport
 {
@@ -89,6 +94,25 @@ inline vtkSmartPointer<vtkUnsignedCharArray> ReadPixels(vtkRenderWindow* window)
   grab->ShouldRerenderOff();
   grab->Update();
   return vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+}
+
+// Renders `window` once after `feed` has given `mapper` its input, and
+// expects an error event whose message contains `expected`.
+template <typename Feed>
+bool ExpectRenderError(vtkRenderWindow* window, vtkObject* mapper, Feed feed, const std::string& expected)
+{
+  vtkNew<vtkTest::ErrorObserver> observer;
+  const unsigned long tag = mapper->AddObserver(vtkCommand::ErrorEvent, observer);
+  feed();
+  window->Render();
+  mapper->RemoveObserver(tag);
+  if (!observer->GetError() || observer->GetErrorMessage().find(expected) == std::string::npos)
+  {
+    std::cerr << "Expected an error containing '" << expected << "', got '"
+              << observer->GetErrorMessage() << "'\n";
+    return false;
+  }
+  return true;
 }
 }
 

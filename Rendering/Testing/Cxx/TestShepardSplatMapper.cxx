@@ -382,19 +382,13 @@ bool CheckPixels(vtkRenderer* ren, vtkRenderWindow* window, const std::vector<Fa
 bool ExpectError(vtkRenderWindow* window, vtkShepardSplatMapper* mapper, vtkPolyData* surface,
   vtkPolyData* field, const std::string& expected)
 {
-  vtkNew<vtkTest::ErrorObserver> observer;
-  const unsigned long tag = mapper->AddObserver(vtkCommand::ErrorEvent, observer);
-  mapper->SetInputData(surface);
-  mapper->SetFieldData(field);
-  window->Render();
-  mapper->RemoveObserver(tag);
-  if (!observer->GetError() || observer->GetErrorMessage().find(expected) == std::string::npos)
-  {
-    std::cerr << "Expected an error containing '" << expected << "', got '"
-              << observer->GetErrorMessage() << "'\n";
-    return false;
-  }
-  return true;
+  return PixelTestSupport::ExpectRenderError(window, mapper,
+    [&]
+    {
+      mapper->SetInputData(surface);
+      mapper->SetFieldData(field);
+    },
+    expected);
 }
 
 bool TestInvalidInput(

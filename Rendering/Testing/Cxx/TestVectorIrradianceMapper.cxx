@@ -278,18 +278,8 @@ bool CheckPixels(vtkRenderer* ren, vtkRenderWindow* window, const std::vector<Tr
 bool ExpectError(vtkRenderWindow* window, vtkVectorIrradianceMapper* mapper, vtkPolyData* input,
   const std::string& expected)
 {
-  vtkNew<vtkTest::ErrorObserver> observer;
-  const unsigned long tag = mapper->AddObserver(vtkCommand::ErrorEvent, observer);
-  mapper->SetInputData(input);
-  window->Render();
-  mapper->RemoveObserver(tag);
-  if (!observer->GetError() || observer->GetErrorMessage().find(expected) == std::string::npos)
-  {
-    std::cerr << "Expected an error containing '" << expected << "', got '"
-              << observer->GetErrorMessage() << "'\n";
-    return false;
-  }
-  return true;
+  return PixelTestSupport::ExpectRenderError(
+    window, mapper, [&] { mapper->SetInputData(input); }, expected);
 }
 }
 
