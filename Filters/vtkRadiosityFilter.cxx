@@ -114,8 +114,7 @@ const char* vtkRadiosityFilter::GetMethodName(int method)
 
 const char* vtkRadiosityFilter::GetBasisName(int basis)
 {
-  static const char* const names[5] = { "constant", "linear", "bilinear", "quadratic", "cubic" };
-  return basis >= 0 && basis < 5 ? names[basis] : "unknown";
+  return basis >= ConstantBasis && basis <= CubicBasis ? radiosity::BasisName(BasisKinds[basis]) : "unknown";
 }
 
 int vtkRadiosityFilter::FillInputPortInformation(int, vtkInformation* info)

@@ -26,54 +26,6 @@
 
 using namespace radiosity;
 
-namespace
-{
-// Every triangle split into 4^levels at edge midpoints, materials and objects
-// kept: face cluster radiosity refines no further than its input.
-Scene Subdivided(const Scene& scene, int levels)
-{
-  Scene out = scene;
-  for (int l = 0; l < levels; ++l)
-  {
-    SubdivideAtMidpoints(out.Points, out.Triangles);
-    auto repeat = [](auto& values) {
-      std::remove_reference_t<decltype(values)> four;
-      four.reserve(4 * values.size());
-      for (const auto& v : values)
-      {
-        four.insert(four.end(), 4, v);
-      }
-      values.swap(four);
-    };
-    repeat(out.Materials);
-    repeat(out.ObjectIds);
-    if (!out.SourceCells.empty())
-    {
-      repeat(out.SourceCells);
-    }
-  }
-  return out;
-}
-
-const char* BasisName(BasisKind kind)
-{
-  switch (kind)
-  {
-    case BasisKind::Constant:
-      return "constant";
-    case BasisKind::Linear:
-      return "linear";
-    case BasisKind::Bilinear:
-      return "bilinear";
-    case BasisKind::Quadratic:
-      return "quadratic";
-    case BasisKind::Cubic:
-      return "cubic";
-  }
-  return "?";
-}
-}
-
 int main(int argc, char* argv[])
 {
   BenchArguments args;
@@ -154,7 +106,7 @@ int main(int argc, char* argv[])
     // tolerance: what the method needs of its input.
     if (!quick && (standard.Name == "cornell" || standard.Name == "shadow" || standard.Name == "contact"))
     {
-      cases.push_back({ standard.Name + " x16", Subdivided(scene, 2), standard.Probes(scene), { 1e-5 } });
+      cases.push_back({ standard.Name + " x16", SubdividedScene(scene, 2), standard.Probes(scene), { 1e-5 } });
     }
   }
   for (const Case& c : cases)

@@ -4,6 +4,24 @@
 
 namespace radiosity
 {
+const char* BasisName(BasisKind kind)
+{
+  switch (kind)
+  {
+    case BasisKind::Constant:
+      return "constant";
+    case BasisKind::Linear:
+      return "linear";
+    case BasisKind::Bilinear:
+      return "bilinear";
+    case BasisKind::Quadratic:
+      return "quadratic";
+    case BasisKind::Cubic:
+      return "cubic";
+  }
+  return "unknown";
+}
+
 namespace
 {
 // Monomial exponents (a, b) of u^a v^b, in the paper's order.

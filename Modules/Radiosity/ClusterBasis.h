@@ -29,6 +29,9 @@ enum class BasisKind
   Cubic = 10
 };
 
+/// "constant", "linear", "bilinear", "quadratic" or "cubic".
+const char* BasisName(BasisKind kind);
+
 class PolynomialBasis
 {
 public:

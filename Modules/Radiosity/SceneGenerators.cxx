@@ -173,6 +173,29 @@ void SubdivideAtMidpoints(std::vector<Vec3>& points, std::vector<Triangle>& tria
   triangles.swap(next);
 }
 
+Scene SubdividedScene(const Scene& scene, int levels)
+{
+  Scene out = scene;
+  // SubdivideAtMidpoints puts a triangle's four parts together in its place.
+  auto repeat = [](auto& values) {
+    std::remove_reference_t<decltype(values)> four;
+    four.reserve(4 * values.size());
+    for (const auto& v : values)
+    {
+      four.insert(four.end(), 4, v);
+    }
+    values.swap(four);
+  };
+  for (int l = 0; l < levels; ++l)
+  {
+    SubdivideAtMidpoints(out.Points, out.Triangles);
+    repeat(out.Materials);
+    repeat(out.ObjectIds);
+    repeat(out.SourceCells);
+  }
+  return out;
+}
+
 Scene MakeSphereInterior(double radius, int levels, double reflectance, const RGB& emission)
 {
   const double g = (1.0 + std::sqrt(5.0)) / 2.0;

@@ -49,6 +49,10 @@ Scene MakeParallelSquares(double a, double c, int n, double reflectance, double 
 void SubdivideAtMidpoints(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
   const std::function<Vec3(const Vec3&)>& place = {});
 
+/// `scene` with every triangle split into 4^levels at edge midpoints, each
+/// part keeping its triangle's material, object and source cell.
+Scene SubdividedScene(const Scene& scene, int levels);
+
 /// The inside of a sphere (an icosphere subdivided `levels` times, faces
 /// inward), uniform reflectance, emission `emission` on the cap z > 0.5 r only.
 Scene MakeSphereInterior(double radius, int levels, double reflectance, const RGB& emission);

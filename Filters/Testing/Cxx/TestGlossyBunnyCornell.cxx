@@ -44,19 +44,7 @@ Scene MakeGlossyBunnyCornell()
     }
   }
   room.ObjectNames.resize(6);
-  for (int l = 0; l < 2; ++l)
-  {
-    SubdivideAtMidpoints(room.Points, room.Triangles);
-    std::vector<Material> materials;
-    std::vector<int> objects;
-    for (std::size_t t = 0; t < room.Materials.size(); ++t)
-    {
-      materials.insert(materials.end(), 4, room.Materials[t]);
-      objects.insert(objects.end(), 4, room.ObjectIds[t]);
-    }
-    room.Materials.swap(materials);
-    room.ObjectIds.swap(objects);
-  }
+  room = SubdividedScene(room, 2);
   // The bunny, 0.25 m high, standing in the middle of the floor, glossy.
   Scene bunny = ReadNpmBunny(RADIOSITY_BUNNY_JS);
   SubdivideAtMidpoints(bunny.Points, bunny.Triangles);
