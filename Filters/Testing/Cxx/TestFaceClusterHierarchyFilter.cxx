@@ -27,22 +27,14 @@
 
 #include "Radiosity/FaceClusterHierarchy.h"
 
+#include "FilterTestSupport.h"
+
 #include <iostream>
 #include <map>
 #include <set>
 #include <string>
 
-namespace
-{
-bool Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-  }
-  return ok;
-}
-}
+using FilterTestSupport::Check;
 
 int TestFaceClusterHierarchyFilter(int argc, char* argv[])
 {

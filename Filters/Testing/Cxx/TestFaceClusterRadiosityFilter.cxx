@@ -26,21 +26,13 @@
 #include "Radiosity/FaceClusterRadiosity.h"
 #include "Radiosity/SceneGenerators.h"
 
+#include "FilterTestSupport.h"
+
 #include <cmath>
 #include <iostream>
 #include <string>
 
-namespace
-{
-bool Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-  }
-  return ok;
-}
-}
+using FilterTestSupport::Check;
 
 int TestFaceClusterRadiosityFilter(int argc, char* argv[])
 {

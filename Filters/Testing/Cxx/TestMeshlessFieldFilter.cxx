@@ -18,21 +18,13 @@
 
 #include "Radiosity/MeshlessRadiosity.h"
 
+#include "FilterTestSupport.h"
+
 #include <cmath>
 #include <iostream>
 #include <string>
 
-namespace
-{
-bool Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-  }
-  return ok;
-}
-}
+using FilterTestSupport::Check;
 
 int TestMeshlessFieldFilter(int, char*[])
 {
