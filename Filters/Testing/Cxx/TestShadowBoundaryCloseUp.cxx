@@ -5,6 +5,7 @@
 // Gouraud interpolation of the point Radiosity (vtkRadiosityView's Gouraud
 // path); right, the discontinuity mesh drawn with its per-pixel quadratic
 // interpolants. The two halves must differ visibly.
+#include "FilterTestSupport.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDiscontinuityMeshFilter.h"
@@ -103,24 +104,8 @@ int TestShadowBoundaryCloseUp(int argc, char* argv[])
   }
 
   // The halves differ: mean absolute difference of corresponding pixels.
-  vtkNew<vtkUnsignedCharArray> pixels;
-  window->GetRGBACharPixelData(0, 0, 2 * width - 1, height - 1, 1, pixels);
-  double difference = 0.0, left = 0.0;
-  for (int y = 0; y < height; ++y)
-  {
-    for (int x = 0; x < width; ++x)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        const double a = pixels->GetValue(4 * (y * 2 * width + x) + c);
-        const double b = pixels->GetValue(4 * (y * 2 * width + x + width) + c);
-        difference += std::fabs(a - b);
-        left += a;
-      }
-    }
-  }
-  difference /= 3.0 * width * height;
-  left /= 3.0 * width * height;
+  const FilterTestSupport::Halves halves = FilterTestSupport::CompareHalves(window, width, height);
+  const double difference = halves.Difference, left = halves.LeftMean;
   std::cout << "mean pixel difference between the halves " << difference << ", left mean "
             << left << "\n";
   if (left < 10.0 || difference < 0.5)
