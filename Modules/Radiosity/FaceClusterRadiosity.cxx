@@ -59,14 +59,12 @@ std::int32_t FaceClusterRadiosity::NewElement(
     e.Data.Count = 1;
     e.Data.Depth = whole.Data.Depth + 1;
     e.Bisections = whole.Bisections + 1;
-    e.ErrorArea = whole.ErrorArea;
     std::copy(corners, corners + 3, e.Corners.begin());
     e.Triangle = true;
   }
   else
   {
     e.Data = this->Clusters->Cluster(cluster);
-    e.ErrorArea = e.Data.Area;
     if (e.Data.IsLeaf())
     {
       const Scene& scene = this->GetScene();
@@ -283,7 +281,12 @@ void FaceClusterRadiosity::Gather(std::int32_t i, std::int32_t j, std::vector<Ir
   // on the bounds: 3.3% worst error against 0.3% without halving.
   const bool clusterReceiver = !receiver.Data.IsLeaf();
   const bool clusterEmitter = !emitter.Data.IsLeaf();
-  const double scale = receiver.Data.Area > 0.0f ? receiver.ErrorArea / receiver.Data.Area : 1.0;
+  // A part's error is judged at its input triangle's area, so that halving
+  // a receiver does not halve the error of its irradiance that is accepted
+  // (3.3.2's delta is a power).
+  const double scale = receiver.Bisections > 0 && receiver.Data.Area > 0.0f
+    ? this->GetScene().Area(receiver.Cluster) / receiver.Data.Area
+    : 1.0;
   const bool fitFails = scale * t.FitError > this->Epsilon;
   const bool bisect = !clusterReceiver && fitFails && this->CanSubdivide(receiver);
   if (scale * t.Error <= this->Epsilon || (!clusterReceiver && !clusterEmitter && !bisect))

@@ -85,10 +85,6 @@ struct FaceClusterElement
   std::array<Vec3, 3> Corners{};
   bool Triangle = false;
   int Bisections = 0; ///< halvings below the input triangle
-  /// The area the transfer error is judged at: the input triangle's for
-  /// its parts, so that halving a receiver does not halve the accepted
-  /// error of its irradiance (3.3.2's delta is a power).
-  double ErrorArea = 0.0;
   bool IsLeaf() const { return this->Child[0] < 0; }
 };
 
