@@ -60,7 +60,6 @@ std::int32_t FaceClusterRadiosity::NewElement(
     e.Data.Depth = whole.Data.Depth + 1;
     e.Bisections = whole.Bisections + 1;
     std::copy(corners, corners + 3, e.Corners.begin());
-    e.Triangle = true;
   }
   else
   {
@@ -69,10 +68,10 @@ std::int32_t FaceClusterRadiosity::NewElement(
     {
       const Scene& scene = this->GetScene();
       e.Corners = { scene.Vertex(cluster, 0), scene.Vertex(cluster, 1), scene.Vertex(cluster, 2) };
-      e.Triangle = true;
     }
   }
-  e.Rule = e.Triangle
+  // An input triangle's rule is MakeSurfaceRule's too (a leaf cluster).
+  e.Rule = corners
     ? MakeTriangleRule(e.Corners.data(), e.Data, this->IrradianceBasis, this->Settings.Rule.Nodes)
     : MakeSurfaceRule(*this->Clusters, cluster, e.Data, this->IrradianceBasis, this->Settings.Rule.Nodes);
   e.RadiosityDual = DualWeights(e.Data, this->RadiosityBasis, e.Rule.Points, e.Rule.Weights);
@@ -159,7 +158,7 @@ std::int32_t FaceClusterRadiosity::NewElement(
 
 bool FaceClusterRadiosity::CanSubdivide(const FaceClusterElement& e) const
 {
-  return !e.Data.IsLeaf() || (e.Triangle && e.Bisections < this->Settings.MaxBisections && e.Data.Area > 0.0f);
+  return !e.Data.IsLeaf() || (e.IsTriangle() && e.Bisections < this->Settings.MaxBisections && e.Data.Area > 0.0f);
 }
 
 void FaceClusterRadiosity::Subdivide(std::int32_t e)
@@ -270,7 +269,7 @@ void FaceClusterRadiosity::Gather(std::int32_t i, std::int32_t j, std::vector<Ir
   const Transfer t = ComputeTransfer(
     { &receiver.Data, receiver.Cluster, &receiver.Rule, this->IrradianceBasis.Size() },
     { &emitter.Data, emitter.Cluster, &emitter.Rule, this->RadiosityBasis.Size(),
-      emitter.Triangle ? emitter.Corners.data() : nullptr },
+      emitter.IsTriangle() ? emitter.Corners.data() : nullptr },
     emitter.Unshot, bMin, bMax, *this->Visibility, this->Settings.Rule);
   // Below the input triangles only receivers are refined, and only where
   // their basis cannot follow the irradiance (the fit error at their nodes

@@ -83,9 +83,10 @@ struct FaceClusterElement
   IrradianceVector Lowest{}, Highest{};
   /// A single triangle's corners (an input triangle, or a part of one).
   std::array<Vec3, 3> Corners{};
-  bool Triangle = false;
   int Bisections = 0; ///< halvings below the input triangle
   bool IsLeaf() const { return this->Child[0] < 0; }
+  /// An input triangle or a part of one (its cluster data is a leaf's).
+  bool IsTriangle() const { return this->Data.IsLeaf(); }
 };
 
 struct FaceClusterStatistics

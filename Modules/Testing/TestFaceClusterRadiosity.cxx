@@ -106,7 +106,7 @@ TEST(FaceClusterRadiosity, ConstantBasesArePlainFaceClusterRadiosity)
   std::size_t leaves = 0;
   for (const FaceClusterElement& e : solver.Elements())
   {
-    if (!e.IsLeaf() || !e.Triangle)
+    if (!e.IsLeaf() || !e.IsTriangle())
     {
       continue;
     }
