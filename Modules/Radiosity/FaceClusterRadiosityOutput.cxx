@@ -2,6 +2,7 @@
 // expansions evaluated on the input triangles, at their vertices and at
 // probes (section 3.5, and SPEC: probes from the vector irradiance bases).
 #include "Radiosity/FaceClusterRadiosity.h"
+#include "Radiosity/MeshProbeTracker.h"
 
 #include <algorithm>
 #include <limits>
@@ -14,19 +15,12 @@ namespace
 // plane): positive inside, the larger the deeper.
 double DepthInside(const std::array<Vec3, 3>& c, const Vec3& x)
 {
-  const Vec3 n = glm::cross(c[1] - c[0], c[2] - c[0]);
-  const double twice = glm::dot(n, n);
-  if (!(twice > 0.0))
+  double u, v, w;
+  if (!ProjectOnTriangle(x, c[0], c[1], c[2], u, v, w))
   {
     return -std::numeric_limits<double>::infinity();
   }
-  double least = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k)
-  {
-    const Vec3 sub = glm::cross(c[(k + 2) % 3] - c[(k + 1) % 3], x - c[(k + 1) % 3]);
-    least = std::min(least, glm::dot(n, sub) / twice);
-  }
-  return least;
+  return std::min({ u, v, w });
 }
 
 RGB Received(const IrradianceVector& v, const Vec3& n)
