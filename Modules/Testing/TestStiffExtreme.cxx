@@ -45,6 +45,28 @@ enum class Method
   FaceCluster
 };
 
+/// Solves with a method that keeps its solution as a surface and evaluates
+/// probes from its own representation (meshless, face cluster).
+template <typename Solver>
+ConvergenceRow SolveAndProbe(
+  Solver& solver, const std::vector<Probe>& probes, const AnalyticReference& ref, SolutionMesh* solution)
+{
+  const SolverStatistics stats = solver.Solve();
+  EXPECT_EQ(stats.Stop, StopReason::Converged);
+  if (solution)
+  {
+    *solution = solver.Surface();
+  }
+  ConvergenceRow row = stats.History.Rows.back();
+  if (!probes.empty())
+  {
+    const ErrorFigures errors = RelativeErrors(solver.Evaluate(probes), ref.Irradiance);
+    row.RmsError = errors.Rms;
+    row.MaxRelError = errors.Max;
+  }
+  return row;
+}
+
 /// Solves with `method`; the returned row carries the final error at the
 /// probes, read from the method's own representation of the solution.
 ConvergenceRow SolveAgainst(Method method, const Scene& scene, const std::vector<Probe>& probes,
@@ -78,20 +100,7 @@ ConvergenceRow SolveAgainst(Method method, const Scene& scene, const std::vector
     options.Tolerance = tolerance;
     options.Placement.Levels = 4;
     MeshlessRadiosity solver(scene, options);
-    const SolverStatistics stats = solver.Solve();
-    EXPECT_EQ(stats.Stop, StopReason::Converged);
-    if (solution)
-    {
-      *solution = solver.Surface();
-    }
-    ConvergenceRow row = stats.History.Rows.back();
-    if (!probes.empty())
-    {
-      const ErrorFigures errors = RelativeErrors(solver.Evaluate(probes), ref.Irradiance);
-      row.RmsError = errors.Rms;
-      row.MaxRelError = errors.Max;
-    }
-    return row;
+    return SolveAndProbe(solver, probes, ref, solution);
   }
   if (method == Method::FaceCluster)
   {
@@ -102,21 +111,7 @@ ConvergenceRow SolveAgainst(Method method, const Scene& scene, const std::vector
     // cannot follow the light, as a user would ask for such input.
     settings.MaxBisections = 4;
     FaceClusterRadiosity solver(scene, settings);
-    const SolverStatistics stats = solver.Solve();
-    EXPECT_EQ(stats.Stop, StopReason::Converged);
-    if (solution)
-    {
-      *solution = solver.Surface();
-    }
-    ConvergenceRow row = stats.History.Rows.back();
-    if (!probes.empty())
-    {
-      const std::vector<RGB> values = solver.Evaluate(probes);
-      const ErrorFigures errors = RelativeErrors(values, ref.Irradiance);
-      row.RmsError = errors.Rms;
-      row.MaxRelError = errors.Max;
-    }
-    return row;
+    return SolveAndProbe(solver, probes, ref, solution);
   }
   HierarchicalOptions options;
   options.Tolerance = tolerance;
