@@ -126,6 +126,11 @@ public:
   /// The leaf element holding x on triangle t (triangle t itself, a part
   /// of it, or a cluster holding it).
   std::int32_t LeafAt(std::uint32_t t, const Vec3& x) const;
+  /// The element of triangle t itself, or the leaf cluster holding it: the
+  /// descent through the clusters, once per triangle.
+  std::int32_t ElementOf(std::uint32_t t) const;
+  /// The leaf below element e (a triangle's parts) that x is in.
+  std::int32_t PartAt(std::int32_t e, const Vec3& x) const;
 
   const FaceClusterStatistics& Statistics() const { return this->Stats; }
   const std::deque<FaceClusterElement>& Elements() const { return this->Nodes; }

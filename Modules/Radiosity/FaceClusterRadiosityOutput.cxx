@@ -32,6 +32,11 @@ RGB Received(const IrradianceVector& v, const Vec3& n)
 
 std::int32_t FaceClusterRadiosity::LeafAt(std::uint32_t t, const Vec3& x) const
 {
+  return this->PartAt(this->ElementOf(t), x);
+}
+
+std::int32_t FaceClusterRadiosity::ElementOf(std::uint32_t t) const
+{
   const std::uint32_t position = this->Clusters->TrianglePosition(t);
   auto holds = [position](const FaceClusterElement& e) {
     return position >= e.Data.First && position < e.Data.First + e.Data.Count;
@@ -45,16 +50,21 @@ std::int32_t FaceClusterRadiosity::LeafAt(std::uint32_t t, const Vec3& x) const
       break;
     }
   }
+  while (e >= 0 && !this->Nodes[e].IsLeaf() && !this->Nodes[e].IsTriangle())
+  {
+    const std::int32_t k0 = this->Nodes[e].Child[0];
+    e = holds(this->Nodes[k0]) ? k0 : this->Nodes[e].Child[1];
+  }
+  return e;
+}
+
+std::int32_t FaceClusterRadiosity::PartAt(std::int32_t e, const Vec3& x) const
+{
   while (e >= 0 && !this->Nodes[e].IsLeaf())
   {
+    // Parts of one triangle: the one x is deepest inside.
     const std::int32_t k0 = this->Nodes[e].Child[0], k1 = this->Nodes[e].Child[1];
-    if (this->Nodes[k0].Bisections > 0)
-    {
-      // Parts of triangle t: the one x is deepest inside.
-      e = DepthInside(this->Nodes[k0].Corners, x) >= DepthInside(this->Nodes[k1].Corners, x) ? k0 : k1;
-      continue;
-    }
-    e = holds(this->Nodes[k0]) ? k0 : k1;
+    e = DepthInside(this->Nodes[k0].Corners, x) >= DepthInside(this->Nodes[k1].Corners, x) ? k0 : k1;
   }
   return e;
 }
@@ -163,10 +173,11 @@ std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors
   std::vector<int> count(scene.Points.size(), 0);
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
+    const std::int32_t element = this->ElementOf(static_cast<std::uint32_t>(t));
     for (int k = 0; k < 3; ++k)
     {
       const std::uint32_t v = scene.Triangles[t].V[k];
-      const IrradianceVector e = this->IrradianceVectorAt(static_cast<std::uint32_t>(t), scene.Points[v]);
+      const IrradianceVector e = this->Expansion(this->PartAt(element, scene.Points[v]), scene.Points[v]);
       for (int c = 0; c < 3; ++c)
       {
         for (int d = 0; d < 3; ++d)
@@ -204,11 +215,13 @@ SolutionMesh FaceClusterRadiosity::Surface() const
     const auto id = static_cast<std::uint32_t>(t);
     const Vec3 n = scene.Normal(t);
     const Material& m = scene.Materials[t];
-    const std::int32_t leaf = this->LeafAt(id, scene.Centroid(t));
+    const std::int32_t element = this->ElementOf(id);
+    const std::int32_t leaf = this->PartAt(element, scene.Centroid(t));
     ElementSamples samples;
     for (int k = 0; k < 3; ++k)
     {
-      samples.Corner[k] = this->IrradianceAt(id, scene.Vertex(t, k), n);
+      const Vec3 corner = scene.Vertex(t, k);
+      samples.Corner[k] = Received(this->Expansion(this->PartAt(element, corner), corner), n);
     }
     samples.Centre = Received(this->Expansion(leaf, scene.Centroid(t)), n);
     const RGB h = samples.Mean();
