@@ -193,13 +193,17 @@ int vtkRadiosityFilter::RequestData(
   this->LastScene = sharedScene;
 
   auto last = Clock::now();
-  auto progress = [this, &last](const radiosity::ProgressStatus& status)
+  // The solvers' fractions are estimates from the residual, which can dip;
+  // a progress bar (ParaView's) must not run backwards.
+  double shown = 0.0;
+  auto progress = [this, &last, &shown](const radiosity::ProgressStatus& status)
   {
     const auto now = Clock::now();
     if (std::chrono::duration<double>(now - last).count() > 0.05)
     {
       last = now;
-      this->UpdateProgress(status.Fraction);
+      shown = std::max(shown, status.Fraction);
+      this->UpdateProgress(shown);
     }
     if (this->StatusCallback && !this->StatusCallback(status))
     {

@@ -78,7 +78,7 @@ box.LightScale = 1.5
 solve.UpdatePipeline()
 solver.RemoveObserver(tag)
 check(len(progress) >= 3, "only %d progress events" % len(progress))
-check(all(b >= a for a, b in zip(progress, progress[1:])), "progress went backwards")
+check(all(b >= a for a, b in zip(progress, progress[1:])), "progress went backwards: %s" % progress)
 print("progress: %d events, last %.2f" % (len(progress), progress[-1] if progress else -1))
 messages = vtkStringOutputWindow()
 vtkOutputWindow.SetInstance(messages)
