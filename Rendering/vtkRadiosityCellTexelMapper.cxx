@@ -82,26 +82,46 @@ void vtkRadiosityCellTexelMapper::SetMapperShaderParameters(
   {
     cellBO.Program->SetUniformi(this->CellTexelUniform.c_str(), this->CellBuffer->GetTextureUnit());
   }
-  if (cellBO.Program->IsUniformUsed("radianceScale"))
-  {
-    // Lambertian surfaces: L = B / pi.
-    cellBO.Program->SetUniformf("radianceScale", static_cast<float>(this->Exposure / vtkMath::Pi()));
-  }
-  if (cellBO.Program->IsUniformUsed("inverseGamma"))
-  {
-    cellBO.Program->SetUniformf("inverseGamma", static_cast<float>(1.0 / this->Gamma));
-  }
+  SetRadianceUniforms(cellBO.Program, this->Exposure, this->Gamma, this->ToneMapping);
 }
 
 const char* vtkRadiosityCellTexelMapper::RadianceUniforms()
 {
+  // The operators are vtkToneMappingPass's (Reinhard; Exponential with its
+  // coefficient 1, the exposure being applied before).
   return "uniform float radianceScale;\n"
-         "uniform float inverseGamma;\n";
+         "uniform float inverseGamma;\n"
+         "uniform int toneOperator;\n"
+         "vec3 radianceDisplay(vec3 radiance)\n"
+         "{\n"
+         "  vec3 l = max(radiance, vec3(0.0));\n"
+         "  if (toneOperator == 1) { l = l / (l + vec3(1.0)); }\n"
+         "  else if (toneOperator == 2) { l = vec3(1.0) - exp(-l); }\n"
+         "  return pow(l, vec3(inverseGamma));\n"
+         "}\n";
 }
 
 std::string vtkRadiosityCellTexelMapper::EncodedRadiance(const std::string& radiosity)
 {
-  return "pow(max((" + radiosity + ") * radianceScale, vec3(0.0)), vec3(inverseGamma))";
+  return "radianceDisplay((" + radiosity + ") * radianceScale)";
+}
+
+void vtkRadiosityCellTexelMapper::SetRadianceUniforms(
+  vtkShaderProgram* program, double exposure, double gamma, int toneMapping)
+{
+  if (program->IsUniformUsed("radianceScale"))
+  {
+    // Lambertian surfaces: L = B / pi.
+    program->SetUniformf("radianceScale", static_cast<float>(exposure / vtkMath::Pi()));
+  }
+  if (program->IsUniformUsed("inverseGamma"))
+  {
+    program->SetUniformf("inverseGamma", static_cast<float>(1.0 / gamma));
+  }
+  if (program->IsUniformUsed("toneOperator"))
+  {
+    program->SetUniformi("toneOperator", toneMapping);
+  }
 }
 
 void vtkRadiosityCellTexelMapper::SetLightingShaderParameters(
@@ -130,6 +150,11 @@ void vtkRadiosityCellTexelMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "Gamma: " << this->Gamma << "\n";
+  os << indent << "ToneMapping: "
+     << (this->ToneMapping == REINHARD       ? "Reinhard"
+            : this->ToneMapping == EXPONENTIAL ? "Exponential"
+                                               : "Clamp")
+     << "\n";
   os << indent << "CellTexelUniform: " << this->CellTexelUniform << "\n";
   os << indent << "CellFloats: " << this->CellFloats << "\n";
   os << indent << "Cells: " << this->CellTexels.size() / std::max(this->CellFloats, 1) << "\n";

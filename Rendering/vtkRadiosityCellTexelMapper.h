@@ -32,6 +32,7 @@
 #include <vector> // For members
 
 class vtkRadiosityTexelBuffer;
+class vtkShaderProgram;
 
 class RADIOSITYRENDERING_EXPORT vtkRadiosityCellTexelMapper : public vtkOpenGLPolyDataMapper
 {
@@ -58,6 +59,35 @@ public:
    */
   vtkSetClampMacro(Gamma, double, 0.1, 10.0);
   vtkGetMacro(Gamma, double);
+
+  /**
+   * The tone mapping operator applied per fragment to the exposed radiance L,
+   * before the 1/Gamma encoding: vtkToneMappingPass's global operators, for a
+   * renderer without that pass (a ParaView view with its tone mapping off).
+   * CLAMP (default) writes L itself, for a vtkToneMappingPass or a display
+   * that clamps at 1; REINHARD writes L / (1 + L); EXPONENTIAL 1 - exp(-L).
+   */
+  enum ToneMappingOperator
+  {
+    CLAMP = 0,
+    REINHARD = 1,
+    EXPONENTIAL = 2
+  };
+  vtkSetClampMacro(ToneMapping, int, CLAMP, EXPONENTIAL);
+  vtkGetMacro(ToneMapping, int);
+
+  /**
+   * The GLSL of the radiance encoding, shared with passes that draw the
+   * radiance without this class's shaders: RadianceUniforms() declares the
+   * uniforms radianceScale (Exposure / pi), inverseGamma and toneOperator and
+   * the function radianceDisplay(L); EncodedRadiance(radiosity) is the
+   * encoded colour of a vec3 radiosity expression (W/m^2), negative parts
+   * cut; SetRadianceUniforms sets the uniforms that `program` uses.
+   */
+  static const char* RadianceUniforms();
+  static std::string EncodedRadiance(const std::string& radiosity);
+  static void SetRadianceUniforms(
+    vtkShaderProgram* program, double exposure, double gamma, int toneMapping);
   ///@}
 
 protected:
@@ -84,14 +114,10 @@ protected:
 
   /// GLSL: the index of the first texel of the current primitive's block.
   std::string CellTexelIndex() const;
-  /// GLSL declarations of the uniforms radianceScale and inverseGamma.
-  static const char* RadianceUniforms();
-  /// GLSL: the encoded colour of `radiosity` (a vec3 expression, W/m^2):
-  /// (radiosity * radianceScale)^inverseGamma, negative parts cut.
-  static std::string EncodedRadiance(const std::string& radiosity);
 
   double Exposure = 1.0;
   double Gamma = 2.2;
+  int ToneMapping = CLAMP;
 
   // Filled by the subclass.
   std::vector<float> CellTexels;

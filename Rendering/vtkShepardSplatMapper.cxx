@@ -392,8 +392,7 @@ void vtkShepardSplatMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   // Pass 3: into the renderer's framebuffer.
   if (drawn)
   {
-    drawn = passes.Composite(window, static_cast<float>(this->Exposure / vtkMath::Pi()),
-      static_cast<float>(1.0 / this->Gamma), error);
+    drawn = passes.Composite(window, this->Exposure, this->Gamma, this->ToneMapping, error);
   }
   if (!error.empty())
   {

@@ -7,6 +7,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkRadiosityCellTexelMapper.h"
 #include "vtkRadiosityTexelBuffer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -109,18 +110,20 @@ void main()
 }
 )";
 
-// Pass 3: L = (Emission + Reflectance E) / pi * Exposure, with the surface's
-// depth.
-const char* const CompositeFS = R"(//VTK::System::Dec
+// Pass 3: the radiance (Emission + Reflectance E) / pi * Exposure, encoded as
+// the mappers encode it (vtkRadiosityCellTexelMapper::RadianceUniforms), with
+// the surface's depth.
+std::string CompositeFS()
+{
+  return std::string(R"(//VTK::System::Dec
 //VTK::Output::Dec
 in vec2 texCoord;
 uniform sampler2D gReflectance;
 uniform sampler2D gEmission;
 uniform sampler2D gDepth;
 uniform sampler2D irradiance;
-uniform float radianceScale;
-uniform float inverseGamma;
-void main()
+)") + vtkRadiosityCellTexelMapper::RadianceUniforms() +
+    R"(void main()
 {
   ivec2 pixel = ivec2(texCoord * vec2(textureSize(gReflectance, 0)));
   vec4 reflectance = texelFetch(gReflectance, pixel, 0);
@@ -129,11 +132,14 @@ void main()
     discard;
   }
   vec3 e = texelFetch(irradiance, pixel, 0).rgb;
-  vec3 radiance = (texelFetch(gEmission, pixel, 0).rgb + reflectance.rgb * e) * radianceScale;
-  gl_FragData[0] = vec4(pow(max(radiance, vec3(0.0)), vec3(inverseGamma)), 1.0);
+  gl_FragData[0] = vec4()" +
+    vtkRadiosityCellTexelMapper::EncodedRadiance(
+      "texelFetch(gEmission, pixel, 0).rgb + reflectance.rgb * e") +
+    R"(, 1.0);
   gl_FragDepth = texelFetch(gDepth, pixel, 0).r;
 }
 )";
+}
 }
 
 vtkShepardSplatPasses::vtkShepardSplatPasses() = default;
@@ -282,13 +288,13 @@ bool vtkShepardSplatPasses::Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* m
   return ok;
 }
 
-bool vtkShepardSplatPasses::Composite(
-  vtkOpenGLRenderWindow* window, float radianceScale, float inverseGamma, std::string& error)
+bool vtkShepardSplatPasses::Composite(vtkOpenGLRenderWindow* window, double exposure, double gamma,
+  int toneMapping, std::string& error)
 {
   vtkOpenGLState* state = window->GetState();
   if (!this->CompositeQuad)
   {
-    this->CompositeQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, CompositeFS, ""));
+    this->CompositeQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, CompositeFS().c_str(), ""));
   }
   else
   {
@@ -316,8 +322,7 @@ bool vtkShepardSplatPasses::Composite(
     inputs[i]->Activate();
     program->SetUniformi(names[i], inputs[i]->GetTextureUnit());
   }
-  program->SetUniformf("radianceScale", radianceScale);
-  program->SetUniformf("inverseGamma", inverseGamma);
+  vtkRadiosityCellTexelMapper::SetRadianceUniforms(program, exposure, gamma, toneMapping);
   this->CompositeQuad->Render();
   for (vtkTextureObject* input : inputs)
   {

@@ -56,10 +56,11 @@ public:
   bool Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* modelToClip,
     vtkRadiosityTexelBuffer* points, const std::vector<size_t>& levelOffsets, std::string& error);
 
-  /// Writes (Emission + Reflectance E) * radianceScale, encoded with
-  /// 1/Gamma, and the G-buffer's depth into the bound framebuffer.
-  bool Composite(
-    vtkOpenGLRenderWindow* window, float radianceScale, float inverseGamma, std::string& error);
+  /// Writes the radiance (Emission + Reflectance E) / pi * exposure, tone
+  /// mapped and encoded as vtkRadiosityCellTexelMapper does, and the
+  /// G-buffer's depth into the bound framebuffer.
+  bool Composite(vtkOpenGLRenderWindow* window, double exposure, double gamma, int toneMapping,
+    std::string& error);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

@@ -75,13 +75,17 @@ inline bool IntersectFrame(const Vec3& a, const Vec3& b, const Vec3& c, const Ve
   return h > 0.0 && s >= 0.0 && t >= 0.0 && inside;
 }
 
-// The 8-bit value the pipeline should show for radiance L: the mapper
-// writes L^(1/2.2), the tone mapping pass decodes it, applies its operator
-// and encodes the result with 1/2.2 again.
+// The 8-bit value the pipeline should show for radiance L through the tone
+// mapping operator `toneMapping` (vtkToneMappingPass's Clamp, Reinhard or
+// Exponential with coefficient 1), applied either by the pass, which decodes
+// the mapper's L^(1/2.2) first, or by the mapper itself (its ToneMapping,
+// the pass clamping): the result is encoded with 1/2.2 either way.
 inline double Displayed(double L, int toneMapping)
 {
   L = std::max(L, 0.0);
-  const double toned = toneMapping == vtkToneMappingPass::Clamp ? std::min(L, 1.0) : L / (L + 1.0);
+  const double toned = toneMapping == vtkToneMappingPass::Reinhard ? L / (L + 1.0)
+    : toneMapping == vtkToneMappingPass::Exponential             ? 1.0 - std::exp(-L)
+                                                                 : std::min(L, 1.0);
   return 255.0 * std::pow(toned, 1.0 / 2.2);
 }
 

@@ -523,22 +523,26 @@ int TestQuadraticInterpolantMapper(int argc, char* argv[])
   // Defaults, clamping setters, PrintSelf.
   {
     vtkNew<vtkQuadraticInterpolantMapper> mapper;
-    if (mapper->GetExposure() != 1.0 || mapper->GetGamma() != 2.2)
+    if (mapper->GetExposure() != 1.0 || mapper->GetGamma() != 2.2 ||
+      mapper->GetToneMapping() != vtkQuadraticInterpolantMapper::CLAMP)
     {
       std::cerr << "Unexpected defaults: Exposure " << mapper->GetExposure() << ", Gamma "
-                << mapper->GetGamma() << "\n";
+                << mapper->GetGamma() << ", ToneMapping " << mapper->GetToneMapping() << "\n";
       return EXIT_FAILURE;
     }
     mapper->SetExposure(-2.0);
     mapper->SetGamma(0.0);
-    if (mapper->GetExposure() != 0.0 || mapper->GetGamma() != 0.1)
+    mapper->SetToneMapping(7);
+    if (mapper->GetExposure() != 0.0 || mapper->GetGamma() != 0.1 ||
+      mapper->GetToneMapping() != vtkQuadraticInterpolantMapper::EXPONENTIAL)
     {
-      std::cerr << "Exposure or Gamma not clamped\n";
+      std::cerr << "Exposure, Gamma or ToneMapping not clamped\n";
       return EXIT_FAILURE;
     }
     std::ostringstream printed;
     mapper->Print(printed);
     if (printed.str().find("Exposure: 0") == std::string::npos ||
+      printed.str().find("ToneMapping: Exponential") == std::string::npos ||
       printed.str().find("InterpolantArrayName: QuadraticInterpolant") == std::string::npos)
     {
       std::cerr << "PrintSelf is missing properties:\n" << printed.str();
@@ -647,8 +651,24 @@ int TestQuadraticInterpolantMapper(int argc, char* argv[])
     return EXIT_FAILURE;
   }
 
-  // The baseline: HDR radiance (up to about 3) through Reinhard.
+  // The mapper's own operators (for a view without the pass; here the pass
+  // clamps): on HDR radiance (up to about 3) they must give what the pass's
+  // operators give.
   mapper->SetExposure(1.0);
+  toneMapping->SetToneMappingType(vtkToneMappingPass::Clamp);
+  for (int op : { vtkQuadraticInterpolantMapper::REINHARD, vtkQuadraticInterpolantMapper::EXPONENTIAL })
+  {
+    mapper->SetToneMapping(op);
+    window->Render();
+    if (!CheckPixels(renderer, window, scene, 1.0, op, 3.0, nullptr))
+    {
+      std::cerr << "(the mapper's tone mapping " << op << ")\n";
+      return EXIT_FAILURE;
+    }
+  }
+  mapper->SetToneMapping(vtkQuadraticInterpolantMapper::CLAMP);
+
+  // The baseline: HDR radiance (up to about 3) through Reinhard.
   toneMapping->SetToneMappingType(vtkToneMappingPass::Reinhard);
   window->Render();
   if (!CheckPixels(renderer, window, scene, 1.0, vtkToneMappingPass::Reinhard, 3.0, nullptr))

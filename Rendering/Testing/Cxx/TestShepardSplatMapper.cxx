@@ -573,8 +573,21 @@ int TestShepardSplatMapper(int argc, char* argv[])
     }
   }
 
-  // The baseline: HDR radiance through Reinhard.
+  // The mapper's own operator, written by the composite pass (the render
+  // pass clamping): HDR radiance as the pass's Exponential shows it.
   mapper->SetExposure(2.0);
+  mapper->SetToneMapping(vtkShepardSplatMapper::EXPONENTIAL);
+  blockerActor->VisibilityOff();
+  window->Render();
+  if (!CheckPixels(
+        renderer, window, faces, field, 2.0, vtkToneMappingPass::Exponential, 2.5, nullptr))
+  {
+    std::cerr << "(the mapper's exponential tone mapping)\n";
+    return EXIT_FAILURE;
+  }
+  mapper->SetToneMapping(vtkShepardSplatMapper::CLAMP);
+
+  // The baseline: HDR radiance through Reinhard.
   toneMapping->SetToneMappingType(vtkToneMappingPass::Reinhard);
   blockerActor->VisibilityOff();
   window->Render();
