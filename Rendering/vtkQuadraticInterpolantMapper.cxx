@@ -315,19 +315,6 @@ void vtkQuadraticInterpolantMapper::ReplaceShaderLight(
 }
 
 //------------------------------------------------------------------------------
-vtkUnsignedCharArray* vtkQuadraticInterpolantMapper::MapScalars(double alpha)
-{
-  int cellFlag = 0;
-  return this->MapScalars(alpha, cellFlag);
-}
-
-//------------------------------------------------------------------------------
-vtkUnsignedCharArray* vtkQuadraticInterpolantMapper::MapScalars(double alpha, int& cellFlag)
-{
-  // The copy has no scalars: this clears any colours left from before.
-  return this->Superclass::MapScalars(this->Triangles, alpha, cellFlag);
-}
-
 //------------------------------------------------------------------------------
 void vtkQuadraticInterpolantMapper::PrintSelf(ostream& os, vtkIndent indent)
 {

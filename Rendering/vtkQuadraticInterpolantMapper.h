@@ -112,15 +112,6 @@ public:
    */
   static bool ValidateInput(vtkPolyData* input, std::string* message);
 
-  ///@{
-  /**
-   * Scalar colouring does not apply: the colour is the radiance.
-   */
-  using Superclass::MapScalars;
-  vtkUnsignedCharArray* MapScalars(double alpha) override;
-  vtkUnsignedCharArray* MapScalars(double alpha, int& cellFlag) override;
-  ///@}
-
 protected:
   vtkQuadraticInterpolantMapper();
   ~vtkQuadraticInterpolantMapper() override;

@@ -1,5 +1,8 @@
 #include "vtkRadiosityCellTexelMapper.h"
 
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+
 #include "vtkMath.h"
 
 #include "vtkActor.h"
@@ -83,6 +86,33 @@ void vtkRadiosityCellTexelMapper::SetMapperShaderParameters(
     cellBO.Program->SetUniformi(this->CellTexelUniform.c_str(), this->CellBuffer->GetTextureUnit());
   }
   SetRadianceUniforms(cellBO.Program, this->Exposure, this->Gamma, this->ToneMapping);
+  if (cellBO.Program->IsUniformUsed("vertexShiftMC"))
+  {
+    // The VBO stores (x - shift) * scale.
+    float shift[3] = { 0.0f, 0.0f, 0.0f };
+    float scale[3] = { 1.0f, 1.0f, 1.0f };
+    vtkOpenGLVertexBufferObject* vbo = this->VBOs->GetVBO("vertexMC");
+    if (vbo && vbo->GetCoordShiftAndScaleEnabled())
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        shift[i] = static_cast<float>(vbo->GetShift()[i]);
+        scale[i] = static_cast<float>(vbo->GetScale()[i]);
+      }
+    }
+    cellBO.Program->SetUniform3f("vertexShiftMC", shift);
+    cellBO.Program->SetUniform3f("vertexScaleMC", scale);
+  }
+}
+
+const char* vtkRadiosityCellTexelMapper::ModelPositionDeclarations()
+{
+  return "uniform vec3 vertexShiftMC;\nuniform vec3 vertexScaleMC;\n";
+}
+
+const char* vtkRadiosityCellTexelMapper::ModelPosition()
+{
+  return "(vertexMC.xyz / vertexScaleMC + vertexShiftMC)";
 }
 
 const char* vtkRadiosityCellTexelMapper::RadianceUniforms()
@@ -122,6 +152,18 @@ void vtkRadiosityCellTexelMapper::SetRadianceUniforms(
   {
     program->SetUniformi("toneOperator", toneMapping);
   }
+}
+
+vtkUnsignedCharArray* vtkRadiosityCellTexelMapper::MapScalars(double alpha)
+{
+  int cellFlag = 0;
+  return this->MapScalars(alpha, cellFlag);
+}
+
+vtkUnsignedCharArray* vtkRadiosityCellTexelMapper::MapScalars(double alpha, int& cellFlag)
+{
+  // An input without scalars: this also clears any colours left from before.
+  return this->Superclass::MapScalars(this->NoScalars, alpha, cellFlag);
 }
 
 void vtkRadiosityCellTexelMapper::SetLightingShaderParameters(

@@ -25,7 +25,9 @@
 #define vtkRadiosityCellTexelMapper_h
 
 #include "RadiosityRenderingModule.h" // For export macro
+#include "vtkNew.h" // For members
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPolyData.h" // For members
 
 #include <memory> // For members
 #include <string> // For members
@@ -88,6 +90,17 @@ public:
   static std::string EncodedRadiance(const std::string& radiosity);
   static void SetRadianceUniforms(
     vtkShaderProgram* program, double exposure, double gamma, int toneMapping);
+
+  ///@{
+  /**
+   * Scalar colouring does not apply: the colour is the radiance. No scalars
+   * are mapped (which also keeps the colour texture of
+   * InterpolateScalarsBeforeMapping out of the shaders).
+   */
+  using Superclass::MapScalars;
+  vtkUnsignedCharArray* MapScalars(double alpha) override;
+  vtkUnsignedCharArray* MapScalars(double alpha, int& cellFlag) override;
+  ///@}
   ///@}
 
 protected:
@@ -114,6 +127,12 @@ protected:
 
   /// GLSL: the index of the first texel of the current primitive's block.
   std::string CellTexelIndex() const;
+  /// GLSL for the vertex shader: the declarations ModelPosition() needs,
+  /// and the vertex's model coordinates. vertexMC holds them shifted and
+  /// scaled when the VBO's shift-scale is on (ParaView turns it on); this
+  /// undoes it (the uniforms are set here).
+  static const char* ModelPositionDeclarations();
+  static const char* ModelPosition();
 
   double Exposure = 1.0;
   double Gamma = 2.2;
@@ -135,6 +154,7 @@ private:
 
   const std::string What;
   std::unique_ptr<vtkRadiosityTexelBuffer> CellBuffer;
+  vtkNew<vtkPolyData> NoScalars;
 };
 
 #endif

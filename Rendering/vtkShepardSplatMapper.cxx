@@ -159,6 +159,11 @@ bool vtkShepardSplatMapper::ValidateField(vtkPolyData* field, std::string* messa
     why = "No field: connect vtkMeshlessFieldFilter's output with SetFieldConnection.";
     return false;
   }
+  if (field->GetNumberOfPoints() == 0)
+  {
+    // Nothing to splat: the surface shows its emission alone.
+    return true;
+  }
   vtkDataArray* level = FieldArray(field, "Level", 1, why);
   vtkDataArray* radius = level ? FieldArray(field, "Radius", 1, why) : nullptr;
   vtkDataArray* normal = radius ? FieldArray(field, "Normal", 3, why) : nullptr;
@@ -427,7 +432,7 @@ void vtkShepardSplatMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
 {
   // The model-coordinate position of the fragment, for the G-buffer.
-  vtkRadiosityAddVarying(shaders, "vec3", "splatPositionMC", "", "vertexMC.xyz",
+  vtkRadiosityAddVarying(shaders, "vec3", "splatPositionMC", ModelPositionDeclarations(), ModelPosition(),
     "uniform samplerBuffer splatCellTexels;\n");
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 }

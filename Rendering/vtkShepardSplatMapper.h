@@ -105,8 +105,9 @@ public:
   /**
    * Whether `field` is a Shepard field: the point arrays `Level`, `Radius`,
    * `Group` (1 component), `Normal` and `Coefficient` (3), numeric with a
-   * tuple per point, levels in [0, 64) and radii finite and positive.
-   * Otherwise false with `message` naming the array.
+   * tuple per point, levels in [0, 64) and radii finite and positive; or a
+   * field without points (nothing is splatted: the surface shows its
+   * emission alone). Otherwise false with `message` naming the array.
    */
   static bool ValidateField(vtkPolyData* field, std::string* message);
 

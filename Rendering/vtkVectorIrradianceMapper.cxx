@@ -238,7 +238,7 @@ void vtkVectorIrradianceMapper::ReplaceShaderValues(
   vtkRadiosityAddVarying(shaders, "vec3", "irradianceG", "in vec3 irradianceG;\n", "irradianceG", "");
   vtkRadiosityAddVarying(shaders, "vec3", "irradianceB", "in vec3 irradianceB;\n", "irradianceB", "");
   vtkRadiosityAddVarying(shaders, "vec3", "surfaceNormal", "in vec3 surfaceNormal;\n", "surfaceNormal", "");
-  vtkRadiosityAddVarying(shaders, "vec3", "surfacePosition", "", "vertexMC.xyz",
+  vtkRadiosityAddVarying(shaders, "vec3", "surfacePosition", ModelPositionDeclarations(), ModelPosition(),
     std::string("uniform samplerBuffer vectorCellTexels;\n"
                 "uniform vec3 eyePositionMC;\n") +
       RadianceUniforms());

@@ -18,6 +18,8 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -432,9 +434,21 @@ bool TestInvalidInput(
   badSurface->SetLines(lines);
   ok &= ExpectError(window, mapper, badSurface, field, "cell 0 is a vtkLine");
 
-  // Fixed input draws again, without errors.
+  // A field without points is no error: nothing is splatted.
   vtkNew<vtkTest::ErrorObserver> quiet;
   mapper->AddObserver(vtkCommand::ErrorEvent, quiet);
+  vtkNew<vtkPolyData> none;
+  mapper->SetInputData(surface);
+  mapper->SetFieldData(none);
+  window->Render();
+  if (quiet->GetError() || mapper->GetNumberOfLevels() != 0)
+  {
+    std::cerr << "A field without points: " << mapper->GetNumberOfLevels() << " levels, error '"
+              << quiet->GetErrorMessage() << "'\n";
+    ok = false;
+  }
+
+  // Fixed input draws again, without errors.
   mapper->SetInputData(surface);
   mapper->SetFieldData(field);
   window->Render();
@@ -569,6 +583,37 @@ int TestShepardSplatMapper(int argc, char* argv[])
     if (red[0] < 250 || red[1] > 5 || red[2] > 5)
     {
       std::cerr << "The splatted floor was drawn over the blocker in front of it\n";
+      return EXIT_FAILURE;
+    }
+  }
+
+  // Shifted and scaled vertex coordinates (ParaView's default): the G-buffer
+  // still holds model coordinates.
+  {
+    vtkNew<vtkShepardSplatMapper> shifted;
+    shifted->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE);
+    // A copy: the window shares the VBO of a points array among mappers.
+    vtkNew<vtkPolyData> copy;
+    copy->DeepCopy(surface);
+    shifted->SetInputData(copy);
+    shifted->SetFieldData(fieldData);
+    shifted->SetExposure(exposure);
+    actor->SetMapper(shifted);
+    blockerActor->VisibilityOff();
+    window->Render();
+    vtkOpenGLVertexBufferObject* vbo = shifted->GetVBOs()->GetVBO("vertexMC");
+    if (!vbo || !vbo->GetCoordShiftAndScaleEnabled())
+    {
+      std::cerr << "The coordinates were not shifted and scaled\n";
+      return EXIT_FAILURE;
+    }
+    const bool same =
+      CheckPixels(renderer, window, faces, field, exposure, vtkToneMappingPass::Clamp, 2.5, nullptr);
+    actor->SetMapper(mapper);
+    shifted->ReleaseGraphicsResources(window);
+    if (!same)
+    {
+      std::cerr << "(coordinates shifted and scaled)\n";
       return EXIT_FAILURE;
     }
   }
