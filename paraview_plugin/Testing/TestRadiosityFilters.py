@@ -10,18 +10,10 @@ import math
 import os
 import sys
 
-from paraview.simple import *  # noqa: F401,F403
-from paraview import servermanager
-from vtkmodules.vtkImagingCore import vtkImageDifference  # noqa: F401
-from vtkmodules.vtkIOImage import vtkPNGReader
-
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from paraview.simple import *  # noqa: E402,F401,F403
+from paraview import servermanager  # noqa: E402
+from radiosity_pvtest import check, compare_with_baseline, finish  # noqa: E402
 
 
 def finite_positive(array):
@@ -82,21 +74,6 @@ view.CameraViewAngle = 39.0
 Render(view)
 image = os.path.join(output, "TestRadiosityFilters.png")
 SaveScreenshot(image, view, ImageResolution=[400, 400])
-if not os.path.exists(baseline):
-    check(False, "no baseline %s: look at %s and commit it" % (baseline, image))
-else:
-    readers = [vtkPNGReader(), vtkPNGReader()]
-    readers[0].SetFileName(baseline)
-    readers[1].SetFileName(image)
-    difference = vtkImageDifference()
-    difference.SetInputConnection(readers[1].GetOutputPort())
-    difference.SetImageConnection(readers[0].GetOutputPort())
-    difference.Update()
-    print("image difference %.3f" % difference.GetThresholdedError())
-    check(difference.GetThresholdedError() <= 0.15,
-          "screenshot differs from its baseline: %.3f" % difference.GetThresholdedError())
+compare_with_baseline(image, baseline)
 
-if failures:
-    print("%d failure(s)" % len(failures))
-    sys.exit(1)
-print("all checks passed")
+finish()

@@ -5,19 +5,13 @@ output arrays, and bad input that must name what is wrong.
 Usage: pvbatch --force-offscreen-rendering TestRadiosityPipeline.py <plugin.so>
 """
 import math
+import os
 import sys
 
-from paraview.simple import *  # noqa: F401,F403
-from paraview import servermanager
-from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from paraview.simple import *  # noqa: E402,F401,F403
+from paraview import servermanager  # noqa: E402
+from radiosity_pvtest import CapturedMessages, check, finish  # noqa: E402
 
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
@@ -80,8 +74,6 @@ solver.RemoveObserver(tag)
 check(len(progress) >= 3, "only %d progress events" % len(progress))
 check(all(b >= a for a, b in zip(progress, progress[1:])), "progress went backwards: %s" % progress)
 print("progress: %d events, last %.2f" % (len(progress), progress[-1] if progress else -1))
-messages = vtkStringOutputWindow()
-vtkOutputWindow.SetInstance(messages)
 
 
 def abort(o, e):
@@ -91,24 +83,18 @@ def abort(o, e):
 
 tag = solver.AddObserver("ProgressEvent", abort)
 box.LightScale = 1.25
-solve.UpdatePipeline()
+with CapturedMessages() as messages:
+    solve.UpdatePipeline()
 solver.RemoveObserver(tag)
-vtkOutputWindow.SetInstance(None)
-check("aborted" in messages.GetOutput(), "no abort warning: %r" % messages.GetOutput()[:300])
+check("aborted" in messages.text, "no abort warning: %r" % messages.text[:300])
 solver.SetAbortExecute(0)
 
 # Bad input: a Reflectance of one component; the error names the array.
-messages = vtkStringOutputWindow()
-vtkOutputWindow.SetInstance(messages)
 grey = Calculator(Input=box, AttributeType="Cell Data", ResultArrayName="Reflectance", Function="0.5")
 bad = Radiosity(Input=grey)
-bad.UpdatePipeline()
-text = messages.GetOutput()
-vtkOutputWindow.SetInstance(None)
-check("Reflectance" in text, "no error naming Reflectance: %r" % text[:300])
+with CapturedMessages() as messages:
+    bad.UpdatePipeline()
+check("Reflectance" in messages.text, "no error naming Reflectance: %r" % messages.text[:300])
 check(servermanager.Fetch(bad).GetNumberOfCells() == 0, "bad input gave an output")
 
-if failures:
-    print("%d failure(s)" % len(failures))
-    sys.exit(1)
-print("all checks passed")
+finish()
