@@ -18,6 +18,8 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -356,6 +358,31 @@ int TestVectorIrradianceMapper(int argc, char* argv[])
   {
     std::cerr << "the scene does not show the glossy lobe (" << lobe << ")\n";
     return EXIT_FAILURE;
+  }
+
+  // Shifted and scaled vertex coordinates (ParaView's default): the view
+  // vector of the lobe still comes from model coordinates.
+  {
+    vtkNew<vtkVectorIrradianceMapper> shifted;
+    shifted->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE);
+    // A copy: the window shares the VBO of a points array among mappers.
+    vtkNew<vtkPolyData> copy;
+    copy->DeepCopy(glossy);
+    shifted->SetInputData(copy);
+    shifted->SetExposure(0.6);
+    actor->SetMapper(shifted);
+    window->Render();
+    vtkOpenGLVertexBufferObject* vbo = shifted->GetVBOs()->GetVBO("vertexMC");
+    const bool enabled = vbo && vbo->GetCoordShiftAndScaleEnabled();
+    const bool same =
+      CheckPixels(renderer, window, scene, 0.6, vtkToneMappingPass::Clamp, true, nullptr);
+    actor->SetMapper(mapper);
+    shifted->ReleaseGraphicsResources(window);
+    if (!enabled || !same)
+    {
+      std::cerr << "glossy input with shifted coordinates failed (shift on: " << enabled << ")\n";
+      return EXIT_FAILURE;
+    }
   }
 
   // The baseline: HDR through Reinhard.
