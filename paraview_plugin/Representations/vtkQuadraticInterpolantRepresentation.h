@@ -2,7 +2,10 @@
  * @class   vtkQuadraticInterpolantRepresentation
  * @brief   ParaView's "Radiosity Quadratic Interpolants" surface representation
  *
- * Draws Hardt & Teller's quadratic irradiance interpolants, evaluated per pixel: the output of the Discontinuity Mesh filter (cell array QuadraticInterpolant, 18 components), with vtkQuadraticInterpolantMapper. The display parameters and the
+ * Draws Hardt & Teller's quadratic irradiance interpolants, evaluated per
+ * pixel: the output of the Discontinuity Mesh filter (cell array
+ * QuadraticInterpolant, 18 components), with vtkQuadraticInterpolantMapper.
+ * The display parameters and the
  * handling of ParaView's delivered geometry are vtkRadiosityRepresentation's;
  * input the mapper refuses is reported by the mapper (an error naming the
  * array or cell) and nothing is drawn.

@@ -8,6 +8,7 @@
 #include "vtkRadiosityCellTexelMapper.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <vector>
 
 vtkRadiosityRepresentation::vtkRadiosityRepresentation(vtkRadiosityCellTexelMapper* mapper)
@@ -118,7 +119,8 @@ int vtkRadiosityRepresentation::ProcessViewRequest(
   if (request_type == vtkPVView::REQUEST_RENDER())
   {
     // The superclass handed the mappers the delivered multiblock.
-    this->Mapper->SetInputDataObject(this->DeliveredSurface(vtkPVView::GetDeliveredPiece(inInfo, this)));
+    vtkDataObject* piece = vtkPVView::GetDeliveredPiece(inInfo, this);
+    this->Mapper->SetInputDataObject(this->DeliveredSurface(piece));
     this->LODMapper->SetInputDataObject(this->Empty);
   }
   return 1;

@@ -2,7 +2,11 @@
  * @class   vtkVectorIrradianceRepresentation
  * @brief   ParaView's "Vector Irradiance (glossy)" surface representation
  *
- * Draws the face cluster solution's vector irradiance lighting a modified Phong BRDF per pixel (Gobbetti et al. 2003, eq. 10): the output of the Radiosity filter with Method FaceCluster (point array IrradianceVector, 9 components; optional Specular and Shininess cell arrays), with vtkVectorIrradianceMapper. The display parameters and the
+ * Draws the face cluster solution's vector irradiance lighting a modified
+ * Phong BRDF per pixel (Gobbetti et al. 2003, eq. 10): the output of the
+ * Radiosity filter with Method Face Cluster (point array IrradianceVector, 9
+ * components; optional Specular and Shininess cell arrays), with
+ * vtkVectorIrradianceMapper. The display parameters and the
  * handling of ParaView's delivered geometry are vtkRadiosityRepresentation's;
  * input the mapper refuses is reported by the mapper (an error naming the
  * array or cell) and nothing is drawn.
