@@ -53,20 +53,12 @@ vtkQuadraticInterpolantMapper::~vtkQuadraticInterpolantMapper() = default;
 //------------------------------------------------------------------------------
 bool vtkQuadraticInterpolantMapper::ValidateInput(vtkPolyData* input, std::string* message)
 {
-  std::string dummy;
-  std::string& why = message ? *message : dummy;
-  why.clear();
-  if (!input)
-  {
-    why = "No input polydata.";
-    return false;
-  }
-  const vtkIdType numberOfCells = input->GetNumberOfCells();
-  if (numberOfCells == 0)
+  vtkRadiosityCellArrays::Reason reason(message);
+  std::string& why = reason.Text;
+  if (input && input->GetNumberOfCells() == 0)
   {
     return true;
   }
-
   if (!vtkRadiosityCellArrays::CheckPolygons(input, true,
         ": vtkQuadraticInterpolantMapper draws triangles only (the cells the interpolants are "
         "defined on).",
@@ -74,6 +66,7 @@ bool vtkQuadraticInterpolantMapper::ValidateInput(vtkPolyData* input, std::strin
   {
     return false;
   }
+  const vtkIdType numberOfCells = input->GetNumberOfCells();
 
   const char* name = GetInterpolantArrayName();
   vtkCellData* cd = input->GetCellData();

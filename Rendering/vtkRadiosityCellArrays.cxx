@@ -53,6 +53,11 @@ std::string vtkRadiosityCellArrays::DescribeCell(vtkPolyData* input, vtkIdType c
 bool vtkRadiosityCellArrays::CheckPolygons(
   vtkPolyData* input, bool trianglesOnly, const std::string& hint, std::string& message)
 {
+  if (!input)
+  {
+    message = "No input polydata.";
+    return false;
+  }
   // VTK numbers vertices first, then lines, polys and strips: a vertex or
   // line, if any, is cell 0, and the first strip follows the polys.
   const vtkIdType polys = input->GetNumberOfPolys();

@@ -133,14 +133,8 @@ int vtkShepardSplatMapper::GetNumberOfLevels() const
 //------------------------------------------------------------------------------
 bool vtkShepardSplatMapper::ValidateSurface(vtkPolyData* surface, std::string* message)
 {
-  std::string dummy;
-  std::string& why = message ? *message : dummy;
-  why.clear();
-  if (!surface)
-  {
-    why = "No input polydata.";
-    return false;
-  }
+  vtkRadiosityCellArrays::Reason reason(message);
+  std::string& why = reason.Text;
   return vtkRadiosityCellArrays::CheckPolygons(surface, false,
            ": vtkShepardSplatMapper draws polygons only (the surfaces the field lies on).", why) &&
     vtkRadiosityCellArrays::CheckOptional(surface, "Reflectance", 3, why) &&
@@ -151,9 +145,8 @@ bool vtkShepardSplatMapper::ValidateSurface(vtkPolyData* surface, std::string* m
 //------------------------------------------------------------------------------
 bool vtkShepardSplatMapper::ValidateField(vtkPolyData* field, std::string* message)
 {
-  std::string dummy;
-  std::string& why = message ? *message : dummy;
-  why.clear();
+  vtkRadiosityCellArrays::Reason reason(message);
+  std::string& why = reason.Text;
   if (!field)
   {
     why = "No field: connect vtkMeshlessFieldFilter's output with SetFieldConnection.";

@@ -53,14 +53,8 @@ vtkVectorIrradianceMapper::~vtkVectorIrradianceMapper() = default;
 //------------------------------------------------------------------------------
 bool vtkVectorIrradianceMapper::ValidateInput(vtkPolyData* input, std::string* message)
 {
-  std::string dummy;
-  std::string& why = message ? *message : dummy;
-  why.clear();
-  if (!input)
-  {
-    why = "No input polydata.";
-    return false;
-  }
+  vtkRadiosityCellArrays::Reason reason(message);
+  std::string& why = reason.Text;
   if (!vtkRadiosityCellArrays::CheckPolygons(
         input, false, ": vtkVectorIrradianceMapper draws polygons only.", why))
   {

@@ -467,6 +467,16 @@ int TestShepardSplatMapper(int argc, char* argv[])
   // Mesa's llvmpipe raises SIGFPE when VTK's driver enables FP exceptions.
   vtkFloatingPointExceptions::Disable();
 
+  // No input: refused with a reason, also when no reason is asked for.
+  {
+    std::string why = "stale";
+    if (vtkShepardSplatMapper::ValidateSurface(nullptr, &why) || why != "No input polydata." || vtkShepardSplatMapper::ValidateSurface(nullptr, nullptr))
+    {
+      std::cerr << "A null input was not refused: '" << why << "'\n";
+      return EXIT_FAILURE;
+    }
+  }
+
   {
     vtkNew<vtkShepardSplatMapper> mapper;
     mapper->SetExposure(-1.0);

@@ -288,6 +288,16 @@ bool ExpectError(vtkRenderWindow* window, vtkVectorIrradianceMapper* mapper, vtk
 int TestVectorIrradianceMapper(int argc, char* argv[])
 {
   vtkFloatingPointExceptions::Disable();
+
+  // No input: refused with a reason, also when no reason is asked for.
+  {
+    std::string why = "stale";
+    if (vtkVectorIrradianceMapper::ValidateInput(nullptr, &why) || why != "No input polydata." || vtkVectorIrradianceMapper::ValidateInput(nullptr, nullptr))
+    {
+      std::cerr << "A null input was not refused: '" << why << "'\n";
+      return EXIT_FAILURE;
+    }
+  }
   const std::vector<Triangle> scene = MakeScene();
   vtkSmartPointer<vtkPolyData> glossy = MakePolyData(scene, true);
   vtkSmartPointer<vtkPolyData> diffuse = MakePolyData(scene, false);
