@@ -3,7 +3,11 @@
 #ifndef PixelTestSupport_h
 #define PixelTestSupport_h
 
+#include "vtkActor.h"
 #include "vtkImageData.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPolyData.h"
 #include "vtkMath.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
@@ -117,6 +121,48 @@ bool ExpectRenderError(vtkRenderWindow* window, vtkObject* mapper, Feed feed, co
     return false;
   }
   return true;
+}
+// A null input is refused with "No input polydata.", whether or not the
+// caller asks for the reason.
+template <typename Validate>
+bool RefusesNullInput(Validate validate)
+{
+  std::string why = "stale";
+  if (validate(nullptr, &why) || why != "No input polydata." || validate(nullptr, nullptr))
+  {
+    std::cerr << "A null input was not refused: '" << why << "'\n";
+    return false;
+  }
+  return true;
+}
+
+// Draws `actor` once with a fresh mapper of `original`'s class whose vertex
+// coordinates are always shifted and scaled (ParaView's default), on a copy
+// of `input` (the window shares the VBO of a points array among mappers, and
+// the original's would be unshifted); `configure` sets the rest of the new
+// mapper. Then `check()` compares the pixels; `original` is restored.
+template <typename Mapper, typename Configure, typename Check>
+bool CheckShiftedCoordinates(vtkRenderWindow* window, vtkActor* actor, Mapper* original,
+  vtkPolyData* input, Configure configure, Check check)
+{
+  vtkSmartPointer<Mapper> shifted = vtkSmartPointer<Mapper>::New();
+  shifted->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE);
+  vtkNew<vtkPolyData> copy;
+  copy->DeepCopy(input);
+  shifted->SetInputData(copy);
+  configure(shifted.GetPointer());
+  actor->SetMapper(shifted);
+  window->Render();
+  vtkOpenGLVertexBufferObject* vbo = shifted->GetVBOs()->GetVBO("vertexMC");
+  const bool enabled = vbo && vbo->GetCoordShiftAndScaleEnabled();
+  const bool same = enabled && check();
+  actor->SetMapper(original);
+  shifted->ReleaseGraphicsResources(window);
+  if (!same)
+  {
+    std::cerr << "With shifted and scaled coordinates (shift on: " << enabled << ") the pixels differ\n";
+  }
+  return same;
 }
 }
 

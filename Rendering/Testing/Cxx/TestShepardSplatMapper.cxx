@@ -18,8 +18,6 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkOpenGLVertexBufferObject.h"
-#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -467,14 +465,9 @@ int TestShepardSplatMapper(int argc, char* argv[])
   // Mesa's llvmpipe raises SIGFPE when VTK's driver enables FP exceptions.
   vtkFloatingPointExceptions::Disable();
 
-  // No input: refused with a reason, also when no reason is asked for.
+  if (!RefusesNullInput(vtkShepardSplatMapper::ValidateSurface))
   {
-    std::string why = "stale";
-    if (vtkShepardSplatMapper::ValidateSurface(nullptr, &why) || why != "No input polydata." || vtkShepardSplatMapper::ValidateSurface(nullptr, nullptr))
-    {
-      std::cerr << "A null input was not refused: '" << why << "'\n";
-      return EXIT_FAILURE;
-    }
+    return EXIT_FAILURE;
   }
 
   {
@@ -599,33 +592,19 @@ int TestShepardSplatMapper(int argc, char* argv[])
 
   // Shifted and scaled vertex coordinates (ParaView's default): the G-buffer
   // still holds model coordinates.
+  blockerActor->VisibilityOff();
+  if (!CheckShiftedCoordinates(
+        window, actor, mapper.GetPointer(), surface,
+        [&](vtkShepardSplatMapper* shifted) {
+          shifted->SetFieldData(fieldData);
+          shifted->SetExposure(exposure);
+        },
+        [&] {
+          return CheckPixels(
+            renderer, window, faces, field, exposure, vtkToneMappingPass::Clamp, 2.5, nullptr);
+        }))
   {
-    vtkNew<vtkShepardSplatMapper> shifted;
-    shifted->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE);
-    // A copy: the window shares the VBO of a points array among mappers.
-    vtkNew<vtkPolyData> copy;
-    copy->DeepCopy(surface);
-    shifted->SetInputData(copy);
-    shifted->SetFieldData(fieldData);
-    shifted->SetExposure(exposure);
-    actor->SetMapper(shifted);
-    blockerActor->VisibilityOff();
-    window->Render();
-    vtkOpenGLVertexBufferObject* vbo = shifted->GetVBOs()->GetVBO("vertexMC");
-    if (!vbo || !vbo->GetCoordShiftAndScaleEnabled())
-    {
-      std::cerr << "The coordinates were not shifted and scaled\n";
-      return EXIT_FAILURE;
-    }
-    const bool same =
-      CheckPixels(renderer, window, faces, field, exposure, vtkToneMappingPass::Clamp, 2.5, nullptr);
-    actor->SetMapper(mapper);
-    shifted->ReleaseGraphicsResources(window);
-    if (!same)
-    {
-      std::cerr << "(coordinates shifted and scaled)\n";
-      return EXIT_FAILURE;
-    }
+    return EXIT_FAILURE;
   }
 
   // The mapper's own operator, written by the composite pass (the render

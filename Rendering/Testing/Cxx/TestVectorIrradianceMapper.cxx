@@ -18,8 +18,6 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkOpenGLVertexBufferObject.h"
-#include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -289,14 +287,9 @@ int TestVectorIrradianceMapper(int argc, char* argv[])
 {
   vtkFloatingPointExceptions::Disable();
 
-  // No input: refused with a reason, also when no reason is asked for.
+  if (!RefusesNullInput(vtkVectorIrradianceMapper::ValidateInput))
   {
-    std::string why = "stale";
-    if (vtkVectorIrradianceMapper::ValidateInput(nullptr, &why) || why != "No input polydata." || vtkVectorIrradianceMapper::ValidateInput(nullptr, nullptr))
-    {
-      std::cerr << "A null input was not refused: '" << why << "'\n";
-      return EXIT_FAILURE;
-    }
+    return EXIT_FAILURE;
   }
   const std::vector<Triangle> scene = MakeScene();
   vtkSmartPointer<vtkPolyData> glossy = MakePolyData(scene, true);
@@ -372,27 +365,14 @@ int TestVectorIrradianceMapper(int argc, char* argv[])
 
   // Shifted and scaled vertex coordinates (ParaView's default): the view
   // vector of the lobe still comes from model coordinates.
+  if (!CheckShiftedCoordinates(
+        window, actor, mapper.GetPointer(), glossy,
+        [](vtkVectorIrradianceMapper* shifted) { shifted->SetExposure(0.6); },
+        [&] {
+          return CheckPixels(renderer, window, scene, 0.6, vtkToneMappingPass::Clamp, true, nullptr);
+        }))
   {
-    vtkNew<vtkVectorIrradianceMapper> shifted;
-    shifted->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::ALWAYS_AUTO_SHIFT_SCALE);
-    // A copy: the window shares the VBO of a points array among mappers.
-    vtkNew<vtkPolyData> copy;
-    copy->DeepCopy(glossy);
-    shifted->SetInputData(copy);
-    shifted->SetExposure(0.6);
-    actor->SetMapper(shifted);
-    window->Render();
-    vtkOpenGLVertexBufferObject* vbo = shifted->GetVBOs()->GetVBO("vertexMC");
-    const bool enabled = vbo && vbo->GetCoordShiftAndScaleEnabled();
-    const bool same =
-      CheckPixels(renderer, window, scene, 0.6, vtkToneMappingPass::Clamp, true, nullptr);
-    actor->SetMapper(mapper);
-    shifted->ReleaseGraphicsResources(window);
-    if (!enabled || !same)
-    {
-      std::cerr << "glossy input with shifted coordinates failed (shift on: " << enabled << ")\n";
-      return EXIT_FAILURE;
-    }
+    return EXIT_FAILURE;
   }
 
   // The baseline: HDR through Reinhard.
