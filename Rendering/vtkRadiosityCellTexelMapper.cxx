@@ -115,14 +115,19 @@ const char* vtkRadiosityCellTexelMapper::ModelPosition()
   return "(vertexMC.xyz / vertexScaleMC + vertexShiftMC)";
 }
 
-const char* vtkRadiosityCellTexelMapper::RadianceUniforms()
+std::string vtkRadiosityCellTexelMapper::RadianceUniforms()
+{
+  return std::string("uniform float radianceScale;\n"
+                     "uniform float inverseGamma;\n"
+                     "uniform int toneOperator;\n") +
+    RadianceDisplayFunction();
+}
+
+const char* vtkRadiosityCellTexelMapper::RadianceDisplayFunction()
 {
   // The operators are vtkToneMappingPass's (Reinhard; Exponential with its
   // coefficient 1, the exposure being applied before).
-  return "uniform float radianceScale;\n"
-         "uniform float inverseGamma;\n"
-         "uniform int toneOperator;\n"
-         "vec3 radianceDisplay(vec3 radiance)\n"
+  return "vec3 radianceDisplay(vec3 radiance)\n"
          "{\n"
          "  vec3 l = max(radiance, vec3(0.0));\n"
          "  if (toneOperator == 1) { l = l / (l + vec3(1.0)); }\n"

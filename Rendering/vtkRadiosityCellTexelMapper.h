@@ -61,6 +61,7 @@ public:
    */
   vtkSetClampMacro(Gamma, double, 0.1, 10.0);
   vtkGetMacro(Gamma, double);
+  ///@}
 
   /**
    * The tone mapping operator applied per fragment to the exposed radiance L,
@@ -82,11 +83,14 @@ public:
    * The GLSL of the radiance encoding, shared with passes that draw the
    * radiance without this class's shaders: RadianceUniforms() declares the
    * uniforms radianceScale (Exposure / pi), inverseGamma and toneOperator and
-   * the function radianceDisplay(L); EncodedRadiance(radiosity) is the
-   * encoded colour of a vec3 radiosity expression (W/m^2), negative parts
-   * cut; SetRadianceUniforms sets the uniforms that `program` uses.
+   * defines RadianceDisplayFunction(), radianceDisplay(L), the encoded colour
+   * of a radiance (for shaders whose uniforms are declared elsewhere, as
+   * VTK's custom uniforms are); EncodedRadiance(radiosity) is the encoded
+   * colour of a vec3 radiosity expression (W/m^2), negative parts cut;
+   * SetRadianceUniforms sets the uniforms that `program` uses.
    */
-  static const char* RadianceUniforms();
+  static std::string RadianceUniforms();
+  static const char* RadianceDisplayFunction();
   static std::string EncodedRadiance(const std::string& radiosity);
   static void SetRadianceUniforms(
     vtkShaderProgram* program, double exposure, double gamma, int toneMapping);
@@ -100,7 +104,6 @@ public:
   using Superclass::MapScalars;
   vtkUnsignedCharArray* MapScalars(double alpha) override;
   vtkUnsignedCharArray* MapScalars(double alpha, int& cellFlag) override;
-  ///@}
   ///@}
 
 protected:

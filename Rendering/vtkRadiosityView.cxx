@@ -64,19 +64,23 @@ vtkRadiosityView::vtkRadiosityView()
     "//VTK::Normal::Impl\n"
     "  radianceVSOutput = radiosityMC * radianceScale;\n",
     false);
-  // Fragment stage: overwrite whatever the lighting code wrote. The tone
-  // mapping pass treats its input as gamma-encoded (it applies pow(c, 2.2)
-  // before the operator and pow(c, 1/2.2) after), so the linear radiance is
-  // encoded with the inverse gamma here to reach the operator unchanged.
-  // Negative values (none in a valid solution) would give NaN in pow.
+  // Fragment stage: overwrite whatever the lighting code wrote with the
+  // radiance encoded as the radiosity mappers encode it (with their default
+  // Gamma 2.2, which the tone mapping pass decodes before its operator, and
+  // no operator of their own); the uniforms are custom ones, which VTK
+  // declares.
   sp->AddFragmentShaderReplacement("//VTK::Normal::Dec", true,
-    "//VTK::Normal::Dec\n"
-    "in vec3 radianceVSOutput;\n",
+    std::string("//VTK::Normal::Dec\n"
+                "in vec3 radianceVSOutput;\n") +
+      vtkRadiosityCellTexelMapper::RadianceDisplayFunction(),
     false);
   sp->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
     "//VTK::Light::Impl\n"
-    "  gl_FragData[0] = vec4(pow(max(radianceVSOutput, vec3(0.0)), vec3(1.0 / 2.2)), 1.0);\n",
+    "  gl_FragData[0] = vec4(radianceDisplay(radianceVSOutput), 1.0);\n",
     false);
+  vtkUniforms* fragment = sp->GetFragmentCustomUniforms();
+  fragment->SetUniformf("inverseGamma", static_cast<float>(1.0 / 2.2));
+  fragment->SetUniformi("toneOperator", vtkRadiosityCellTexelMapper::CLAMP);
 
   // The interpolant path: per-pixel evaluation of the quadratic interpolants.
   // Its actor carries none of the replacements above; only one of the two
