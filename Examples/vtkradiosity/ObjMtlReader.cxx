@@ -313,8 +313,8 @@ bool ReadMtl(const std::string& file, std::map<std::string, Material>& materials
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> ReadObjWithMaterials(
-  const std::string& objFile, std::string& error, std::vector<std::string>& warnings)
+vtkSmartPointer<vtkPolyData> ReadObjWithMaterials(const std::string& objFile, std::string& error,
+  std::vector<std::string>& warnings, double maxReflectance)
 {
   std::ifstream in(objFile);
   if (!in)
@@ -508,6 +508,34 @@ vtkSmartPointer<vtkPolyData> ReadObjWithMaterials(
       warnings.push_back(std::to_string(uses[m]) + " triangle(s) of '" + objFile +
         "' use the undefined material '" + materialNames[m] + "': reflectance 0.5 grey");
     }
+  }
+  // Display colours at or above the limit (white is common) are clamped; above
+  // 1 they are no display colour and are left for the scene check to refuse.
+  std::vector<std::string> clamped;
+  for (std::size_t m = 0; m < materialNames.size() && maxReflectance < 1.0; ++m)
+  {
+    bool any = false;
+    for (double& c : resolved[m].Kd)
+    {
+      if (uses[m] > 0 && c >= maxReflectance && c <= 1.0)
+      {
+        c = maxReflectance;
+        any = true;
+      }
+    }
+    if (any)
+    {
+      clamped.push_back(materialNames[m]);
+    }
+  }
+  if (!clamped.empty())
+  {
+    std::ostringstream s;
+    s << clamped.size() << " material(s) of '" << objFile
+      << "' have a Kd component at or above --max-reflectance " << maxReflectance << " ('"
+      << clamped[0] << "'" << (clamped.size() > 1 ? ", ..." : "")
+      << "): display colours, clamped to " << maxReflectance;
+    warnings.push_back(s.str());
   }
   for (vtkIdType t = 0; t < count; ++t)
   {

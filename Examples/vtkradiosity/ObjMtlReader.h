@@ -28,10 +28,13 @@ namespace cli
  * Errors (returns nullptr, `error` = "file:line: reason: 'text'"): an unreadable
  * .obj, bad or non-finite numbers, face indices out of range or zero, faces
  * with fewer than 3 vertices, malformed .mtl lines.
- * Material values are passed through unchecked: the scene loader validates them.
+ * Material values are passed through unchecked (the scene loader validates
+ * them) except that a Kd component in [maxReflectance, 1] is clamped to
+ * `maxReflectance` (SPEC: .mtl colours are display colours, white is common),
+ * with one warning counting the materials clamped; 1 (the default) clamps nothing.
  */
-vtkSmartPointer<vtkPolyData> ReadObjWithMaterials(
-  const std::string& objFile, std::string& error, std::vector<std::string>& warnings);
+vtkSmartPointer<vtkPolyData> ReadObjWithMaterials(const std::string& objFile, std::string& error,
+  std::vector<std::string>& warnings, double maxReflectance = 1.0);
 } // namespace cli
 } // namespace radiosity
 

@@ -1,0 +1,773 @@
+#include "SceneFileCheck.h"
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <sys/stat.h>
+#include <vector>
+
+namespace radiosity
+{
+namespace cli
+{
+namespace
+{
+// A byte shown as the user would look it up in a hex dump.
+std::string Hex(unsigned char c)
+{
+  char text[8];
+  std::snprintf(text, sizeof text, "0x%02X", c);
+  return text;
+}
+
+// Text of a header line for a message: at most 60 characters, no control bytes.
+std::string Shown(const std::string& text)
+{
+  std::string out;
+  for (unsigned char c : text.substr(0, 60))
+  {
+    out += (c < 0x20 || c >= 0x7F) ? '?' : static_cast<char>(c);
+  }
+  return text.size() > 60 ? out + "..." : out;
+}
+
+std::vector<std::string> Words(const std::string& line)
+{
+  std::vector<std::string> words;
+  std::size_t i = 0;
+  while (i < line.size())
+  {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+    {
+      ++i;
+    }
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r')
+    {
+      ++i;
+    }
+    if (i > start)
+    {
+      words.push_back(line.substr(start, i - start));
+    }
+  }
+  return words;
+}
+
+// A non-negative decimal count, the whole token; false for anything else.
+bool ParseCount(const std::string& token, unsigned long long& value)
+{
+  if (token.empty() || token.size() > 19 ||
+    token.find_first_not_of("0123456789") != std::string::npos)
+  {
+    return false;
+  }
+  value = std::strtoull(token.c_str(), nullptr, 10);
+  return true;
+}
+
+// Reads lines of `bytes` from `pos`: the line without its '\n'; false at the end.
+bool NextLine(const std::string& bytes, std::size_t& pos, std::string& line, bool& ended)
+{
+  if (pos >= bytes.size())
+  {
+    return false;
+  }
+  const std::size_t end = bytes.find('\n', pos);
+  ended = end != std::string::npos;
+  line = bytes.substr(pos, (ended ? end : bytes.size()) - pos);
+  pos = ended ? end + 1 : bytes.size();
+  return true;
+}
+
+// ------------------------------------------------------------------ PLY
+enum class Kind
+{
+  Int,
+  UInt,
+  Float
+};
+struct PlyType
+{
+  int Size;
+  Kind K;
+};
+// vtkPLY's type names (VTK 9.2, case sensitive); int64 and the like are not among them.
+const std::map<std::string, PlyType>& PlyTypes()
+{
+  static const std::map<std::string, PlyType> types = { { "char", { 1, Kind::Int } },
+    { "int8", { 1, Kind::Int } }, { "uchar", { 1, Kind::UInt } }, { "uint8", { 1, Kind::UInt } },
+    { "short", { 2, Kind::Int } }, { "int16", { 2, Kind::Int } },
+    { "ushort", { 2, Kind::UInt } }, { "uint16", { 2, Kind::UInt } },
+    { "int", { 4, Kind::Int } }, { "int32", { 4, Kind::Int } }, { "uint", { 4, Kind::UInt } },
+    { "uint32", { 4, Kind::UInt } }, { "float", { 4, Kind::Float } },
+    { "float32", { 4, Kind::Float } }, { "double", { 8, Kind::Float } },
+    { "float64", { 8, Kind::Float } } };
+  return types;
+}
+
+struct PlyProperty
+{
+  std::string Name;
+  PlyType Type;
+  bool List = false;
+  PlyType Count{ 0, Kind::UInt };
+};
+struct PlyElement
+{
+  std::string Name;
+  unsigned long long Count = 0;
+  int Line = 0;
+  std::vector<PlyProperty> Properties;
+  const PlyProperty* Find(const std::string& name) const
+  {
+    for (const PlyProperty& p : this->Properties)
+    {
+      if (p.Name == name)
+      {
+        return &p;
+      }
+    }
+    return nullptr;
+  }
+};
+
+// VTK's PLY lines are read into 4096-character buffers.
+constexpr std::size_t PlyLineLength = 4095;
+
+// The plural the messages use for an element ("vertices", "faces", "edges").
+std::string Plural(const std::string& element)
+{
+  return element == "vertex" ? "vertices" : element + "s";
+}
+
+// One binary value of `type` at `p` (endianness `big`), as a double.
+double BinaryValue(const char* p, const PlyType& type, bool big)
+{
+  unsigned char b[8];
+  for (int i = 0; i < type.Size; ++i)
+  {
+    b[i] = static_cast<unsigned char>(p[big ? type.Size - 1 - i : i]);
+  }
+  switch (type.Size)
+  {
+    case 1:
+      return type.K == Kind::Int ? static_cast<double>(static_cast<std::int8_t>(b[0])) : b[0];
+    case 2:
+    {
+      std::uint16_t u;
+      std::memcpy(&u, b, 2);
+      return type.K == Kind::Int ? static_cast<double>(static_cast<std::int16_t>(u)) : u;
+    }
+    case 4:
+    {
+      std::uint32_t u;
+      std::memcpy(&u, b, 4);
+      if (type.K == Kind::Float)
+      {
+        float f;
+        std::memcpy(&f, b, 4);
+        return f;
+      }
+      return type.K == Kind::Int ? static_cast<double>(static_cast<std::int32_t>(u)) : u;
+    }
+    default:
+    {
+      double d;
+      std::memcpy(&d, b, 8);
+      return d;
+    }
+  }
+}
+
+// A list's count or a face's vertex index must be a whole number; VTK's
+// buffers limit a list to 255 entries (its count is stored in an unsigned char).
+bool CheckListCount(double count, const std::string& what, std::string& error)
+{
+  if (!(count >= 0 && count <= 255 && count == std::floor(count)))
+  {
+    std::ostringstream s;
+    s << what << " has a list of " << count << " entries (VTK's PLY reader takes 0 to 255)";
+    error = s.str();
+    return false;
+  }
+  return true;
+}
+
+bool CheckIndex(double index, unsigned long long vertices, const std::string& what,
+  std::string& error)
+{
+  if (!(index >= 0 && static_cast<unsigned long long>(index) < vertices &&
+        index == std::floor(index)))
+  {
+    std::ostringstream s;
+    s << what << " has the vertex index " << index << ", out of range (" << vertices
+      << " vertices)";
+    error = s.str();
+    return false;
+  }
+  return true;
+}
+
+bool ParsePlyHeader(const std::string& bytes, std::size_t& pos, bool& ascii, bool& big,
+  std::vector<PlyElement>& elements, std::string& error)
+{
+  std::string line;
+  bool ended = false;
+  int number = 0;
+  bool format = false;
+  while (NextLine(bytes, pos, line, ended))
+  {
+    ++number;
+    const std::string where = "header line " + std::to_string(number);
+    if (line.size() > PlyLineLength)
+    {
+      error = where + " is " + std::to_string(line.size()) + " characters long (at most " +
+        std::to_string(PlyLineLength) + ")";
+      return false;
+    }
+    // vtkPLY renames vertex_index to vertex_indices in every line it reads.
+    const auto alias = line.find("vertex_index");
+    if (alias != std::string::npos && line.compare(alias, 14, "vertex_indices") != 0)
+    {
+      line.replace(alias, 12, "vertex_indices");
+    }
+    const std::vector<std::string> w = Words(line);
+    if (number == 1)
+    {
+      if (w.empty() || w[0] != "ply")
+      {
+        error = "not a PLY file: the first line is '" + Shown(line) + "', not 'ply'";
+        return false;
+      }
+      continue;
+    }
+    if (w.empty())
+    {
+      continue;
+    }
+    const std::string& key = w[0];
+    if (key == "comment" || key == "obj_info")
+    {
+      continue;
+    }
+    if (key == "end_header")
+    {
+      if (!format)
+      {
+        error = "the header has no format line";
+        return false;
+      }
+      if (elements.empty())
+      {
+        error = "the header declares no element";
+        return false;
+      }
+      if (!ended)
+      {
+        error = "the file ends with end_header: no data";
+        return false;
+      }
+      return true;
+    }
+    if (key == "format")
+    {
+      if (format || w.size() != 3 ||
+        (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
+      {
+        error = where + ": bad format line '" + Shown(line) +
+          "' (one of 'format ascii|binary_little_endian|binary_big_endian 1.0')";
+        return false;
+      }
+      format = true;
+      ascii = w[1] == "ascii";
+      big = w[1] == "binary_big_endian";
+      continue;
+    }
+    if (key == "element")
+    {
+      PlyElement e;
+      if (w.size() != 3 || !ParseCount(w[2], e.Count))
+      {
+        error = where + ": bad element line '" + Shown(line) + "' (element NAME COUNT)";
+        return false;
+      }
+      e.Name = w[1];
+      e.Line = number;
+      elements.push_back(e);
+      continue;
+    }
+    if (key == "property")
+    {
+      if (elements.empty())
+      {
+        error = where + ": property before any element: '" + Shown(line) + "'";
+        return false;
+      }
+      const auto& types = PlyTypes();
+      PlyProperty p;
+      const bool list = w.size() >= 2 && w[1] == "list";
+      if (w.size() != (list ? 5u : 3u))
+      {
+        error = where + ": bad property line '" + Shown(line) +
+          "' (property TYPE NAME or property list COUNTTYPE TYPE NAME)";
+        return false;
+      }
+      const std::string& typeName = w[list ? 3 : 1];
+      const auto type = types.find(typeName);
+      if (type == types.end())
+      {
+        error = where + ": unknown property type '" + Shown(typeName) +
+          "' (VTK reads char, uchar, short, ushort, int, uint, float, double and their sized "
+          "names int8...float64)";
+        return false;
+      }
+      p.Type = type->second;
+      p.List = list;
+      if (list)
+      {
+        const auto count = types.find(w[2]);
+        if (count == types.end() || count->second.K == Kind::Float)
+        {
+          error = where + ": the list count type '" + Shown(w[2]) + "' is not an integer type";
+          return false;
+        }
+        p.Count = count->second;
+      }
+      p.Name = w[list ? 4 : 2];
+      elements.back().Properties.push_back(p);
+      continue;
+    }
+    error = where + ": unknown header line '" + Shown(line) + "'";
+    return false;
+  }
+  error = "the header has no end_header line";
+  return false;
+}
+
+// What vtkPLYReader assumes of the elements it reads (checked before it reads them).
+bool CheckPlyLayout(const std::vector<PlyElement>& elements, std::size_t& last,
+  std::string& error)
+{
+  int vertex = -1, face = -1;
+  for (std::size_t i = 0; i < elements.size(); ++i)
+  {
+    const PlyElement& e = elements[i];
+    int& seen = e.Name == "vertex" ? vertex : face;
+    if (e.Name == "vertex" || e.Name == "face")
+    {
+      if (seen >= 0)
+      {
+        error = "header line " + std::to_string(e.Line) + ": a second '" + e.Name + "' element";
+        return false;
+      }
+      seen = static_cast<int>(i);
+    }
+    for (const PlyProperty& p : e.Properties)
+    {
+      static const char* scalars[] = { "x", "y", "z", "u", "v", "texture_u", "texture_v", "s",
+        "t", "nx", "ny", "nz", "red", "green", "blue", "alpha", "intensity" };
+      const bool wantList = e.Name == "face" && (p.Name == "vertex_indices" || p.Name == "texcoord");
+      const bool wantScalar = (e.Name == "vertex" || e.Name == "face") &&
+        std::find(std::begin(scalars), std::end(scalars), p.Name) != std::end(scalars);
+      if ((wantList && !p.List) || (wantScalar && p.List))
+      {
+        error = "header line " + std::to_string(e.Line) + "+: property '" + p.Name +
+          "' of element '" + e.Name + "' must be " + (wantList ? "a list" : "a scalar");
+        return false;
+      }
+    }
+  }
+  if (vertex < 0 || !elements[vertex].Find("x") || !elements[vertex].Find("y") ||
+    !elements[vertex].Find("z"))
+  {
+    error = "no 'vertex' element with properties x, y and z";
+    return false;
+  }
+  if (face >= 0 && face < vertex)
+  {
+    error = "the 'face' element comes before the 'vertex' element (VTK's PLY reader needs the "
+            "vertices first)";
+    return false;
+  }
+  if (face >= 0 && !elements[face].Find("vertex_indices"))
+  {
+    error = "the 'face' element has no vertex_indices (or vertex_index) list";
+    return false;
+  }
+  last = static_cast<std::size_t>(std::max(vertex, face));
+  for (std::size_t i = 0; i < last; ++i)
+  {
+    if (elements[i].Name != "vertex" && elements[i].Name != "face")
+    {
+      error = "header line " + std::to_string(elements[i].Line) + ": element '" +
+        Shown(elements[i].Name) +
+        "' comes before the vertices or faces (VTK's PLY reader does not skip it)";
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i <= last; ++i)
+  {
+    if (elements[i].Count > static_cast<unsigned long long>(INT_MAX))
+    {
+      error = "header line " + std::to_string(elements[i].Line) + " declares " +
+        std::to_string(elements[i].Count) + " " + Plural(elements[i].Name) +
+        ", more than VTK's PLY reader can count (" + std::to_string(INT_MAX) + ")";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool WalkAsciiPly(std::string& bytes, std::size_t pos, const std::vector<PlyElement>& elements,
+  std::size_t last, int headerLines, std::string& error)
+{
+  // A quick count first: one line per element at least.
+  unsigned long long declared = 0;
+  for (std::size_t i = 0; i <= last; ++i)
+  {
+    declared += elements[i].Count;
+  }
+  const auto lines = static_cast<unsigned long long>(
+    std::count(bytes.begin() + static_cast<std::ptrdiff_t>(pos), bytes.end(), '\n') + 1);
+  if (declared > lines)
+  {
+    error = "the header declares " + std::to_string(declared) +
+      " element lines but the file holds only " + std::to_string(lines) +
+      " lines after the header";
+    return false;
+  }
+  const unsigned long long vertices = elements[0].Name == "vertex" ? elements[0].Count
+    : elements[1].Count;
+  std::string line;
+  bool ended = true;
+  int number = headerLines;
+  for (std::size_t i = 0; i <= last; ++i)
+  {
+    const PlyElement& e = elements[i];
+    for (unsigned long long k = 0; k < e.Count; ++k)
+    {
+      const std::string item = e.Name + " " + std::to_string(k) + " of " + std::to_string(e.Count);
+      if (!NextLine(bytes, pos, line, ended))
+      {
+        error = "the header declares " + std::to_string(e.Count) + " " + Plural(e.Name) +
+          " but the file ends after " + std::to_string(k) + " of them (line " +
+          std::to_string(number) + ")";
+        return false;
+      }
+      ++number;
+      const std::string where = "line " + std::to_string(number) + " (" + item + ")";
+      if (line.size() > PlyLineLength)
+      {
+        error = where + " is " + std::to_string(line.size()) + " characters long (VTK reads " +
+          std::to_string(PlyLineLength) + ")";
+        return false;
+      }
+      const std::vector<std::string> w = Words(line);
+      std::size_t at = 0;
+      for (const PlyProperty& p : e.Properties)
+      {
+        std::size_t n = 1;
+        if (p.List)
+        {
+          double count = 0;
+          if (at < w.size())
+          {
+            char* end = nullptr;
+            count = std::strtod(w[at].c_str(), &end);
+            if (*end != '\0')
+            {
+              count = -1;
+            }
+          }
+          if (at >= w.size() || !CheckListCount(count, where + ": list " + p.Name, error))
+          {
+            if (at >= w.size())
+            {
+              error = where + " holds " + std::to_string(w.size()) +
+                " values; the header declares more (property " + p.Name + ")";
+            }
+            return false;
+          }
+          ++at;
+          n = static_cast<std::size_t>(count);
+        }
+        if (at + n > w.size())
+        {
+          error = where + " holds " + std::to_string(w.size()) +
+            " values; the header declares more (property " + p.Name + ")";
+          return false;
+        }
+        for (std::size_t j = 0; j < n; ++j, ++at)
+        {
+          char* end = nullptr;
+          const double value = std::strtod(w[at].c_str(), &end);
+          if (*end != '\0')
+          {
+            error = where + ": '" + Shown(w[at]) + "' is not a number (property " + p.Name + ")";
+            return false;
+          }
+          if (e.Name == "face" && p.Name == "vertex_indices" &&
+            !CheckIndex(value, vertices, where, error))
+          {
+            return false;
+          }
+        }
+      }
+      if (at != w.size())
+      {
+        error = where + " holds " + std::to_string(w.size()) + " values but the header declares " +
+          std::to_string(at);
+        return false;
+      }
+    }
+  }
+  if (!ended)
+  {
+    bytes += '\n'; // VTK drops a last line without its line end (and then frees a stale pointer)
+  }
+  return true;
+}
+
+bool WalkBinaryPly(const std::string& bytes, std::size_t pos, bool big,
+  const std::vector<PlyElement>& elements, std::size_t last, std::string& error)
+{
+  const std::size_t body = bytes.size() - pos;
+  // The fewest bytes the declared elements take (lists empty): refuses a count
+  // the file cannot hold before anything is walked or allocated.
+  double least = 0;
+  for (std::size_t i = 0; i <= last; ++i)
+  {
+    double item = 0;
+    for (const PlyProperty& p : elements[i].Properties)
+    {
+      item += p.List ? p.Count.Size : p.Type.Size;
+    }
+    least += item * static_cast<double>(elements[i].Count);
+    if (least > static_cast<double>(body))
+    {
+      std::ostringstream s;
+      s << "header line " << elements[i].Line << " declares " << elements[i].Count << " "
+        << Plural(elements[i].Name) << " of " << item << " bytes" << (i > 0 ? " (with the elements before, " : " (")
+        << ByteSize(least) << ") but the file holds " << ByteSize(static_cast<double>(body))
+        << " after the header";
+      error = s.str();
+      return false;
+    }
+  }
+  const unsigned long long vertices = elements[0].Name == "vertex" ? elements[0].Count
+    : elements[1].Count;
+  for (std::size_t i = 0; i <= last; ++i)
+  {
+    const PlyElement& e = elements[i];
+    bool lists = false;
+    std::size_t stride = 0;
+    for (const PlyProperty& p : e.Properties)
+    {
+      lists = lists || p.List;
+      stride += p.Type.Size;
+    }
+    if (!lists)
+    {
+      pos += stride * e.Count; // checked above
+      continue;
+    }
+    for (unsigned long long k = 0; k < e.Count; ++k)
+    {
+      const std::string where =
+        e.Name + " " + std::to_string(k) + " of " + std::to_string(e.Count) + " (byte " +
+        std::to_string(pos) + ")";
+      for (const PlyProperty& p : e.Properties)
+      {
+        std::size_t n = 1;
+        if (p.List)
+        {
+          if (bytes.size() - pos < static_cast<std::size_t>(p.Count.Size))
+          {
+            error = "the file ends inside " + where;
+            return false;
+          }
+          const double count = BinaryValue(bytes.data() + pos, p.Count, big);
+          if (!CheckListCount(count, where + ": list " + p.Name, error))
+          {
+            return false;
+          }
+          pos += p.Count.Size;
+          n = static_cast<std::size_t>(count);
+        }
+        if (bytes.size() - pos < n * p.Type.Size)
+        {
+          error = "the file ends inside " + where;
+          return false;
+        }
+        if (e.Name == "face" && p.Name == "vertex_indices")
+        {
+          for (std::size_t j = 0; j < n; ++j)
+          {
+            if (!CheckIndex(BinaryValue(bytes.data() + pos + j * p.Type.Size, p.Type, big),
+                  vertices, where, error))
+            {
+              return false;
+            }
+          }
+        }
+        pos += n * p.Type.Size;
+      }
+    }
+  }
+  return true;
+}
+} // namespace
+
+std::string ByteSize(double bytes)
+{
+  std::ostringstream s;
+  if (bytes < 1e4)
+  {
+    s << static_cast<long long>(bytes) << " bytes";
+  }
+  else
+  {
+    const char* units[] = { "kB", "MB", "GB", "TB", "PB" };
+    int u = 0;
+    bytes /= 1e3;
+    while (bytes >= 1e3 && u < 4)
+    {
+      bytes /= 1e3;
+      ++u;
+    }
+    s.precision(3);
+    s << bytes << " " << units[u];
+  }
+  return s.str();
+}
+
+bool ReadFileBytes(const std::string& file, std::string& bytes, std::string& error)
+{
+  struct stat info;
+  if (::stat(file.c_str(), &info) != 0)
+  {
+    error = file + ": cannot be opened: " + std::strerror(errno);
+    return false;
+  }
+  if (!S_ISREG(info.st_mode))
+  {
+    error = file + ": not a regular file";
+    return false;
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+  {
+    error = file + ": cannot be opened for reading";
+    return false;
+  }
+  bytes.assign(static_cast<std::size_t>(info.st_size), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (static_cast<std::size_t>(in.gcount()) != bytes.size())
+  {
+    error = file + ": read " + std::to_string(in.gcount()) + " of its " +
+      std::to_string(bytes.size()) + " bytes";
+    return false;
+  }
+  return true;
+}
+
+bool CheckObjText(const std::string& file, const std::string& bytes, std::string& error)
+{
+  const auto at = [&bytes](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  if (bytes.size() >= 2 && ((at(0) == 0xFE && at(1) == 0xFF) || (at(0) == 0xFF && at(1) == 0xFE)))
+  {
+    error = file + ": UTF-16 text (byte order mark " + Hex(at(0)) + " " + Hex(at(1)) +
+      " at offset 0); save it as UTF-8 or ASCII";
+    return false;
+  }
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+  {
+    const unsigned char c = at(i);
+    if (c == 0)
+    {
+      // NUL between ASCII characters: UTF-16 (or UTF-32) without a byte order mark.
+      const bool wide = (i > 0 && at(i - 1) >= 0x20 && at(i - 1) < 0x7F) ||
+        (i + 1 < bytes.size() && at(i + 1) >= 0x20 && at(i + 1) < 0x7F);
+      error = file + ": " + (wide ? "UTF-16 or UTF-32 text" : "binary content") +
+        " (a NUL byte at offset " + std::to_string(i) + "), not an 8-bit text OBJ file";
+      return false;
+    }
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v')
+    {
+      error = file + ": binary content (control byte " + Hex(c) + " at offset " +
+        std::to_string(i) + "), not a text OBJ file";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool CheckPly(const std::string& file, std::string& bytes, std::string& error)
+{
+  std::size_t pos = 0;
+  bool ascii = true, big = false;
+  std::vector<PlyElement> elements;
+  std::size_t last = 0;
+  std::string why;
+  if (!ParsePlyHeader(bytes, pos, ascii, big, elements, why) ||
+    !CheckPlyLayout(elements, last, why))
+  {
+    error = file + ": " + why;
+    return false;
+  }
+  const int headerLines =
+    static_cast<int>(std::count(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
+  const bool ok = ascii ? WalkAsciiPly(bytes, pos, elements, last, headerLines, why)
+                        : WalkBinaryPly(bytes, pos, big, elements, last, why);
+  if (!ok)
+  {
+    error = file + ": " + why;
+  }
+  return ok;
+}
+
+bool CheckStl(const std::string& file, const std::string& bytes, std::string& error)
+{
+  if (vtksys::SystemTools::DetectFileType(file.c_str()) == vtksys::SystemTools::FileTypeText)
+  {
+    return true; // vtkSTLReader's ASCII parser reports its own errors
+  }
+  if (bytes.size() < 84)
+  {
+    error = file + ": binary STL of " + std::to_string(bytes.size()) +
+      " bytes, shorter than its 84-byte header";
+    return false;
+  }
+  std::uint32_t count = 0;
+  for (int i = 3; i >= 0; --i)
+  {
+    count = (count << 8) | static_cast<unsigned char>(bytes[80 + i]);
+  }
+  const double expected = 84.0 + 50.0 * count;
+  if (expected != static_cast<double>(bytes.size()))
+  {
+    std::ostringstream s;
+    s << file << ": binary STL header declares " << count << " triangles (" << ByteSize(expected)
+      << " with the 84-byte header) but the file holds " << bytes.size() << " bytes";
+    if ((bytes.size() - 84) % 50 == 0)
+    {
+      s << " (" << (bytes.size() - 84) / 50 << " triangles)";
+    }
+    error = s.str();
+    return false;
+  }
+  return true;
+}
+} // namespace cli
+} // namespace radiosity
