@@ -348,8 +348,7 @@ bool ParsePlyHeader(const std::string& bytes, std::size_t& pos, bool& ascii, boo
       elements.back().Properties.push_back(p);
       continue;
     }
-    error = where + ": unknown header line '" + Shown(line) + "'";
-    return false;
+    // Anything else VTK skips (exporters write stray text lines into the header).
   }
   error = "the header has no end_header line";
   return false;
@@ -416,16 +415,6 @@ bool CheckPlyLayout(const std::vector<PlyElement>& elements, std::size_t& last,
       return false;
     }
   }
-  for (std::size_t i = 0; i <= last; ++i)
-  {
-    if (elements[i].Count > static_cast<unsigned long long>(INT_MAX))
-    {
-      error = "header line " + std::to_string(elements[i].Line) + " declares " +
-        std::to_string(elements[i].Count) + " " + Plural(elements[i].Name) +
-        ", more than VTK's PLY reader can count (" + std::to_string(INT_MAX) + ")";
-      return false;
-    }
-  }
   return true;
 }
 
@@ -442,9 +431,13 @@ bool WalkAsciiPly(std::string& bytes, std::size_t pos, const std::vector<PlyElem
     std::count(bytes.begin() + static_cast<std::ptrdiff_t>(pos), bytes.end(), '\n') + 1);
   if (declared > lines)
   {
-    error = "the header declares " + std::to_string(declared) +
-      " element lines but the file holds only " + std::to_string(lines) +
-      " lines after the header";
+    std::string counts;
+    for (std::size_t i = 0; i <= last; ++i)
+    {
+      counts += (i ? ", " : "") + std::to_string(elements[i].Count) + " " + Plural(elements[i].Name);
+    }
+    error = "the header declares " + std::to_string(declared) + " element lines (" + counts +
+      ") but the file holds only " + std::to_string(lines) + " lines after the header";
     return false;
   }
   const unsigned long long vertices = elements[0].Name == "vertex" ? elements[0].Count
@@ -556,11 +549,17 @@ bool WalkBinaryPly(const std::string& bytes, std::size_t pos, bool big,
     least += item * static_cast<double>(elements[i].Count);
     if (least > static_cast<double>(body))
     {
+      std::string need = ByteSize(least), have = ByteSize(static_cast<double>(body));
+      if (need == have) // a file cut short by a little: the exact counts tell
+      {
+        need = std::to_string(static_cast<long long>(least)) + " bytes";
+        have = std::to_string(body) + " bytes";
+      }
       std::ostringstream s;
       s << "header line " << elements[i].Line << " declares " << elements[i].Count << " "
-        << Plural(elements[i].Name) << " of " << item << " bytes" << (i > 0 ? " (with the elements before, " : " (")
-        << ByteSize(least) << ") but the file holds " << ByteSize(static_cast<double>(body))
-        << " after the header";
+        << Plural(elements[i].Name) << " of " << item << " bytes"
+        << (i > 0 ? " (with the elements before, " : " (") << need << ") but the file holds "
+        << have << " after the header";
       error = s.str();
       return false;
     }
@@ -733,8 +732,21 @@ bool CheckPly(const std::string& file, std::string& bytes, std::string& error)
   if (!ok)
   {
     error = file + ": " + why;
+    return false;
   }
-  return ok;
+  // Only now (the file holds them): counts past VTK's int.
+  for (std::size_t i = 0; i <= last; ++i)
+  {
+    if (elements[i].Count > static_cast<unsigned long long>(INT_MAX))
+    {
+      why = "header line " + std::to_string(elements[i].Line) + " declares " +
+        std::to_string(elements[i].Count) + " " + Plural(elements[i].Name) +
+        ", more than VTK's PLY reader can count (" + std::to_string(INT_MAX) + ")";
+      error = file + ": " + why;
+      return false;
+    }
+  }
+  return true;
 }
 
 bool CheckStl(const std::string& file, const std::string& bytes, std::string& error)

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iomanip>
 #include <cstdlib>
 #include <map>
 #include <sstream>
@@ -90,7 +91,7 @@ public:
     if (need > left)
     {
       std::ostringstream s;
-      s << "line " << this->Line << " declares " << what << " (" << values << " "
+      s << std::fixed << std::setprecision(0) << "line " << this->Line << " declares " << what << " (" << values << " "
         << type << " values, " << (this->Binary ? "" : "at least ") << ByteSize(need)
         << ") but the file holds " << ByteSize(left) << " after it";
       error = s.str();
@@ -99,6 +100,10 @@ public:
     if (this->Binary)
     {
       this->Pos += static_cast<std::size_t>(std::ceil(need));
+      if (this->Pos < this->Bytes.size() && this->Bytes[this->Pos] == '\n')
+      {
+        ++this->Pos; // the line end after the block is not a line of its own
+      }
       return true;
     }
     // ASCII: skip whitespace-separated values (they may span lines).
@@ -112,7 +117,7 @@ public:
       if (this->Pos >= this->Bytes.size())
       {
         std::ostringstream s;
-        s << "the file ends after " << k << " of the " << values << " values of " << what;
+        s << std::fixed << std::setprecision(0) << "the file ends after " << k << " of the " << values << " values of " << what;
         error = s.str();
         return false;
       }
@@ -146,12 +151,20 @@ bool WalkLegacy(LegacyWalker& walk, std::string& error)
   std::vector<std::string> w;
   double attributes = 0; // tuples of the current POINT_DATA / CELL_DATA section
   double points = 0, cells = 0;
+  bool pointsKnown = false; // a POINTS line (structured data sets have DIMENSIONS)
+  bool cellsKnown = false; // POLYDATA and UNSTRUCTURED_GRID list their cells
   while (!walk.Stop && walk.NextLine(w))
   {
     const std::string key = Upper(w[0]);
     double n = 0, m = 0;
     std::ostringstream what;
-    if (key == "DATASET" || key == "DIMENSIONS" || key == "ORIGIN" || key == "SPACING" ||
+    what << std::fixed << std::setprecision(0);
+    if (key == "DATASET")
+    {
+      cellsKnown = w.size() >= 2 && (Upper(w[1]) == "POLYDATA" || Upper(w[1]) == "UNSTRUCTURED_GRID");
+      continue;
+    }
+    if (key == "DIMENSIONS" || key == "ORIGIN" || key == "SPACING" ||
       key == "ASPECT_RATIO")
     {
       continue;
@@ -159,6 +172,7 @@ bool WalkLegacy(LegacyWalker& walk, std::string& error)
     if (key == "POINTS" && Count(w, 1, n) && w.size() >= 3)
     {
       points = n;
+      pointsKnown = true;
       what << n << " points";
       if (!walk.Skip(3 * n, w[2], what.str(), error))
         return false;
@@ -174,7 +188,7 @@ bool WalkLegacy(LegacyWalker& walk, std::string& error)
                key == "TRIANGLE_STRIPS" || key == "CELLS") &&
       Count(w, 1, n) && Count(w, 2, m))
     {
-      cells = std::max(cells, n);
+      cells = key == "CELLS" ? n : cells + n;
       // Version 5: "POLYGONS offsets connectivity" then OFFSETS and CONNECTIVITY blocks.
       const std::size_t keep = walk.Pos;
       const int line = walk.Line;
@@ -206,10 +220,10 @@ bool WalkLegacy(LegacyWalker& walk, std::string& error)
     else if ((key == "POINT_DATA" || key == "CELL_DATA") && Count(w, 1, n))
     {
       const double limit = key == "POINT_DATA" ? points : cells;
-      if (n > limit && limit > 0)
+      if (n > limit && (key == "POINT_DATA" ? pointsKnown : cellsKnown))
       {
         std::ostringstream s;
-        s << "line " << walk.Line << ": " << w[0] << " " << n << " but the data set has " << limit
+        s << std::fixed << std::setprecision(0) << "line " << walk.Line << ": " << w[0] << " " << n << " but the data set has " << limit
           << (key == "POINT_DATA" ? " points" : " cells");
         error = s.str();
         return false;
@@ -282,6 +296,7 @@ bool WalkLegacy(LegacyWalker& walk, std::string& error)
         if (!Count(array, 1, components) || !Count(array, 2, tuples) || array.size() < 4)
           return true;
         std::ostringstream array_what;
+        array_what << std::fixed << std::setprecision(0);
         array_what << "field array " << array[0] << ": " << tuples << " tuples of " << components;
         if (!walk.Skip(components * tuples, array[3], array_what.str(), error))
           return false;

@@ -325,9 +325,19 @@ vtkSmartPointer<vtkDataObject> LoadScene(const std::string& scene, std::string& 
   }
   vtkSmartPointer<vtkDataObject> out =
     ReadFile(scene, Extension(scene), bytes, error, warnings, options);
-  if (out)
+  if (!out)
   {
-    Describe(out, scene, warnings, notes);
+    return nullptr;
+  }
+  Describe(out, scene, warnings, notes);
+  // A file without surfaces is refused here, where its name is known.
+  auto* pd = vtkPolyData::SafeDownCast(out);
+  if (pd && pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
+  {
+    error = scene + ": no polygons (" + std::to_string(pd->GetNumberOfPoints()) + " points, " +
+      std::to_string(pd->GetNumberOfVerts()) + " vertex and " +
+      std::to_string(pd->GetNumberOfLines()) + " line cells, which are not surfaces)";
+    return nullptr;
   }
   return out;
 }
