@@ -35,6 +35,7 @@ execute_process(COMMAND "${FUZZER}" ${limits} ${regressions} ${seeds}
 if (NOT rc EQUAL 0)
   string(REGEX MATCHALL "Running: [^\n]*" running "${out}")
   list(POP_BACK running last)
+  string(REPLACE "Running: " "" last "${last}")
   message("${out}")
   message(FATAL_ERROR "FINDING: ${last} fails (exit ${rc}); stack above")
 endif ()
