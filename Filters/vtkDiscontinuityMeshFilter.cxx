@@ -1,4 +1,5 @@
 #include "vtkDiscontinuityMeshFilter.h"
+#include "vtkRadiosityRequestGuard.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -45,8 +46,23 @@ void SetColour(vtkDoubleArray* a, vtkIdType i, const radiosity::RGB& c)
 }
 }
 
+int vtkDiscontinuityMeshFilter::Fail(const std::string& message)
+{
+  this->LastError = message;
+  vtkErrorMacro(<< message);
+  return 0;
+}
+
 int vtkDiscontinuityMeshFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return vtkRadiosityGuardedRequest(
+    vtkPolyData::GetData(outputVector, 0),
+    [&] { return this->ExecuteRequest(inputVector, outputVector); },
+    [this](const std::string& message) { return this->Fail(message); });
+}
+
+int vtkDiscontinuityMeshFilter::ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   using Clock = std::chrono::steady_clock;
   this->LastError.clear();
@@ -72,10 +88,8 @@ int vtkDiscontinuityMeshFilter::RequestData(
   }
   if (!solution)
   {
-    this->LastError = "the input carries no hierarchical radiosity solution: run "
-                      "vtkRadiosityFilter with Method Hierarchical upstream";
-    vtkErrorMacro(<< this->LastError);
-    return 1;
+    return this->Fail("the input carries no hierarchical radiosity solution: run "
+                      "vtkRadiosityFilter with Method Hierarchical upstream");
   }
 
   radiosity::DiscontinuityMeshOptions options;
@@ -114,6 +128,12 @@ int vtkDiscontinuityMeshFilter::RequestData(
     // Aborted part-way: nothing consistent to write.
     vtkWarningMacro(<< "discontinuity meshing aborted");
     return 1;
+  }
+  if (mesh.LeavesTriangulationFailed > 0)
+  {
+    vtkWarningMacro(<< mesh.LeavesTriangulationFailed
+                    << " leaves could not be triangulated with their discontinuities (CGAL refused "
+                       "the constraints) and are meshed as the leaf alone");
   }
 
   vtkNew<vtkPoints> points;

@@ -102,6 +102,10 @@ private:
   vtkDiscontinuityMeshFilter(const vtkDiscontinuityMeshFilter&) = delete;
   void operator=(const vtkDiscontinuityMeshFilter&) = delete;
 
+  /// Records and reports `message`; returns 0 (a failed request).
+  int Fail(const std::string& message);
+  /// RequestData inside vtkRadiosityGuardedRequest.
+  int ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
   std::string LastError;
   radiosity::DiscontinuityMesh Mesh;
 };

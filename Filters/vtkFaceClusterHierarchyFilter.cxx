@@ -1,4 +1,5 @@
 #include "vtkFaceClusterHierarchyFilter.h"
+#include "vtkRadiosityRequestGuard.h"
 
 #include "vtkCellData.h"
 #include "vtkFaceClusterHierarchy.h"
@@ -35,11 +36,19 @@ int vtkFaceClusterHierarchyFilter::Fail(const std::string& message)
   this->LastError = message;
   this->Hierarchy.reset();
   vtkErrorMacro(<< message);
-  return 1;
+  return 0;
 }
 
 int vtkFaceClusterHierarchyFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return vtkRadiosityGuardedRequest(
+    vtkPolyData::GetData(outputVector, 0),
+    [&] { return this->ExecuteRequest(inputVector, outputVector); },
+    [this](const std::string& message) { return this->Fail(message); });
+}
+
+int vtkFaceClusterHierarchyFilter::ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   this->LastError.clear();
   this->Reused = false;

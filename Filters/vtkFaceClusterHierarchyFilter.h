@@ -87,7 +87,10 @@ private:
   vtkFaceClusterHierarchyFilter(const vtkFaceClusterHierarchyFilter&) = delete;
   void operator=(const vtkFaceClusterHierarchyFilter&) = delete;
 
+  /// Records and reports `message`; returns 0 (a failed request).
   int Fail(const std::string& message);
+  /// RequestData inside vtkRadiosityGuardedRequest.
+  int ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
 
   std::shared_ptr<const radiosity::FaceClusterHierarchy> Hierarchy;
   bool Reused = false;

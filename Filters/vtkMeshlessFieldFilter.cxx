@@ -1,4 +1,5 @@
 #include "vtkMeshlessFieldFilter.h"
+#include "vtkRadiosityRequestGuard.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -30,8 +31,23 @@ vtkSmartPointer<vtkDoubleArray> Named(const char* name, int components, vtkIdTyp
 }
 }
 
+int vtkMeshlessFieldFilter::Fail(const std::string& message)
+{
+  this->LastError = message;
+  vtkErrorMacro(<< message);
+  return 0;
+}
+
 int vtkMeshlessFieldFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return vtkRadiosityGuardedRequest(
+    vtkPolyData::GetData(outputVector, 0),
+    [&] { return this->ExecuteRequest(inputVector, outputVector); },
+    [this](const std::string& message) { return this->Fail(message); });
+}
+
+int vtkMeshlessFieldFilter::ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   this->LastError.clear();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
@@ -52,10 +68,8 @@ int vtkMeshlessFieldFilter::RequestData(
   }
   if (!held)
   {
-    this->LastError = "the input carries no meshless radiosity solution: run vtkRadiosityFilter "
-                      "with Method Meshless upstream";
-    vtkErrorMacro(<< this->LastError);
-    return 1;
+    return this->Fail("the input carries no meshless radiosity solution: run vtkRadiosityFilter "
+                      "with Method Meshless upstream");
   }
   const radiosity::MeshlessRadiosity& solution = *held;
   const auto& points = solution.Points().Points();

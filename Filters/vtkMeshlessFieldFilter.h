@@ -43,6 +43,10 @@ private:
   vtkMeshlessFieldFilter(const vtkMeshlessFieldFilter&) = delete;
   void operator=(const vtkMeshlessFieldFilter&) = delete;
 
+  /// Records and reports `message`; returns 0 (a failed request).
+  int Fail(const std::string& message);
+  /// RequestData inside vtkRadiosityGuardedRequest.
+  int ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
   std::string LastError;
 };
 

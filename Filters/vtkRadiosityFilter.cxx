@@ -15,6 +15,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityRequestGuard.h"
 #include "vtkVersion.h"
 
 #include "Radiosity/FaceClusterRadiosity.h"
@@ -124,15 +125,24 @@ int vtkRadiosityFilter::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-bool vtkRadiosityFilter::Fail(const std::string& message)
+int vtkRadiosityFilter::Fail(const std::string& message)
 {
   this->LastError = message;
   vtkErrorMacro(<< message);
-  return false;
+  return 0;
 }
 
 int vtkRadiosityFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return vtkRadiosityGuardedRequest(
+    vtkPolyData::GetData(outputVector, 0),
+    [&] { return this->ExecuteRequest(inputVector, outputVector); },
+    [this](const std::string& message) { return this->Fail(message); });
+}
+
+int vtkRadiosityFilter::ExecuteRequest(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -154,22 +164,13 @@ int vtkRadiosityFilter::RequestData(
   std::string error;
   if (!vtkRadiositySceneConverter::ToScene(input, scene, error, this->Warnings))
   {
-    this->Fail("bad input: " + error);
-    return 1;
+    return this->Fail("bad input: " + error);
   }
   for (const std::string& w : this->Warnings)
   {
     vtkWarningMacro(<< w);
   }
-  try
-  {
-    radiosity::ValidateScene(scene);
-  }
-  catch (const radiosity::SceneError& e)
-  {
-    this->Fail(std::string("bad input: ") + e.what());
-    return 1;
-  }
+  radiosity::ValidateScene(scene); // a SceneError is bad input (vtkRadiosityGuardedRequest)
   this->Cleanup = radiosity::DropDegenerateTriangles(scene);
   if (this->Cleanup.DegenerateTrianglesDropped > 0)
   {
@@ -180,8 +181,7 @@ int vtkRadiosityFilter::RequestData(
   }
   if (scene.Triangles.empty())
   {
-    this->Fail("bad input: the scene has no triangle of non-zero area");
-    return 1;
+    return this->Fail("bad input: the scene has no triangle of non-zero area");
   }
   if (!scene.HasEmitters())
   {
@@ -191,6 +191,7 @@ int vtkRadiosityFilter::RequestData(
   }
   auto sharedScene = std::make_shared<const radiosity::Scene>(std::move(scene));
   this->LastScene = sharedScene;
+  const double budget = this->MaxMemory * 1e9; // 0: the core's default (75% of physical memory)
 
   auto last = Clock::now();
   // The solvers' fractions are estimates from the residual, which can dip;
@@ -228,6 +229,7 @@ int vtkRadiosityFilter::RequestData(
     options.MaxRefinementRounds = this->MaxRefinementRounds;
     options.ErrorProbes = this->ErrorProbes;
     options.ErrorReference = this->ErrorReference;
+    options.MemoryBudgetBytes = budget;
     auto holder = std::make_shared<HierarchicalHolder>(sharedScene, options);
     this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     last = Clock::now();
@@ -251,18 +253,11 @@ int vtkRadiosityFilter::RequestData(
     options.SolidAngleThreshold = this->SolidAngleThreshold;
     options.ErrorProbes = this->ErrorProbes;
     options.ErrorReference = this->ErrorReference;
+    options.MemoryBudgetBytes = budget;
     auto holder = std::make_shared<MeshlessHolder>(sharedScene, options);
     this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     last = Clock::now();
-    try
-    {
-      this->Statistics = holder->Instance.Solve(progress);
-    }
-    catch (const radiosity::SceneError& e)
-    {
-      this->Fail(std::string("bad input: ") + e.what());
-      return 1;
-    }
+    this->Statistics = holder->Instance.Solve(progress);
     this->MeshlessSolution =
       std::shared_ptr<const radiosity::MeshlessRadiosity>(holder, &holder->Instance);
     this->Solution = std::make_unique<radiosity::SolutionMesh>(holder->Instance.Surface());
@@ -278,6 +273,7 @@ int vtkRadiosityFilter::RequestData(
     settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
     settings.MaxTimeSeconds = this->MaxTime;
     settings.Threads = this->NumberOfThreads;
+    settings.MemoryBudgetBytes = budget;
     // A hierarchy from vtkFaceClusterHierarchyFilter upstream, when it was
     // built for this very scene; otherwise the shared one (built once).
     std::shared_ptr<const radiosity::FaceClusterHierarchy> hierarchy;
@@ -305,6 +301,14 @@ int vtkRadiosityFilter::RequestData(
     this->SolveProgressive(progress);
   }
   this->UpdateProgress(1.0);
+  if (this->Statistics.LinksWithBlockersCut > 0)
+  {
+    const std::string w = std::to_string(this->Statistics.LinksWithBlockersCut) +
+      " links had more candidate blockers than the 64 kept per link: their visibility comes from "
+      "the blockers the rays between the nodes meet (approximate there)";
+    this->Warnings.push_back(w);
+    vtkWarningMacro(<< w);
+  }
   if (this->Statistics.Stop == radiosity::StopReason::Aborted)
   {
     vtkWarningMacro(<< "aborted after " << this->Statistics.Iterations << " iterations");
@@ -359,6 +363,7 @@ void vtkRadiosityFilter::SolveProgressive(const radiosity::ProgressCallback& pro
   options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
   options.ErrorProbes = this->ErrorProbes;
   options.ErrorReference = this->ErrorReference;
+  options.MemoryBudgetBytes = this->MaxMemory * 1e9;
   radiosity::ProgressiveRadiosity solver(*this->LastScene, options);
   this->PreprocessSeconds += std::chrono::duration<double>(Clock::now() - start).count();
 
@@ -394,6 +399,7 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiosityBasis: " << GetBasisName(this->RadiosityBasis) << "\n";
   os << indent << "TransferTolerance: " << this->TransferTolerance << "\n";
   os << indent << "MaxBisections: " << this->MaxBisections << "\n";
+  os << indent << "MaxMemory: " << this->MaxMemory << " GB\n";
   os << indent << "FaceClusterSolution: " << (this->FaceClusterSolution ? "yes" : "none") << "\n";
   os << indent << "HierarchicalSolution: " << (this->HierarchicalSolution ? "yes" : "none") << "\n";
   os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";

@@ -276,6 +276,17 @@ public:
   vtkGetMacro(MaxBisections, int);
   ///@}
 
+  ///@{
+  /// Memory budget of a solve in gigabytes (1e9 bytes); 0 (the default) is
+  /// 75% of physical memory. Every method estimates what it will allocate
+  /// (elements, links, points) from the scene's size and its settings before
+  /// it starts and checks what it grows while it solves: a solve that would
+  /// not fit fails with an error naming the setting to change, instead of
+  /// exhausting the machine's memory.
+  vtkSetClampMacro(MaxMemory, double, 0.0, 1e9);
+  vtkGetMacro(MaxMemory, double);
+  ///@}
+
   /// The last face cluster solution; null otherwise.
   std::shared_ptr<const radiosity::FaceClusterRadiosity> GetFaceClusterSolution() const
   {
@@ -345,12 +356,16 @@ protected:
   int RadiosityBasis = ConstantBasis;
   double TransferTolerance = 1e-5;
   int MaxBisections = 0;
+  double MaxMemory = 0.0;
 
 private:
   vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;
   void operator=(const vtkRadiosityFilter&) = delete;
 
-  bool Fail(const std::string& message);
+  /// Records and reports `message`; returns 0 (a failed request).
+  int Fail(const std::string& message);
+  /// RequestData inside vtkRadiosityGuardedRequest.
+  int ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
   void SolveProgressive(const radiosity::ProgressCallback& progress);
 
   std::string LastError;

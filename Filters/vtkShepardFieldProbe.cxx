@@ -1,4 +1,5 @@
 #include "vtkShepardFieldProbe.h"
+#include "vtkRadiosityRequestGuard.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -19,7 +20,10 @@
 
 #include "Radiosity/ShepardField.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkShepardFieldProbe);
@@ -37,11 +41,11 @@ int vtkShepardFieldProbe::FillInputPortInformation(int port, vtkInformation* inf
   return 1;
 }
 
-bool vtkShepardFieldProbe::Fail(const std::string& message)
+int vtkShepardFieldProbe::Fail(const std::string& message)
 {
   this->LastError = message;
   vtkErrorMacro(<< message);
-  return false;
+  return 0;
 }
 
 namespace
@@ -65,14 +69,21 @@ vtkDataArray* Array(vtkFieldData* data, const char* name, int components)
 int vtkShepardFieldProbe::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  return vtkRadiosityGuardedRequest(
+    vtkDataSet::GetData(outputVector, 0),
+    [&] { return this->ExecuteRequest(inputVector, outputVector); },
+    [this](const std::string& message) { return this->Fail(message); });
+}
+
+int vtkShepardFieldProbe::ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   this->LastError.clear();
   vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
   vtkPolyData* field = vtkPolyData::GetData(inputVector[1], 0);
   vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
   if (!input || !field)
   {
-    this->Fail("a dataset (input 0) and a field (input 1, vtkMeshlessFieldFilter's output) are needed");
-    return 1;
+    return this->Fail("a dataset (input 0) and a field (input 1, vtkMeshlessFieldFilter's output) are needed");
   }
   vtkPointData* fd = field->GetPointData();
   vtkDataArray* level = Array(fd, "Level", 1);
@@ -86,24 +97,36 @@ int vtkShepardFieldProbe::RequestData(
   {
     if (!a)
     {
-      this->Fail(std::string("the field has no point array ") + name);
-      return 1;
+      return this->Fail(std::string("the field has no point array ") + name);
     }
   }
   // Levels, each with a locator over its points.
   std::map<int, FieldLevel> levels;
   for (vtkIdType i = 0; i < field->GetNumberOfPoints(); ++i)
   {
-    FieldLevel& l = levels[static_cast<int>(level->GetTuple1(i))];
-    radiosity::MeshlessPoint p;
+    // The field is data (a file, another filter): check what becomes an
+    // index or a radius before it is one (a NaN cast to an integer is undefined).
+    const double lv = level->GetTuple1(i), gv = group->GetTuple1(i), rv = radius->GetTuple1(i);
     double x[3], n[3], c[3];
     field->GetPoint(i, x);
     normal->GetTuple(i, n);
     coefficient->GetTuple(i, c);
+    auto finite = [](const double* v, int k) { return std::all_of(v, v + k, [](double a) { return std::isfinite(a); }); };
+    if (!(lv >= 0 && lv <= 64 && lv == std::floor(lv)) || !(gv >= 0 && gv <= 2147483647.0 && gv == std::floor(gv)) ||
+      !(rv > 0 && std::isfinite(rv)) || !finite(x, 3) || !finite(n, 3) || !finite(c, 3))
+    {
+      std::ostringstream why;
+      why << "the field's point " << i << " is not a meshless basis function: Level " << lv
+          << " (an integer in [0, 64]), Group " << gv << " (a non-negative integer), Radius " << rv
+          << " (positive), position, Normal and Coefficient finite";
+      return this->Fail(why.str());
+    }
+    FieldLevel& l = levels[static_cast<int>(lv)];
+    radiosity::MeshlessPoint p;
     p.Position = radiosity::Vec3(x[0], x[1], x[2]);
     p.Normal = radiosity::Vec3(n[0], n[1], n[2]);
-    p.Radius = radius->GetTuple1(i);
-    p.Group = static_cast<std::uint32_t>(group->GetTuple1(i));
+    p.Radius = rv;
+    p.Group = static_cast<std::uint32_t>(gv);
     l.Points.push_back(p);
     l.Alpha.emplace_back(c[0], c[1], c[2]);
     l.MaxRadius = std::max(l.MaxRadius, p.Radius);
@@ -136,8 +159,7 @@ int vtkShepardFieldProbe::RequestData(
     auto* poly = vtkPolyData::SafeDownCast(input);
     if (!poly)
     {
-      this->Fail("the probed dataset has no point array Normals (3 components) and is not polydata");
-      return 1;
+      return this->Fail("the probed dataset has no point array Normals (3 components) and is not polydata");
     }
     vtkNew<vtkPolyDataNormals> compute;
     compute->SetInputData(poly);
@@ -151,8 +173,7 @@ int vtkShepardFieldProbe::RequestData(
   }
   if (!normals || normals->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
-    this->Fail("could not compute the point normals of the probed dataset");
-    return 1;
+    return this->Fail("could not compute the point normals of the probed dataset");
   }
   // Per point: a cell using it, for the group and the materials.
   vtkDataArray* pointObjectId = Array(input->GetPointData(), "ObjectId", 1);

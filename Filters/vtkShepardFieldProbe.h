@@ -57,7 +57,10 @@ private:
   vtkShepardFieldProbe(const vtkShepardFieldProbe&) = delete;
   void operator=(const vtkShepardFieldProbe&) = delete;
 
-  bool Fail(const std::string& message);
+  /// Records and reports `message`; returns 0 (a failed request).
+  int Fail(const std::string& message);
+  /// RequestData inside vtkRadiosityGuardedRequest.
+  int ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
   std::string LastError;
 };
 

@@ -6,11 +6,6 @@ namespace radiosity
 {
 namespace closedform
 {
-namespace
-{
-constexpr double Pi = 3.14159265358979323846;
-}
-
 double ParallelRectangles(double a, double b, double c)
 {
   const double X = a / c;

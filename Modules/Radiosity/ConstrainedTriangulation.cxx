@@ -415,8 +415,10 @@ PlanarTriangulation TriangulateWithConstraints(const std::array<Vec3, 3>& domain
   {
     // CGAL reports violated preconditions by throwing; exact predicates make
     // that unexpected here, and the unconstrained domain is still a valid
-    // (coarser) mesh of the leaf.
-    return detail::DomainOnly(domain);
+    // (coarser) mesh of the leaf, flagged so that the loss is reported.
+    PlanarTriangulation fallback = detail::DomainOnly(domain);
+    fallback.ConstraintsDropped = true;
+    return fallback;
   }
   return result;
 }

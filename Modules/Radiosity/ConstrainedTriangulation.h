@@ -19,6 +19,9 @@ struct PlanarTriangulation
 {
   std::vector<Vec3> Points;                            ///< in the plane of the domain
   std::vector<std::array<std::uint32_t, 3>> Triangles; ///< same orientation as the domain
+  /// CGAL refused the constraints (it throws on a violated precondition):
+  /// the result is the domain alone, and the caller counts and reports it.
+  bool ConstraintsDropped = false;
 };
 
 /**

@@ -488,6 +488,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     out.SegmentsFound += found[i];
     out.SegmentsKept += kept[i];
     out.LeavesMeshed += kept[i] > 0;
+    out.LeavesTriangulationFailed += w.Mesh.ConstraintsDropped;
     const Vec3& normal = mesh[leaves[i]].Normal;
     auto shared = [&](const Vec3& x) {
       const SampleKey key = { std::llround(x.x / quantum), std::llround(x.y / quantum),

@@ -57,6 +57,9 @@ struct DiscontinuityMesh
   std::size_t LeavesConformed = 0;   ///< leaves that took in neighbours' boundary vertices
   std::size_t SegmentsFound = 0;     ///< EV/VE traces on leaves before ranking
   std::size_t SegmentsKept = 0;
+  /// Leaves whose constraints the triangulation refused: meshed as the leaf
+  /// alone (PlanarTriangulation::ConstraintsDropped), reported as a warning.
+  std::size_t LeavesTriangulationFailed = 0;
   std::size_t PointSamples = 0;      ///< accurate point irradiance evaluations
   double Seconds = 0.0;
 };

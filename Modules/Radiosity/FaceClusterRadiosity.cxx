@@ -1,4 +1,5 @@
 #include "Radiosity/FaceClusterRadiosity.h"
+#include "Radiosity/MemoryBudget.h"
 
 #include "Radiosity/FaceClusterGeometry.h"
 #include "Radiosity/Stopwatch.h"
@@ -36,6 +37,19 @@ FaceClusterRadiosity::FaceClusterRadiosity(const Scene& scene, const FaceCluster
   , IrradianceBasis(settings.IrradianceBasis)
 {
   const Stopwatch clock;
+  this->Budget = ResolveMemoryBudget(settings.MemoryBudgetBytes);
+  const double ne = this->IrradianceBasis.Size(), nb = this->RadiosityBasis.Size();
+  this->BytesPerElement = sizeof(FaceClusterElement) +
+    sizeof(double) * (ne * ne + 3 * nb * nb + nb) + sizeof(RGB) * 2 * nb + sizeof(IrradianceVector) * 2 * ne;
+  if (!hierarchy)
+  {
+    // The hierarchy: about two clusters per input triangle (a binary tree
+    // over the leaves) and the per-leaf tables.
+    const double triangles = static_cast<double>(scene.Triangles.size());
+    CheckMemoryBudget(triangles * (2.0 * sizeof(FaceCluster) + 5 * sizeof(std::uint32_t) + sizeof(double)),
+      this->Budget, "face cluster radiosity: the hierarchy of " + FormatCount(triangles) + " triangles",
+      "use fewer triangles or raise --max-memory");
+  }
   this->Clusters = hierarchy ? std::move(hierarchy) : FaceClusterHierarchy::Shared(scene, settings.Clustering);
   this->Stats.HierarchySeconds = clock.Seconds();
   this->Visibility = std::make_unique<FaceClusterVisibility>(*this->Clusters);
@@ -46,6 +60,12 @@ std::int32_t FaceClusterRadiosity::NewElement(
 {
   const int ne = this->IrradianceBasis.Size(), nb = this->RadiosityBasis.Size();
   const auto id = static_cast<std::int32_t>(this->Nodes.size());
+  if ((this->Nodes.size() & 4095) == 0)
+  {
+    CheckMemoryBudget(static_cast<double>(this->Nodes.size() + 4096) * this->BytesPerElement, this->Budget,
+      "face cluster radiosity: " + std::to_string(this->Nodes.size() + 4096) + " elements",
+      "lower --max-bisections (MaxBisections), raise --transfer-tolerance or use a smaller irradiance basis");
+  }
   this->Nodes.emplace_back();
   FaceClusterElement& e = this->Nodes.back();
   e.Cluster = cluster;

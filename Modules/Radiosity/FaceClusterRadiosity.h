@@ -53,6 +53,9 @@ struct FaceClusterSettings
   /// the input). A coarse input (a contact edge, slivers) otherwise keeps
   /// one expansion per triangle whatever the light.
   int MaxBisections = 0;
+  /// Bytes the hierarchy and the elements may use; 0: 75% of physical
+  /// memory. Checked before the hierarchy is built and as elements are made.
+  double MemoryBudgetBytes = 0.0;
   TransferRule Rule;
   FaceClusterOptions Clustering;
 };
@@ -149,6 +152,8 @@ private:
   FaceClusterStatistics Stats;
   int Iteration = 0;
   double Epsilon = 0.0;
+  double Budget = 0.0;        ///< bytes (MemoryBudgetBytes resolved)
+  double BytesPerElement = 0.0; ///< an element with its basis coefficients
 
   /// The irradiance vector of element e's expansion at x (zero for e < 0),
   /// limited to the range it takes at the element's nodes.

@@ -10,11 +10,6 @@
 
 namespace radiosity
 {
-namespace
-{
-constexpr double Pi = 3.14159265358979323846;
-}
-
 void GaussLegendre(int n, double* nodes, double* weights)
 {
   // On [-1, 1], mapped to [0, 1].

@@ -1,12 +1,12 @@
 #include "Radiosity/FormFactor.h"
 
 #include <cmath>
+#include <vector>
 
 namespace radiosity
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 constexpr std::size_t MaxClipped = 16;
 
 // Sutherland-Hodgman clip of a polygon against the half-space (x - p).n >= 0.
@@ -32,11 +32,31 @@ std::size_t ClipToHemisphere(
   }
   return k;
 }
+
+/// Room for the clipped polygon: the stack for the usual triangles and
+/// quads, the heap for larger polygons (Sutherland-Hodgman emits at most two
+/// vertices per input vertex).
+class ClipBuffer
+{
+public:
+  explicit ClipBuffer(std::size_t count)
+  {
+    if (2 * count > MaxClipped)
+    {
+      this->Heap.resize(2 * count);
+    }
+  }
+  Vec3* data() { return this->Heap.empty() ? this->Stack : this->Heap.data(); }
+
+private:
+  Vec3 Stack[MaxClipped];
+  std::vector<Vec3> Heap;
+};
 }
 
 Vec3 PointToPolygonVectorFormFactor(const Vec3& p, const Vec3* poly, std::size_t count, const Vec3* horizon)
 {
-  if (horizon && count >= 3 && count <= 8)
+  if (horizon && count >= 3)
   {
     Vec3 areaVector(0.0);
     for (std::size_t i = 1; i + 1 < count; ++i)
@@ -47,9 +67,9 @@ Vec3 PointToPolygonVectorFormFactor(const Vec3& p, const Vec3* poly, std::size_t
     {
       return Vec3(0.0);
     }
-    Vec3 clipped[MaxClipped];
-    const std::size_t m = ClipToHemisphere(p, *horizon, poly, count, clipped);
-    return m < 3 ? Vec3(0.0) : PointToPolygonVectorFormFactor(p, clipped, m, nullptr);
+    ClipBuffer clipped(count);
+    const std::size_t m = ClipToHemisphere(p, *horizon, poly, count, clipped.data());
+    return m < 3 ? Vec3(0.0) : PointToPolygonVectorFormFactor(p, clipped.data(), m, nullptr);
   }
   Vec3 areaVector(0.0), centroid(0.0);
   for (std::size_t i = 1; i + 1 < count; ++i)
@@ -82,7 +102,7 @@ Vec3 PointToPolygonVectorFormFactor(const Vec3& p, const Vec3* poly, std::size_t
 
 double PointToPolygonFormFactor(const Vec3& p, const Vec3& n, const Vec3* poly, std::size_t count)
 {
-  if (count < 3 || count > 8)
+  if (count < 3)
   {
     return 0.0;
   }
@@ -96,7 +116,8 @@ double PointToPolygonFormFactor(const Vec3& p, const Vec3& n, const Vec3* poly, 
   {
     return 0.0;
   }
-  Vec3 clipped[MaxClipped];
+  ClipBuffer buffer(count);
+  Vec3* clipped = buffer.data();
   const std::size_t m = ClipToHemisphere(p, n, poly, count, clipped);
   if (m < 3)
   {

@@ -17,7 +17,7 @@ namespace radiosity
 {
 /**
  * Exact form factor from a differential receiver at `p` with unit normal `n`
- * to the planar polygon `poly` (vertices in order, `count` <= 8). The polygon
+ * to the planar polygon `poly` (vertices in order, any count). The polygon
  * is one-sided: its front is the side its right-hand normal points to; a
  * receiver behind it gets 0. The part of the polygon below the receiver's
  * tangent plane is clipped away (horizon clipping).

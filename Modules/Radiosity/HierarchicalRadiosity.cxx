@@ -4,6 +4,7 @@
 #include "Radiosity/Stopwatch.h"
 #include "Radiosity/ThreadLimit.h"
 #include "Radiosity/FormFactor.h"
+#include "Radiosity/MemoryBudget.h"
 #include "Radiosity/MeshProbeTracker.h"
 #include "Radiosity/Shaft.h"
 #include "Radiosity/Visibility.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace radiosity
 {
@@ -31,6 +33,12 @@ Vec3 At(const TriangleCorners& t, const double (&b)[3])
 {
   return b[0] * t[0] + b[1] * t[1] + b[2] * t[2];
 }
+// Bytes per link while links are made: the pending pair, ComputeLinks'
+// result (the link and its blocker vector) and the link kept; per node: the
+// quadtree element with its pool point and midpoint entry, and the solver's
+// five per-node arrays.
+constexpr double BytesPerLink = 8.0 + 32.0 + 24.0 + 32.0;
+constexpr double BytesPerNode = sizeof(Element) + 24.0 + 48.0 + 4 * sizeof(RGB) + sizeof(double);
 } // namespace
 
 HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const HierarchicalOptions& options)
@@ -38,6 +46,20 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const Hierarchi
   , Settings(options)
   , SceneInfo(AnalyzeScene(scene))
 {
+  // Every facing pair of input triangles is linked before any refinement:
+  // refuse a scene whose initial links do not fit before making them.
+  this->Budget = ResolveMemoryBudget(this->Settings.MemoryBudgetBytes);
+  const double initial = FacingTrianglePairs(scene);
+  const std::size_t n = scene.Triangles.size();
+  CheckMemoryBudget(initial * BytesPerLink + static_cast<double>(n) * BytesPerNode, this->Budget,
+    "hierarchical radiosity: the initial links between every facing pair of the " + std::to_string(n) +
+      " input triangles (" + FormatCount(initial) + " links, before any refinement)",
+    "plain hierarchical radiosity links every pair of input triangles; for this many, use "
+    "--method facecluster or --method meshless (clustered), or fewer triangles");
+  this->LinkCapacity = this->Budget > 0 ? static_cast<std::size_t>(std::min(this->Budget / BytesPerLink, 1e18))
+                                        : std::numeric_limits<std::size_t>::max();
+  this->NodeCapacity = this->Budget > 0 ? static_cast<std::size_t>(std::min(this->Budget / BytesPerNode, 1e18))
+                                        : std::numeric_limits<std::size_t>::max();
   this->Rays = std::make_unique<Visibility>(scene, this->SceneInfo.CanOcclude);
   // Roots only: one node per input triangle, split where the links ask.
   this->Elements = std::make_unique<ElementMesh>(scene, 1e300, 1e300, 0);
@@ -57,7 +79,6 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const Hierarchi
   this->Epsilon = this->Settings.LinkTolerance > 0
     ? this->Settings.LinkTolerance
     : this->Settings.RelativeLinkTolerance * ambient;
-  const std::size_t n = this->Elements->Elements().size();
   this->NodeRadiosity.resize(n);
   this->NodeGathered.assign(n, RGB(0.0));
   this->NodeGatheredVisible.assign(n, RGB(0.0));
@@ -103,6 +124,14 @@ std::uint32_t HierarchicalRadiosity::Children(std::uint32_t e)
   {
     return static_cast<std::uint32_t>(mesh[e].FirstChild);
   }
+  if (mesh.Elements().size() + 4 > this->NodeCapacity)
+  {
+    CheckMemoryBudget(static_cast<double>(mesh.Elements().size() + 4) * BytesPerNode +
+        static_cast<double>(this->LinkList.size()) * BytesPerLink,
+      this->Budget,
+      "hierarchical radiosity: refining to " + std::to_string(mesh.Elements().size() + 4) + " quadtree nodes",
+      "raise --min-element-size (MinElementSize) or --link-tolerance (LinkTolerance)");
+  }
   const std::uint32_t first = mesh.Subdivide(e);
   const std::size_t n = mesh.Elements().size();
   const RGB b = this->NodeRadiosity[e], h = this->NodeIrradiance[e];
@@ -138,6 +167,13 @@ void HierarchicalRadiosity::Refine(std::uint32_t p, std::uint32_t q, std::vector
   const bool sp = this->Splittable(p), sq = this->Splittable(q);
   if (bq * std::max(fpq, fqp) <= this->Epsilon || (!sp && !sq))
   {
+    if (out.size() + this->LinkList.size() >= this->LinkCapacity)
+    {
+      CheckMemoryBudget(static_cast<double>(out.size() + this->LinkList.size() + 1) * BytesPerLink,
+        this->Budget,
+        "hierarchical radiosity: refining to " + std::to_string(out.size() + this->LinkList.size() + 1) + " links",
+        "raise --link-tolerance (LinkTolerance) or --min-element-size (MinElementSize)");
+    }
     out.push_back({ p, q });
     return;
   }
@@ -297,6 +333,7 @@ void HierarchicalRadiosity::ComputeLinks(
             {
               hit.resize(this->Settings.MaxBlockersPerLink);
             }
+            link.BlockersCut = true;
             res.Blockers.swap(hit);
           }
         }
@@ -665,10 +702,12 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
   stats.Links = this->LinkList.size();
   stats.PartialLinks = 0;
   stats.HiddenLinks = 0;
+  stats.LinksWithBlockersCut = 0;
   for (const HierarchicalLink& l : this->LinkList)
   {
     stats.PartialLinks += l.Kind == HierarchicalLink::Partial;
     stats.HiddenLinks += l.Kind == HierarchicalLink::Hidden;
+    stats.LinksWithBlockersCut += l.BlockersCut;
   }
   stats.Subdivisions = (mesh.Elements().size() - this->Roots.size()) / 4;
   stats.RaysCast = this->Rays->RaysCast();

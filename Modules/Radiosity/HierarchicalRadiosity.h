@@ -70,7 +70,13 @@ struct HierarchicalOptions
   /// Nodes whose longest edge is at or below this fraction of the scene diagonal are not split.
   double MinElementSize = 1.0 / 64.0;
   int MaxRefinementRounds = 4;      ///< BF refinement passes after the first solve
+  /// Candidate blockers kept per link; links with more keep those the rays
+  /// between the nodes meet, and are counted (SolverStatistics::LinksWithBlockersCut).
   std::size_t MaxBlockersPerLink = 64;
+  /// Bytes the solve may use (links, nodes); 0: 75% of physical memory.
+  /// Checked before the first allocation (the initial links of every facing
+  /// pair of input triangles) and while links and nodes are refined.
+  double MemoryBudgetBytes = 0.0;
   std::vector<Probe> ErrorProbes;   ///< reference irradiance: error in every history row
   std::vector<RGB> ErrorReference;
 };
@@ -90,6 +96,9 @@ struct HierarchicalLink
   std::uint32_t FirstBlocker = 0;
   std::uint32_t BlockerCount = 0;
   VisibilityKind Kind = Visible;
+  /// More candidate blockers than MaxBlockersPerLink: only those the rays
+  /// between the nodes meet were kept (SolverStatistics::LinksWithBlockersCut).
+  bool BlockersCut = false;
 };
 
 class HierarchicalRadiosity
@@ -158,6 +167,9 @@ private:
   double Epsilon = 0.0;
   double MinEdge = 0.0;
   double PlaneTolerance = 0.0;
+  double Budget = 0.0;              ///< bytes (MemoryBudgetBytes resolved)
+  std::size_t LinkCapacity = 0;     ///< links (made and pending) the budget holds
+  std::size_t NodeCapacity = 0;     ///< quadtree nodes the budget holds
 };
 } // namespace radiosity
 

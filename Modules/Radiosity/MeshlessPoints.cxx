@@ -113,6 +113,23 @@ struct PointHierarchy::Index
   double MaxRadius = 0.0;
 };
 
+double MaxPoissonDiskPoints(const Scene& scene, const PointPlacementOptions& options)
+{
+  double area = 0.0;
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    area += scene.Area(t);
+  }
+  const double r0 = options.InitialRadius * (scene.Diagonal() > 0 ? scene.Diagonal() : 1.0);
+  double points = 0.0;
+  for (int level = 0; level < std::max(1, options.Levels); ++level)
+  {
+    const double r = r0 / std::ldexp(1.0, level);
+    points += 2.0 / std::sqrt(3.0) * area / (r * r);
+  }
+  return points;
+}
+
 PointHierarchy::PointHierarchy(
   const Scene& scene, const PointPlacementOptions& options, const Visibility* rays)
 {

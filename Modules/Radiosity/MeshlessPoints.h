@@ -43,6 +43,12 @@ struct PointPlacementOptions
   bool RejectInsideGeometry = true;
 };
 
+/// An upper bound of the points PointHierarchy places: Poisson-disk points
+/// of radius r are at most as dense as the hexagonal packing, 2 / (sqrt(3)
+/// r^2) per unit area, and the radius halves per level. Its memory
+/// estimate, before any point is placed.
+double MaxPoissonDiskPoints(const Scene& scene, const PointPlacementOptions& options);
+
 class PointHierarchy
 {
 public:

@@ -3,6 +3,7 @@
 #include "Radiosity/ElementMesh.h"
 #include "Radiosity/ErrorMetrics.h"
 #include "Radiosity/FormFactor.h"
+#include "Radiosity/MemoryBudget.h"
 #include "Radiosity/MeshProbeTracker.h"
 #include "Radiosity/SceneAnalysis.h"
 #include "Radiosity/Stopwatch.h"
@@ -19,7 +20,6 @@ namespace radiosity
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 double RadicalInverse2(std::uint32_t i)
 {
@@ -349,6 +349,10 @@ void MeshlessRadiosity::ComputeBounce(const ShepardField& previous, Bounce& out)
 
 RGB MeshlessRadiosity::IrradianceAt(const Vec3& x, const Vec3& n, std::uint32_t triangle) const
 {
+  if (!this->Solution)
+  {
+    return RGB(0.0); // no emitter, or aborted before the points were placed: the zero solution
+  }
   return this->Solution->Evaluate(
     x, n, static_cast<std::uint32_t>(this->SourceScene.ObjectIds[triangle]));
 }
@@ -359,6 +363,10 @@ SolutionMesh MeshlessRadiosity::Surface() const
   const double diagonal = scene.Diagonal();
   ElementMesh mesh(scene, 1e300, this->Settings.SurfaceElementSize * diagonal, 12);
   const std::vector<std::uint32_t> leaves = mesh.Leaves();
+  if (!this->Solution)
+  {
+    return ExtractSolution(mesh); // the zero solution (no emitter, or aborted before placement)
+  }
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
     Element& el = mesh[leaves[i]];
     const auto group = static_cast<std::uint32_t>(scene.ObjectIds[el.Source]);
@@ -377,7 +385,15 @@ SolutionMesh MeshlessRadiosity::Surface() const
 std::vector<RGB> MeshlessRadiosity::Evaluate(const std::vector<Probe>& probes) const
 {
   return EvaluateOnNearestTriangles(this->SourceScene, probes,
-    [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->IrradianceAt(x, n, t); });
+    [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->IrradianceAt(x, n, t); },
+    this->Rays.get()); // over every triangle; null before a solve (then built there)
+}
+
+namespace
+{
+// Bytes per point: the point, its coefficients in the solution, the direct
+// field and the two live bounces, its k-d tree entry and placement grid cell.
+constexpr double BytesPerMeshlessPoint = sizeof(MeshlessPoint) + 4 * 2 * sizeof(RGB) + 32.0 + 16.0;
 }
 
 SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
@@ -406,6 +422,10 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     stats.Stop = StopReason::Aborted;
     return stats;
   }
+  const double pointBound = MaxPoissonDiskPoints(scene, this->Settings.Placement);
+  CheckMemoryBudget(pointBound * BytesPerMeshlessPoint, ResolveMemoryBudget(this->Settings.MemoryBudgetBytes),
+    "meshless radiosity: up to " + FormatCount(pointBound) + " points",
+    "raise --point-radius (PointRadius) or lower --point-levels (PointLevels)");
   this->Rays = std::make_unique<Visibility>(scene, Visibility::AllTriangles(scene));
   // Only what can occlude casts shadows (SceneAnalysis): no rays, and no
   // grazing-angle misses, inside a convex enclosure.

@@ -57,6 +57,9 @@ struct MeshlessOptions
   /// Surface(): the input triangles split uniformly to this longest edge
   /// (fraction of the scene diagonal) to carry the field as point data.
   double SurfaceElementSize = 1.0 / 32.0;
+  /// Bytes the point hierarchy may use; 0: 75% of physical memory. Checked
+  /// before the points are placed, from the densest packing the radii allow.
+  double MemoryBudgetBytes = 0.0;
   std::vector<Probe> ErrorProbes;          ///< reference irradiance: error after every bounce
   std::vector<RGB> ErrorReference;
 };

@@ -25,10 +25,13 @@ struct Probe
  * facing its normal (the distance to the triangle's plane plus the distance
  * from the foot to the triangle): how the methods whose solution lives on
  * the input triangles (meshless, face cluster) answer probes. NaN where no
- * triangle faces the probe.
+ * triangle faces the probe. The search is an Embree point query over
+ * `allTriangles` (a Visibility built over every triangle of `scene`; built
+ * here when null), not a loop over the triangles.
  */
 std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vector<Probe>& probes,
-  const std::function<RGB(std::uint32_t triangle, const Vec3& x, const Vec3& n)>& at);
+  const std::function<RGB(std::uint32_t triangle, const Vec3& x, const Vec3& n)>& at,
+  const Visibility* allTriangles = nullptr);
 
 class ProbeEvaluator
 {

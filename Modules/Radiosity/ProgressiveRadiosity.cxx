@@ -4,6 +4,7 @@
 #include "Radiosity/Stopwatch.h"
 #include "Radiosity/ThreadLimit.h"
 #include "Radiosity/FormFactor.h"
+#include "Radiosity/MemoryBudget.h"
 #include "Radiosity/MeshProbeTracker.h"
 #include "Radiosity/ShooterSamples.h"
 #include "Radiosity/Visibility.h"
@@ -15,6 +16,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace radiosity
 {
@@ -42,6 +44,14 @@ struct ProgressiveRadiosity::ShotResult
   bool Split = false;
 };
 
+namespace
+{
+// Bytes per element: the quadtree node with its pool point and midpoint
+// entry, its corner samples (shared with the neighbours: about one each) and
+// their index entries.
+constexpr double BytesPerElement = sizeof(Element) + 24.0 + 48.0 + 12.0 + 72.0 + 48.0 + 12.0;
+}
+
 ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene, const ProgressiveOptions& options)
   : SourceScene(scene)
   , Settings(options)
@@ -51,6 +61,15 @@ ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene, const Progressive
   const double diag = this->SceneInfo.Diagonal;
   const double initialEdge = std::max(options.InitialElementSize, 1e-6) * diag;
   const double shooterEdge = std::max(options.ShooterElementSize, options.InitialElementSize) * diag;
+  // The uniform initial mesh, 4/3 nodes per leaf, must fit before it is made.
+  this->Budget = ResolveMemoryBudget(options.MemoryBudgetBytes);
+  const double leaves = UniformQuadtreeLeaves(scene, initialEdge, 12);
+  CheckMemoryBudget(4.0 / 3.0 * leaves * BytesPerElement, this->Budget,
+    "progressive radiosity: the initial mesh of " + FormatCount(leaves) + " elements",
+    "raise --element-size (InitialElementSize)");
+  this->ElementCapacity = this->Budget > 0
+    ? static_cast<std::size_t>(std::min(this->Budget / BytesPerElement, 1e18))
+    : std::numeric_limits<std::size_t>::max();
   this->Elements = std::make_unique<ElementMesh>(scene, shooterEdge, initialEdge, 12);
   this->MaxLevel.assign(scene.Triangles.size(), 0);
   for (const Element& e : this->Elements->Elements())
@@ -486,6 +505,12 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
       }
       if (res.Split)
       {
+        if (mesh.Elements().size() + 4 > this->ElementCapacity)
+        {
+          CheckMemoryBudget(static_cast<double>(mesh.Elements().size() + 4) * BytesPerElement, this->Budget,
+            "progressive radiosity: subdividing to " + std::to_string(mesh.Elements().size() + 4) + " elements",
+            "lower MaxSubdivisionLevels or raise SubdivisionThreshold or --element-size");
+        }
         const std::uint32_t first = mesh.Subdivide(e);
         ++stats.Subdivisions;
         for (std::uint32_t c = 0; c < 4; ++c)

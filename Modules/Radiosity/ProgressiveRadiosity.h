@@ -42,6 +42,9 @@ struct ProgressiveOptions
   double FormFactorTolerance = 2e-3;
   int VisibilitySamples = 16;      ///< rays per receiver sample from emitters: 1, 4 or 16
   int IndirectVisibilitySamples = 1; ///< rays per receiver sample from reflectors
+  /// Bytes the elements may use; 0: 75% of physical memory. Checked before
+  /// the initial mesh is made and at every adaptive subdivision.
+  double MemoryBudgetBytes = 0.0;
   /// Reference irradiance at probes: when given, every history row carries the
   /// solution's error there (error against run time).
   std::vector<Probe> ErrorProbes;
@@ -119,6 +122,8 @@ private:
   double PlaneTolerance = 0.0; ///< distance below which a point lies in a plane
   double Absorbed = 0.0;
   double Escaped = 0.0;
+  double Budget = 0.0;                ///< bytes (MemoryBudgetBytes resolved)
+  std::size_t ElementCapacity = 0;    ///< elements the budget holds
 };
 } // namespace radiosity
 

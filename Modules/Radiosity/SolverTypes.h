@@ -36,8 +36,12 @@ inline bool ReportProgress(const ProgressCallback& progress, const char* phase,
   status.Phase = phase;
   status.Iteration = iteration;
   status.Residual = residual;
-  const double done = std::log(std::max(residual, 1e-300)) / std::log(tolerance);
-  status.Fraction = done < 0 ? 0.0 : (done > 1 ? 1.0 : done);
+  // The fraction of the way from residual 1 to the tolerance on a log scale;
+  // a tolerance of 1 (or a non-finite residual) has no way to go: 0 or 1, never 0/0.
+  const double logTolerance = tolerance > 0 && tolerance < 1 ? std::log(tolerance) : 0.0;
+  const double done = logTolerance < 0 ? std::log(std::max(residual, 1e-300)) / logTolerance
+                                       : (residual <= tolerance ? 1.0 : 0.0);
+  status.Fraction = !(done > 0) ? 0.0 : (done > 1 ? 1.0 : done);
   return progress(status);
 }
 
@@ -101,6 +105,10 @@ struct SolverStatistics
   std::size_t Links = 0;             ///< hierarchical: node-to-node transfers
   std::size_t PartialLinks = 0;      ///< hierarchical: links with recorded blockers
   std::size_t HiddenLinks = 0;       ///< hierarchical: links found fully occluded
+  /// hierarchical: links with more candidate blockers than MaxBlockersPerLink
+  /// that kept only those the rays between the nodes meet (visibility there
+  /// is approximate; reported as a warning)
+  std::size_t LinksWithBlockersCut = 0;
   double EmittedPowerW = 0.0;
   double UnshotPowerW = 0.0;
   double AbsorbedPowerW = 0.0;

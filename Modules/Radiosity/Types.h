@@ -11,6 +11,10 @@
 
 namespace radiosity
 {
+/// One constant for every file (the core builds as unity translation units:
+/// a per-file Pi would be defined twice in one of them).
+constexpr double Pi = 3.14159265358979323846;
+
 using Vec3 = glm::dvec3;
 /// A colour triple, linear RGB. Same type as Vec3 so that glm's arithmetic applies.
 using RGB = glm::dvec3;

@@ -251,6 +251,62 @@ bool CollectInSphere(RTCPointQueryFunctionArguments* args)
 }
 }
 
+namespace
+{
+struct NearestQuery
+{
+  const std::vector<unsigned>* GeometryToTriangle;
+  const std::function<double(std::uint32_t)>* Distance;
+  double Best;
+  std::int64_t Triangle;
+  double Margin; ///< the float BVH's bounds against the double triangles
+  bool Shrink;
+};
+
+bool NearestInSphere(RTCPointQueryFunctionArguments* args)
+{
+  auto* q = static_cast<NearestQuery*>(args->userPtr);
+  const std::uint32_t t = (*q->GeometryToTriangle)[args->primID];
+  const double d = (*q->Distance)(t);
+  if (!(d < q->Best || (d == q->Best && q->Triangle >= 0 && t < q->Triangle)))
+  {
+    return false;
+  }
+  q->Best = d;
+  q->Triangle = t;
+  const float r = static_cast<float>(d + q->Margin);
+  if (q->Shrink && r < args->query->radius)
+  {
+    args->query->radius = r;
+    return true; // the sphere shrank
+  }
+  return false;
+}
+}
+
+std::int64_t Visibility::NearestTriangle(const Vec3& p, double radius,
+  const std::function<double(std::uint32_t)>& distance, bool shrink) const
+{
+  if (this->Empty())
+  {
+    return -1;
+  }
+  const Vec3 c = p - this->Impl->Origin;
+  RTCPointQuery query;
+  query.x = static_cast<float>(c.x);
+  query.y = static_cast<float>(c.y);
+  query.z = static_cast<float>(c.z);
+  query.time = 0.f;
+  query.radius = std::isfinite(radius) ? static_cast<float>(radius + this->Epsilon)
+                                       : std::numeric_limits<float>::infinity();
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  NearestQuery user{ &this->Impl->GeometryToTriangle, &distance, std::numeric_limits<double>::infinity(), -1,
+    this->Epsilon, shrink };
+  rtcPointQuery(this->Impl->Scene, &query, &context, &NearestInSphere, &user);
+  return user.Best <= radius ? user.Triangle : -1;
+}
+
 void Visibility::OccludersInSphere(
   const Vec3& centre, double radius, std::vector<std::uint32_t>& triangles) const
 {

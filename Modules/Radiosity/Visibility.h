@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -55,6 +56,16 @@ public:
   void OccludersInSphere(
     const Vec3& centre, double radius, std::vector<std::uint32_t>& triangles) const;
 
+  /**
+   * The triangle t (scene index) that minimises `distance(t)` among those
+   * within `radius` of p, -1 when none: an Embree point query over the BVH,
+   * whose sphere shrinks to the best distance so far when `shrink` is set
+   * (then `distance` must be at least the Euclidean distance from p to t;
+   * infinity excludes t). Ties go to the lowest index, as a loop over the
+   * triangles would. Thread-safe.
+   */
+  std::int64_t NearestTriangle(const Vec3& p, double radius,
+    const std::function<double(std::uint32_t)>& distance, bool shrink) const;
   /// Nearest hit of a ray, for primary rays of images; returns false on a miss.
   /// Only meaningful when built over every triangle (see `AllTriangles`).
   bool Intersect(const Vec3& origin, const Vec3& direction, double& t, unsigned& triangle,

@@ -11,7 +11,6 @@ using namespace radiosity;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 /// Area-to-area form factor from rectangle R1 to polygon P by Gauss-Legendre
 /// integration of the exact point-to-polygon factor over R1 (receiver side,
@@ -119,4 +118,39 @@ TEST(FormFactor, DiscApproximationConvergesFarAway)
   const double exact = PointToPolygonFormFactor(Vec3(0.0), Vec3(0, 0, 1), tri, 3);
   const double disc = DiscFormFactor(Vec3(0.0), Vec3(0, 0, 1), c, Vec3(0, 0, -1), area);
   EXPECT_NEAR(disc, exact, 1e-3 * exact);
+}
+
+TEST(FormFactor, PolygonsOfManyVertices)
+{
+  // A polygon of more than 8 vertices used to get a form factor of 0. The
+  // 720-gon whole must match the coaxial disc's closed form as its fan does.
+  const double r = 0.7, h = 0.3;
+  const int sides = 720;
+  std::vector<Vec3> poly;
+  for (int k = 0; k < sides; ++k)
+  {
+    const double a = -2 * Pi * k / sides;
+    poly.emplace_back(r * std::cos(a), r * std::sin(a), h);
+  }
+  const Vec3 up(0, 0, 1);
+  EXPECT_NEAR(PointToPolygonFormFactor(Vec3(0.0), up, poly.data(), poly.size()),
+    closedform::PointToCoaxialDisc(r, h), 2e-5);
+  EXPECT_NEAR(glm::dot(up, PointToPolygonVectorFormFactor(Vec3(0.0), poly.data(), poly.size(), &up)),
+    closedform::PointToCoaxialDisc(r, h), 2e-5);
+  // Horizon clipped: a receiver tilted by 60 degrees sees part of the disc
+  // below its tangent plane; the whole polygon and its fan of triangles
+  // (each clipped on its own, 3 vertices) must agree.
+  const Vec3 tilted = glm::normalize(Vec3(std::sin(Pi / 3), 0, std::cos(Pi / 3)));
+  double fan = 0.0;
+  for (int k = 0; k < sides; ++k)
+  {
+    const Vec3 tri[3] = { Vec3(0, 0, h), poly[k], poly[(k + 1) % sides] };
+    fan += PointToPolygonFormFactor(Vec3(0.0), tilted, tri, 3);
+  }
+  const double whole = PointToPolygonFormFactor(Vec3(0.0), tilted, poly.data(), poly.size());
+  EXPECT_GT(fan, 0.1);
+  EXPECT_NEAR(whole, fan, 1e-12);
+  EXPECT_NEAR(glm::dot(tilted,
+                PointToPolygonVectorFormFactor(Vec3(0.0), poly.data(), poly.size(), &tilted)),
+    fan, 1e-12);
 }

@@ -3,6 +3,7 @@
 // triangle counts with and without discontinuities, the interpolants against
 // the point samples, the refusal of a progressive input, and abort.
 #include "vtkCallbackCommand.h"
+#include "vtkExecutive.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
@@ -278,8 +279,15 @@ int TestDiscontinuityMeshFilter(int, char*[])
   onError->SetCallback(ErrorCatcher::Callback);
   onError->SetClientData(&catcher);
   dm->AddObserver(vtkCommand::ErrorEvent, onError);
+  // The request fails (0): the executive reports it once.
+  ErrorCatcher failed;
+  vtkNew<vtkCallbackCommand> onFailure;
+  onFailure->SetCallback(ErrorCatcher::Callback);
+  onFailure->SetClientData(&failed);
+  dm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onFailure);
   dm->Update();
   ok &= Check(catcher.Errors == 1, "one error for a progressive input");
+  ok &= Check(failed.Errors == 1, "the failed request is reported by the executive");
   ok &= Check(dm->GetLastError().find("no hierarchical radiosity solution") != std::string::npos &&
       dm->GetLastError().find("Method Hierarchical") != std::string::npos,
     "error message: " + dm->GetLastError());

@@ -22,6 +22,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkExecutive.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -130,6 +131,7 @@ int TestFaceClusterHierarchyFilter(int argc, char* argv[])
   vtkNew<vtkTest::ErrorObserver> observer;
   vtkNew<vtkFaceClusterHierarchyFilter> refused;
   refused->AddObserver(vtkCommand::ErrorEvent, observer);
+  refused->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, observer); // the failed request
   refused->SetInputData(bad);
   refused->Update();
   ok &= Check(observer->GetError() && refused->GetLastError().find("Reflectance") != std::string::npos &&
