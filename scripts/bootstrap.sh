@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages the project needs (see shared DESIGN.md), only those missing.
+# Installs the Debian packages the project needs (see shared DESIGN.md), only those missing:
+# assimp-testmodels is the real-world corpus test's input, clang and its runtime the fuzz build's.
 # Idempotent and quick when everything is already there.
 set -euo pipefail
 
@@ -13,6 +14,7 @@ PACKAGES=(
   mpi-default-dev libglew-dev libgl-dev libx11-dev libexpat1-dev
   libdouble-conversion-dev liblz4-dev liblzma-dev libjpeg-dev libtiff-dev
   libpng-dev zlib1g-dev libutfcpp-dev libpython3-dev
+  assimp-testmodels clang libclang-rt-14-dev
 )
 
 missing=()

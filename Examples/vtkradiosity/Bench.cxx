@@ -116,7 +116,12 @@ void AddCurvePoint(vtkTable* table, double time, double rms, double worst)
 
 int RunBench(const std::string& outputDir, bool quick)
 {
-  mkdir(outputDir.c_str(), 0755);
+  std::string error;
+  if (!MakeDirectories(outputDir, error))
+  {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
   const std::vector<Setting> settings = quick
     ? std::vector<Setting>{ { "coarse", 1.0 / 8, 1e-2 }, { "default", 1.0 / 16, 1e-3 } }
     : std::vector<Setting>{ { "coarse", 1.0 / 8, 1e-2 }, { "default", 1.0 / 16, 1e-3 },
@@ -276,7 +281,6 @@ int RunBench(const std::string& outputDir, bool quick)
     }
     md << "\n";
     }
-    std::string error;
     if (!WriteFileAtomically(outputDir + "/" + standard.Name + ".csv", csv.str(), error))
     {
       std::cerr << "bench: " << error << "\n";
@@ -325,7 +329,6 @@ int RunBench(const std::string& outputDir, bool quick)
     }
     std::cout << "bench: " << standard.Name << " done\n";
   }
-  std::string error;
   if (!WriteFileAtomically(outputDir + "/README.md", md.str(), error))
   {
     std::cerr << "bench: " << error << "\n";

@@ -29,6 +29,7 @@
 #include "Radiosity/DiscontinuityMesher.h"
 #include "Radiosity/HierarchicalRadiosity.h"
 #include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/MemoryBudget.h"
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
 #include "Radiosity/SystemInfo.h"
@@ -84,18 +85,21 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   if (meshing)
   {
     meshFilter->Update();
-    if (!meshFilter->GetLastError().empty())
-    {
-      throw BadInput(meshFilter->GetLastError());
-    }
+    ThrowFilterError(meshFilter->GetLastError()); // a meshing failure is internal (exit 1)
   }
   bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
   const DiscontinuityMesh& mesh = meshFilter->GetMesh();
+  if (meshing && mesh.LeavesTriangulationFailed > 0)
+  {
+    std::cerr << "warning: " << mesh.LeavesTriangulationFailed
+              << " leaves could not be triangulated with their discontinuities and are meshed as the "
+                 "leaf alone\n";
+  }
   const SolutionMesh& leaves = *filter->GetSolution();
   vtkPolyData* solved = meshing ? meshFilter->GetOutput() : filter->GetOutput();
   if (!filter->GetHierarchicalSolution())
   {
-    throw BadInput("the hierarchical solve produced no solution");
+    throw std::runtime_error("the hierarchical solve produced no solution");
   }
   const HierarchicalRadiosity& solver = *filter->GetHierarchicalSolution();
   const HierarchicalOptions& options = solver.Options();
@@ -177,6 +181,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       { "discontinuities_per_leaf", meshFilter->GetMaxDiscontinuitiesPerLeaf() },
       { "min_discontinuity_weight", meshFilter->GetMinDiscontinuityWeight() },
       { "conforming_boundaries", meshFilter->GetConformingBoundaries() } };
+    report["parameters"]["memory_budget_bytes"] = ResolveMemoryBudget(args.MaxMemory * 1e9);
     report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
       { "objects", scene.ObjectNames.size() }, { "emitters", scene.NumberOfEmitters() },
       { "emitted_power_W", stats.EmittedPowerW }, { "warnings", warnings },
@@ -186,7 +191,8 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
     report["solution"] = { { "stop", ToString(stats.Stop) }, { "iterations", stats.Iterations },
       { "leaves", stats.Elements }, { "nodes", solver.Mesh().Elements().size() },
       { "links", stats.Links }, { "partial_links", stats.PartialLinks },
-      { "hidden_links", stats.HiddenLinks }, { "rays", stats.RaysCast },
+      { "hidden_links", stats.HiddenLinks }, { "links_with_blockers_cut", stats.LinksWithBlockersCut },
+      { "rays", stats.RaysCast },
       { "relative_unshot_power",
         stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0 },
       { "absorbed_power_W", stats.AbsorbedPowerW }, { "escaped_power_W", stats.EscapedPowerW },
@@ -196,6 +202,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
     {
       report["discontinuity_mesh"] = { { "leaves_meshed", mesh.LeavesMeshed },
         { "segments_found", mesh.SegmentsFound }, { "segments_kept", mesh.SegmentsKept },
+        { "leaves_triangulation_failed", mesh.LeavesTriangulationFailed },
         { "point_samples", mesh.PointSamples }, { "points", mesh.Points.size() },
         { "triangles", mesh.Triangles.size() }, { "interpolants", mesh.Interpolants.size() },
         { "seconds", mesh.Seconds } };

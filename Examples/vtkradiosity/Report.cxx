@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -9,27 +10,42 @@ namespace radiosity
 {
 namespace cli
 {
-bool WriteFileAtomically(const std::string& file, const std::string& text, std::string& error)
+bool WriteThroughTemporary(const std::string& file, const std::string& extension,
+  const std::function<bool(const std::string& temporary)>& write, std::string& error)
 {
-  const std::string temporary = file + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out)
-    {
-      std::remove(temporary.c_str());
-      error = "cannot write " + file;
-      return false;
-    }
-  }
-  if (std::rename(temporary.c_str(), file.c_str()) != 0)
+  const std::string temporary = file + ".partial" + extension;
+  if (!write(temporary) || std::rename(temporary.c_str(), file.c_str()) != 0)
   {
     std::remove(temporary.c_str());
     error = "cannot write " + file;
     return false;
   }
   return true;
+}
+
+bool MakeDirectories(const std::string& directory, std::string& error)
+{
+  std::error_code code;
+  std::filesystem::create_directories(directory, code);
+  if (code || !std::filesystem::is_directory(directory))
+  {
+    error = "cannot create the directory " + directory + ": " +
+      (code ? code.message() : std::string("a file of that name is in the way"));
+    return false;
+  }
+  return true;
+}
+
+bool WriteFileAtomically(const std::string& file, const std::string& text, std::string& error)
+{
+  return WriteThroughTemporary(file, "",
+    [&text](const std::string& temporary) {
+      std::ofstream out(temporary, std::ios::binary);
+      out << text;
+      out.close();
+      return static_cast<bool>(out);
+    },
+    error);
 }
 
 std::string HistoryCsv(const ConvergenceHistory& history)

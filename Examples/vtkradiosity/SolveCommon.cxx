@@ -76,6 +76,20 @@ vtkSmartPointer<vtkTable> HistoryTable(const ConvergenceHistory& history)
   return table;
 }
 
+void ThrowFilterError(const std::string& message)
+{
+  if (message.empty())
+  {
+    return;
+  }
+  const std::string bad = "bad input: ";
+  if (message.compare(0, bad.size(), bad) == 0)
+  {
+    throw BadInput(message.substr(bad.size()));
+  }
+  throw std::runtime_error(message);
+}
+
 void Check(bool ok, const std::string& error)
 {
   if (!ok)
@@ -102,13 +116,17 @@ std::vector<Probe> CornellDemoProbes()
 
 void WriteVtp(vtkPolyData* data, const std::string& file)
 {
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  const std::string temporary = file + ".partial.vtp";
-  writer->SetFileName(temporary.c_str());
-  writer->SetInputData(data);
-  writer->SetDataModeToAppended();
-  Check(writer->Write() == 1 && std::rename(temporary.c_str(), file.c_str()) == 0,
-    "cannot write " + file);
+  std::string error;
+  Check(cli::WriteThroughTemporary(file, ".vtp",
+          [data](const std::string& temporary) {
+            vtkNew<vtkXMLPolyDataWriter> writer;
+            writer->SetFileName(temporary.c_str());
+            writer->SetInputData(data);
+            writer->SetDataModeToAppended();
+            return writer->Write() == 1;
+          },
+          error),
+    error);
 }
 
 /// --image through vtkRadiosityView (which draws the quadratic interpolants
@@ -136,10 +154,9 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const Soluti
   Check(view->Render(), "cannot render the solution");
   if (!args.Image.empty())
   {
-    const std::string temporary = args.Image + ".partial.png";
-    Check(view->WritePNG(temporary.c_str()) &&
-        std::rename(temporary.c_str(), args.Image.c_str()) == 0,
-      "cannot write " + args.Image);
+    Check(cli::WriteThroughTemporary(args.Image, ".png",
+            [&view](const std::string& temporary) { return view->WritePNG(temporary.c_str()); }, error),
+      error);
   }
   if (!args.Exr.empty())
   {
@@ -180,10 +197,11 @@ void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file
   chart->AddColumn("energy_balance", "|energy balance| (relative)");
   chart->AddColumn("rms_error", "RMS relative irradiance error at the probes");
   chart->AddColumn("max_rel_error", "max relative irradiance error");
-  const std::string temporary = file + ".partial.png";
-  Check(chart->WritePNG(temporary.c_str(), 900, 500) &&
-      std::rename(temporary.c_str(), file.c_str()) == 0,
-    "cannot write " + file);
+  std::string error;
+  Check(cli::WriteThroughTemporary(file, ".png",
+          [&chart](const std::string& temporary) { return chart->WritePNG(temporary.c_str(), 900, 500); },
+          error),
+    error);
 }
 
 nlohmann::json Finite(double v)
@@ -202,15 +220,13 @@ void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
   filter->SetMaxIterations(args.MaxIterations);
   filter->SetMaxTime(args.MaxTime);
   filter->SetNumberOfThreads(args.Threads);
+  filter->SetMaxMemory(args.MaxMemory);
   filter->SetErrorReference(reference.empty() ? std::vector<Probe>() : probes, reference);
   filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
   filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
   filter->Update();
   filter->GlobalWarningDisplayOn();
-  if (!filter->GetLastError().empty())
-  {
-    throw BadInput(filter->GetLastError());
-  }
+  ThrowFilterError(filter->GetLastError());
   for (const auto& w : filter->GetWarnings())
   {
     std::cerr << "warning: " << w << "\n";

@@ -45,6 +45,8 @@ struct SolveArguments
   long long MaxIterations = 200000;
   double MaxTime = 0.0;
   int Threads = 0;
+  double MaxReflectance = 0.95; ///< .mtl Kd clamped to it (SPEC, Scenes), in (0, 1)
+  double MaxMemory = 0.0; ///< GB; 0: 75% of physical memory
   std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
   std::string Reference;
   std::size_t ReferenceSamples = 16384;
@@ -77,6 +79,10 @@ struct SolveArguments
 double Since(Clock::time_point t);
 vtkSmartPointer<vtkTable> HistoryTable(const ConvergenceHistory& history);
 void Check(bool ok, const std::string& error);
+/// A filter's LastError as an exception: "bad input: ..." as BadInput (exit
+/// status 2), anything else (an internal error, out of memory) as
+/// std::runtime_error (exit status 1); nothing when empty.
+void ThrowFilterError(const std::string& message);
 std::vector<Probe> CornellDemoProbes();
 void WriteVtp(vtkPolyData* data, const std::string& file);
 void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,

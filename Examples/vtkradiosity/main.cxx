@@ -33,6 +33,7 @@
 #include "Radiosity/FaceClusterRadiosity.h"
 #include "Radiosity/MeshlessRadiosity.h"
 #include "Radiosity/ErrorMetrics.h"
+#include "Radiosity/MemoryBudget.h"
 #include "Radiosity/PathTracer.h"
 #include "Radiosity/SceneGenerators.h"
 #include "Radiosity/SystemInfo.h"
@@ -44,14 +45,21 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
+#include <new>
 #include <stdexcept>
 #include <sys/stat.h>
 
 namespace
 {
 using namespace solve;
+
+std::string StripPrefix(const std::string& text, const std::string& prefix)
+{
+  return text.compare(0, prefix.size(), prefix) == 0 ? text.substr(prefix.size()) : text;
+}
 
 int RunSolve(const SolveArguments& args)
 {
@@ -105,11 +113,18 @@ int RunSolve(const SolveArguments& args)
   {
     throw BadInput("--reference needs --probes (the points where the error is measured)");
   }
-  std::vector<std::string> loadWarnings;
-  vtkSmartPointer<vtkDataObject> input = cli::LoadScene(args.Scene, error, loadWarnings);
+  std::vector<std::string> loadWarnings, loadNotes;
+  cli::LoadOptions loadOptions;
+  loadOptions.MaxReflectance = args.MaxReflectance;
+  vtkSmartPointer<vtkDataObject> input =
+    cli::LoadScene(args.Scene, error, loadWarnings, loadNotes, loadOptions);
   if (!input)
   {
     throw BadInput(error);
+  }
+  for (const auto& n : loadNotes)
+  {
+    std::cerr << n << "\n";
   }
   for (const auto& w : loadWarnings)
   {
@@ -285,6 +300,7 @@ int RunSolve(const SolveArguments& args)
         stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0 },
       { "absorbed_power_W", stats.AbsorbedPowerW }, { "escaped_power_W", stats.EscapedPowerW },
       { "probes", probes.size() }, { "probes_gathered_off_surface", gathered } };
+    report["parameters"]["memory_budget_bytes"] = ResolveMemoryBudget(args.MaxMemory * 1e9);
     if (meshless)
     {
       // The columns of Lehtinen et al.'s Table 1.
@@ -356,6 +372,17 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--max-iterations", solve.MaxIterations)->check(CLI::NonNegativeNumber);
   solveCommand->add_option("--max-time", solve.MaxTime, "seconds")->check(CLI::NonNegativeNumber);
   solveCommand->add_option("--threads", solve.Threads)->check(CLI::Range(0, 4096));
+  solveCommand->add_option("--max-reflectance", solve.MaxReflectance,
+    "display colours (.mtl Kd) at or above it are clamped to it (default 0.95)")
+    ->check([](const std::string& v) {
+      char* end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      return *end == '\0' && x > 0 && x < 1 ? std::string() : "must be in (0, 1), not " + v;
+    });
+  solveCommand->add_option("--max-memory", solve.MaxMemory,
+    "memory budget of the solve in GB; a solve estimated or growing past it is refused "
+    "(default 0: 75% of physical memory)")
+    ->check(CLI::Range(0.0, 1e9));
   solveCommand->add_option("--output", solve.Output, "result polydata (.vtp)");
   solveCommand->add_option("--image", solve.Image, "tone-mapped PNG");
   solveCommand->add_option("--exr", solve.Exr, "linear radiance OpenEXR (half float)");
@@ -451,7 +478,8 @@ int main(int argc, char* argv[])
     }
     if (*demo)
     {
-      mkdir(outputDir.c_str(), 0755);
+      std::string error;
+      Check(cli::MakeDirectories(outputDir, error), error);
       SolveArguments d;
       d.Scene = "cornell";
       d.Output = outputDir + "/cornell.vtp";
@@ -475,12 +503,19 @@ int main(int argc, char* argv[])
   }
   catch (const BadInput& e)
   {
-    std::cerr << "error: " << e.what() << "\n";
+    // SPEC: one line, "error: bad input: FILE: what, where, the value".
+    std::cerr << "error: bad input: " << StripPrefix(e.what(), "bad input: ") << "\n";
     return 2;
+  }
+  catch (const std::bad_alloc&)
+  {
+    std::cerr << "internal error: out of memory (lower the settings, or --max-memory so that the "
+                 "estimate refuses the solve before it starts)\n";
+    return 1;
   }
   catch (const std::exception& e)
   {
-    std::cerr << "internal error: " << e.what() << "\n";
+    std::cerr << "internal error: " << StripPrefix(e.what(), "internal error: ") << "\n";
     return 1;
   }
 }
