@@ -727,6 +727,17 @@ bool CheckPly(const std::string& file, std::string& bytes, std::string& error)
   }
   const int headerLines =
     static_cast<int>(std::count(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
+  // vtkPLY reads text lines as C strings: a NUL byte ends the line early and
+  // the line then holds fewer values than were checked (a strtod(NULL) crash).
+  const std::size_t nul = bytes.find('\0');
+  if (nul < (ascii ? bytes.size() : pos))
+  {
+    const auto line = 1 + std::count(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    error = file + ": a NUL byte at offset " + std::to_string(nul) + " (line " +
+      std::to_string(line) + ") in the " + (nul < pos ? "header" : "ASCII body") +
+      " (VTK's PLY reader would end the line there)";
+    return false;
+  }
   const bool ok = ascii ? WalkAsciiPly(bytes, pos, elements, last, headerLines, why)
                         : WalkBinaryPly(bytes, pos, big, elements, last, why);
   if (!ok)

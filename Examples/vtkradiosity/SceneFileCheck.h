@@ -56,6 +56,11 @@ bool CheckLegacyVtk(const std::string& file, const std::string& bytes, std::stri
 /// compressor's best ratio, 1032:1 for zlib, 255:1 for lz4, 7000:1 for lzma).
 bool CheckXmlVtk(const std::string& file, const std::string& bytes, std::string& error);
 
+/// An ASCII number as VTK's readers read it (istream >>): an optional sign and
+/// digits, for floating-point types also a fraction and an exponent; no nan,
+/// inf or hexadecimal (the stream fails on them and leaves the rest unread).
+bool IsAsciiNumber(const std::string& token, bool integer);
+
 /// The byte count in words: "1234 bytes", "51.5 GB".
 std::string ByteSize(double bytes);
 }

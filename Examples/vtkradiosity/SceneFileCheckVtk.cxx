@@ -1,12 +1,25 @@
-// SceneFileCheck.h for VTK's own formats: legacy .vtk and XML (.vtp, .vtm...).
+// SceneFileCheck.h for legacy .vtk files (XML: SceneFileCheckXml.cxx).
+//
+// vtkDataSetReader trusts what it reads: a FIELD line without its name and
+// count, a cell whose point count runs past its section, a point id past the
+// points, a POINTS type that is no number type (a leak) all end in a crash
+// inside VTK. So the file is walked here as VTK's legacy reader will read it,
+// DATASET POLYDATA only (SPEC: scenes are polygonal data), and every count,
+// size, type and id is checked before the reader sees the file. This is a
+// validator, not a second reader: nothing is allocated for a declared count,
+// and counts are checked against the bytes left before they are walked.
 #include "SceneFileCheck.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstdint>
 #include <cmath>
-#include <iomanip>
+#include <cstdio>
 #include <cstdlib>
-#include <map>
+#include <cstring>
+#include <functional>
+#include <iomanip>
 #include <sstream>
 #include <vector>
 
@@ -22,50 +35,185 @@ std::string Upper(std::string s)
   return s;
 }
 
-// Bytes per value of a legacy data type; 0 for types of variable length.
-int LegacyTypeSize(const std::string& type)
+std::string Lower(std::string s)
 {
-  static const std::map<std::string, int> sizes = { { "bit", 1 }, { "unsigned_char", 1 },
-    { "char", 1 }, { "signed_char", 1 }, { "unsigned_short", 2 }, { "short", 2 },
-    { "unsigned_int", 4 }, { "int", 4 }, { "unsigned_long", 8 }, { "long", 8 },
-    { "vtktypeint64", 8 }, { "vtktypeuint64", 8 }, { "vtkidtype", 8 }, { "float", 4 },
-    { "double", 8 } };
-  std::string lower = type;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-    [](unsigned char c) { return std::tolower(c); });
-  const auto found = sizes.find(lower);
-  return found == sizes.end() ? 0 : found->second;
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
 }
 
-// Walks a legacy file: header lines (keywords) and the data blocks they
-// declare, skipping each block by its declared size; a count larger than what
-// is left is the error. Stops quietly at anything it does not know (the VTK
-// reader reports that itself).
+// A word of the file for a message: at most 40 characters, control bytes as '?'.
+std::string Shown(const std::string& text)
+{
+  std::string out;
+  for (unsigned char c : text.substr(0, 40))
+  {
+    out += (c < 0x20 || c >= 0x7F) ? '?' : static_cast<char>(c);
+  }
+  return text.size() > 40 ? out + "..." : out;
+}
+
+std::string Number(double v)
+{
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(0) << v;
+  return s.str();
+}
+
+// A number type of VTK's legacy reader (vtkDataReader::ReadArray): bytes per
+// binary value (vtkidtype is written as a 4-byte int), integer or not.
+struct LegacyType
+{
+  std::string Name;
+  int Size = 0;
+  bool Integer = false;
+  bool Bit = false;
+};
+
+bool FindLegacyType(const std::string& word, LegacyType& type)
+{
+  struct Entry
+  {
+    const char* Name;
+    int Size;
+    bool Integer;
+  };
+  static const Entry types[] = { { "bit", 1, true }, { "unsigned_char", 1, true },
+    { "char", 1, true }, { "signed_char", 1, true }, { "unsigned_short", 2, true },
+    { "short", 2, true }, { "unsigned_int", 4, true }, { "int", 4, true },
+    { "unsigned_long", 8, true }, { "long", 8, true }, { "vtktypeint64", 8, true },
+    { "vtktypeuint64", 8, true }, { "vtkidtype", 4, true }, { "float", 4, false },
+    { "double", 8, false } };
+  const std::string lower = Lower(word);
+  for (const Entry& e : types)
+  {
+    if (lower == e.Name)
+    {
+      type.Name = word;
+      type.Size = e.Size;
+      type.Integer = e.Integer;
+      type.Bit = lower == "bit";
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace
+
+bool IsAsciiNumber(const std::string& t, bool integer)
+{
+  std::size_t i = (!t.empty() && (t[0] == '+' || t[0] == '-')) ? 1 : 0;
+  std::size_t digits = 0;
+  while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])))
+  {
+    ++i, ++digits;
+  }
+  if (!integer && i < t.size() && t[i] == '.')
+  {
+    for (++i; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); ++i)
+    {
+      ++digits;
+    }
+  }
+  if (digits == 0)
+  {
+    return false;
+  }
+  if (!integer && i < t.size() && (t[i] == 'e' || t[i] == 'E'))
+  {
+    ++i;
+    i += (i < t.size() && (t[i] == '+' || t[i] == '-')) ? 1 : 0;
+    std::size_t exponent = 0;
+    for (; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); ++i)
+    {
+      ++exponent;
+    }
+    if (exponent == 0)
+    {
+      return false;
+    }
+  }
+  return i == t.size();
+}
+
+namespace
+{
+bool Count(const std::vector<std::string>& w, std::size_t i, double& value)
+{
+  if (i >= w.size() || w[i].empty() || w[i].size() > 18 ||
+    w[i].find_first_not_of("0123456789") != std::string::npos)
+  {
+    return false;
+  }
+  value = std::stod(w[i]);
+  return true;
+}
+
+// Walks a legacy file the way vtkPolyDataReader reads it (keywords, then the
+// data blocks they declare). Every refusal is one sentence in Error.
 class LegacyWalker
 {
 public:
-  LegacyWalker(const std::string& bytes, bool binary)
+  LegacyWalker(const std::string& bytes, bool binary, int major)
     : Bytes(bytes)
     , Binary(binary)
+    , Major(major)
   {
   }
   std::size_t Pos = 0;
   int Line = 0;
+  std::string Error;
 
+  bool Walk();
+
+private:
+  const std::string& Bytes;
+  bool Binary;
+  int Major;
+  double Points = -1; // -1 until POINTS
+  double Cells = 0;
+  std::vector<std::string> Sections; // cell sections seen
+
+  bool Fail(const std::string& message)
+  {
+    this->Error = message;
+    return false;
+  }
+  std::string At() const { return "line " + std::to_string(this->Line); }
+  // Inside an ASCII data block Line counts the lines before the value's: the
+  // header line was read whole and the line ends walked past since.
+  std::string ValueAt() const
+  {
+    return "line " + std::to_string(this->Line + (this->Binary ? 0 : 1));
+  }
+
+  // The next line, without its '\n'; false at the end of the file.
+  bool RawLine(std::string& line)
+  {
+    if (this->Pos >= this->Bytes.size())
+    {
+      return false;
+    }
+    std::size_t end = this->Bytes.find('\n', this->Pos);
+    end = end == std::string::npos ? this->Bytes.size() : end;
+    line = this->Bytes.substr(this->Pos, end - this->Pos);
+    this->Pos = std::min(end + 1, this->Bytes.size());
+    ++this->Line;
+    return true;
+  }
+
+  // The words of the next line that has any; false at the end of the file.
   bool NextLine(std::vector<std::string>& words)
   {
     words.clear();
+    std::string line;
     while (words.empty())
     {
-      if (this->Pos >= this->Bytes.size())
+      if (!this->RawLine(line))
       {
         return false;
       }
-      std::size_t end = this->Bytes.find('\n', this->Pos);
-      end = end == std::string::npos ? this->Bytes.size() : end;
-      std::istringstream s(this->Bytes.substr(this->Pos, end - this->Pos));
-      this->Pos = std::min(end + 1, this->Bytes.size());
-      ++this->Line;
+      std::istringstream s(line);
       std::string w;
       while (s >> w)
       {
@@ -75,242 +223,574 @@ public:
     return true;
   }
 
-  // Skips `values` values of `type` declared by the header line just read.
-  bool Skip(double values, const std::string& type, const std::string& what, std::string& error)
+  // Words of a keyword line: VTK reads them into 256-byte buffers.
+  bool ShortWords(const std::vector<std::string>& w)
   {
-    const int size = LegacyTypeSize(type);
-    if (size == 0)
+    for (const std::string& word : w)
     {
-      this->Stop = true; // strings and the like: variable length
-      return true;
+      if (word.size() > 255)
+      {
+        return this->Fail(this->At() + ": a word of " + std::to_string(word.size()) +
+          " characters ('" + Shown(word) + "'; VTK's legacy reader takes at most 255)");
+      }
     }
+    return true;
+  }
+
+  bool Type(const std::string& word, const std::string& what, LegacyType& type, bool integer)
+  {
+    if (!FindLegacyType(word, type))
+    {
+      return this->Fail(this->At() + ": " + what + " has the data type '" + Shown(word) +
+        "', not a number type VTK's legacy reader takes (bit, char, unsigned_char, short, "
+        "unsigned_short, int, unsigned_int, long, unsigned_long, vtktypeint64, vtktypeuint64, "
+        "vtkidtype, float, double)");
+    }
+    if (integer && (!type.Integer || type.Bit))
+    {
+      return this->Fail(this->At() + ": " + what + " has the data type '" + Shown(word) +
+        "', not an integer type (int, vtktypeint64 or vtkidtype)");
+    }
+    return true;
+  }
+
+  /// Walks `count` values of `type` declared by the line just read: their
+  /// bytes must be in the file, ASCII ones must be numbers of the type, and
+  /// `each` (when given) sees every integer value by its index.
+  bool Values(double count, const LegacyType& type, const std::string& what,
+    const std::function<bool(double, long long)>& each = nullptr)
+  {
     const double left = static_cast<double>(this->Bytes.size() - this->Pos);
-    const double need = this->Binary
-      ? (Upper(type) == "BIT" ? values / 8.0 : values * size)
-      : values * 2.0 - 1.0; // "0 0 0": two characters a value, the last one's line end aside
+    const double need = this->Binary ? (type.Bit ? std::ceil(count / 8.0) : count * type.Size)
+                                     : count * 2.0 - 1.0; // "0 0 0": a value and a blank each
     if (need > left)
     {
       std::ostringstream s;
-      s << std::fixed << std::setprecision(0) << "line " << this->Line << " declares " << what << " (" << values << " "
-        << type << " values, " << (this->Binary ? "" : "at least ") << ByteSize(need)
+      s << this->At() << " declares " << what << " (" << Number(count) << " " << type.Name
+        << " values, " << (this->Binary ? "" : "at least ") << ByteSize(need)
         << ") but the file holds " << ByteSize(left) << " after it";
-      error = s.str();
-      return false;
+      return this->Fail(s.str());
     }
     if (this->Binary)
     {
-      this->Pos += static_cast<std::size_t>(std::ceil(need));
+      const std::size_t start = this->Pos;
+      if (each)
+      {
+        for (double k = 0; k < count; ++k)
+        {
+          const char* p = this->Bytes.data() + start + static_cast<std::size_t>(k) * type.Size;
+          unsigned long long u = 0;
+          for (int b = 0; b < type.Size; ++b) // big-endian
+          {
+            u = (u << 8) | static_cast<unsigned char>(p[b]);
+          }
+          long long v = static_cast<long long>(u);
+          if (type.Size == 4 && type.Name != "unsigned_int")
+          {
+            v = static_cast<long long>(static_cast<std::int32_t>(static_cast<std::uint32_t>(u)));
+          }
+          if (!each(k, v))
+          {
+            return false;
+          }
+        }
+      }
+      // Line numbers count the text lines only (keywords), not binary blocks.
+      this->Pos += static_cast<std::size_t>(need);
       if (this->Pos < this->Bytes.size() && this->Bytes[this->Pos] == '\n')
       {
         ++this->Pos; // the line end after the block is not a line of its own
       }
       return true;
     }
-    // ASCII: skip whitespace-separated values (they may span lines).
-    for (double k = 0; k < values; ++k)
+    // ASCII: whitespace-separated values (they may span lines).
+    const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+    std::string token;
+    for (double k = 0; k < count; ++k)
     {
-      while (this->Pos < this->Bytes.size() && std::isspace(static_cast<unsigned char>(this->Bytes[this->Pos])))
+      while (this->Pos < this->Bytes.size() && space(this->Bytes[this->Pos]))
       {
         this->Line += this->Bytes[this->Pos] == '\n';
         ++this->Pos;
       }
       if (this->Pos >= this->Bytes.size())
       {
-        std::ostringstream s;
-        s << std::fixed << std::setprecision(0) << "the file ends after " << k << " of the " << values << " values of " << what;
-        error = s.str();
-        return false;
+        return this->Fail("the file ends after " + Number(k) + " of the " + Number(count) +
+          " values of " + what);
       }
-      while (this->Pos < this->Bytes.size() && !std::isspace(static_cast<unsigned char>(this->Bytes[this->Pos])))
+      const std::size_t start = this->Pos;
+      while (this->Pos < this->Bytes.size() && !space(this->Bytes[this->Pos]))
       {
         ++this->Pos;
+      }
+      token.assign(this->Bytes, start, this->Pos - start);
+      if (!IsAsciiNumber(token, type.Integer))
+      {
+        return this->Fail(this->ValueAt() + ": " + what + ": value " + Number(k + 1) + ", '" +
+          Shown(token) + "', is not " + (type.Integer ? "an integer" : "a number") + " (" +
+          type.Name + ")");
+      }
+      if (each)
+      {
+        errno = 0;
+        const long long v = std::strtoll(token.c_str(), nullptr, 10);
+        if (errno == ERANGE || !each(k, v))
+        {
+          return this->Error.empty()
+            ? this->Fail(this->ValueAt() + ": " + what + ": value " + Number(k + 1) + ", '" +
+                Shown(token) + "', is out of range")
+            : false;
+        }
       }
     }
     return true;
   }
-  bool Stop = false;
-  bool IsBinary() const { return this->Binary; }
 
-private:
-  const std::string& Bytes;
-  bool Binary;
+  // "METADATA" after an array: lines up to a blank one (component names, information keys).
+  void SkipMetadata()
+  {
+    std::string line;
+    while (this->RawLine(line) && line.find_first_not_of(" \t\r") != std::string::npos)
+    {
+    }
+  }
+
+  bool Points_(const std::vector<std::string>& w);
+  bool CellSection(const std::vector<std::string>& w);
+  bool LegacyCells(const std::string& key, double n, double size, int line);
+  bool OffsetCells(const std::string& key, double n, double size, int line);
+  bool Field(const std::vector<std::string>& w, double tuples, const std::string& section);
+  bool Attribute(const std::vector<std::string>& w, const std::string& section, double tuples,
+    bool& handled);
 };
 
-bool Count(const std::vector<std::string>& w, std::size_t i, double& value)
+bool LegacyWalker::Points_(const std::vector<std::string>& w)
 {
-  if (i >= w.size() || w[i].find_first_not_of("0123456789") != std::string::npos)
+  double n = 0;
+  LegacyType type;
+  if (w.size() != 3 || !Count(w, 1, n))
+  {
+    return this->Fail(this->At() + ": a POINTS line is 'POINTS N TYPE'");
+  }
+  if (this->Points >= 0)
+  {
+    return this->Fail(this->At() + ": a second POINTS section");
+  }
+  if (!this->Type(w[2], "POINTS", type, false))
   {
     return false;
   }
-  value = std::stod(w[i]);
+  if (type.Bit)
+  {
+    return this->Fail(this->At() + ": POINTS of type bit (coordinates are float or double)");
+  }
+  this->Points = n;
+  return this->Values(3 * n, type, Number(n) + " points");
+}
+
+bool LegacyWalker::CellSection(const std::vector<std::string>& w)
+{
+  const std::string key = Upper(w[0]);
+  double n = 0, size = 0;
+  if (w.size() != 3 || !Count(w, 1, n) || !Count(w, 2, size))
+  {
+    return this->Fail(this->At() + ": a " + key + " line is '" + key + " N SIZE'");
+  }
+  if (std::find(this->Sections.begin(), this->Sections.end(), key) != this->Sections.end())
+  {
+    return this->Fail(this->At() + ": a second " + key + " section");
+  }
+  this->Sections.push_back(key);
+  if (this->Points < 0)
+  {
+    return this->Fail(this->At() + ": " + key + " before POINTS (the cells' point ids need them)");
+  }
+  return this->Major >= 5 ? this->OffsetCells(key, n, size, this->Line)
+                          : this->LegacyCells(key, n, size, this->Line);
+}
+
+// "POLYGONS n size" then `size` ints: per cell its point count and the ids.
+// vtkCellArray::ImportLegacyFormat walks them without bounds.
+bool LegacyWalker::LegacyCells(const std::string& key, double n, double size, int line)
+{
+  LegacyType type;
+  FindLegacyType("int", type);
+  double cell = 0, next = 0;
+  const std::string header = "line " + std::to_string(line) + ": " + key;
+  const auto each = [&](double k, long long v)
+  {
+    const std::string where = this->ValueAt() + ": " + key;
+    if (k == next) // a cell's point count
+    {
+      if (cell == n)
+      {
+        return this->Fail(where + " declares " + Number(n) + " cells but its size " +
+          Number(size) + " holds more (value " + Number(k + 1) + " starts cell " +
+          Number(cell + 1) + ")");
+      }
+      if (v < 1 || static_cast<double>(v) > size - k - 1)
+      {
+        return this->Fail(where + " cell " + Number(cell) + " has " + std::to_string(v) +
+          " points but the declared size " + Number(size) + " leaves room for " +
+          Number(size - k - 1) + (v < 1 ? " (a cell has at least 1 point)" : ""));
+      }
+      next = k + 1 + static_cast<double>(v);
+      ++cell;
+      return true;
+    }
+    if (v < 0 || static_cast<double>(v) >= this->Points)
+    {
+      return this->Fail(where + " cell " + Number(cell - 1) + " has the point id " +
+        std::to_string(v) + ", out of range (" + Number(this->Points) + " points)");
+    }
+    return true;
+  };
+  if (!this->Values(size, type, Number(n) + " " + key + " (" + Number(size) + " ids)", each))
+  {
+    return false;
+  }
+  if (cell != n)
+  {
+    return this->Fail(header + " declares " + Number(n) + " cells but its size " +
+      Number(size) + " holds " + Number(cell));
+  }
+  this->Cells += n;
   return true;
 }
 
-bool WalkLegacy(LegacyWalker& walk, std::string& error)
+// VTK 5.1: "POLYGONS offsets connectivity", then OFFSETS and CONNECTIVITY arrays.
+bool LegacyWalker::OffsetCells(const std::string& key, double n, double size, int line)
+{
+  if (n < 1)
+  {
+    return true; // vtkDataReader::ReadCells reads nothing more: an empty cell array
+  }
+  const std::string where = "line " + std::to_string(line) + ": " + key;
+  std::vector<std::string> w;
+  LegacyType offsets, connectivity;
+  const auto at = [this, &key]() { return this->ValueAt() + ": " + key; };
+  if (!this->NextLine(w) || Upper(w[0]) != "OFFSETS" || w.size() != 2)
+  {
+    return this->Fail(where + " (VTK 5 cells) is not followed by an 'OFFSETS TYPE' line");
+  }
+  if (!this->ShortWords(w) || !this->Type(w[1], key + " OFFSETS", offsets, true))
+  {
+    return false;
+  }
+  long long previous = 0;
+  const auto offset = [&](double k, long long v)
+  {
+    if ((k == 0 && v != 0) || (k > 0 && v <= previous) || static_cast<double>(v) > size)
+    {
+      return this->Fail(at() + " offset " + Number(k) + " is " + std::to_string(v) +
+        (k == 0 ? " (the first offset is 0)"
+                : v <= previous ? ", not above the one before (" + std::to_string(previous) + ")"
+                                : ", beyond the " + Number(size) + " connectivity ids"));
+    }
+    previous = v;
+    return true;
+  };
+  if (!this->Values(n, offsets, Number(n) + " " + key + " offsets", offset))
+  {
+    return false;
+  }
+  if (static_cast<double>(previous) != size)
+  {
+    return this->Fail(where + " declares " + Number(size) + " connectivity ids but its last "
+      "offset is " + std::to_string(previous));
+  }
+  if (!this->NextLine(w) || Upper(w[0]) != "CONNECTIVITY" || w.size() != 2)
+  {
+    return this->Fail(where + " OFFSETS are not followed by a 'CONNECTIVITY TYPE' line");
+  }
+  if (!this->ShortWords(w) || !this->Type(w[1], key + " CONNECTIVITY", connectivity, true))
+  {
+    return false;
+  }
+  if (Lower(connectivity.Name) != Lower(offsets.Name))
+  {
+    return this->Fail(this->At() + ": " + key + " CONNECTIVITY of type " + connectivity.Name +
+      " but OFFSETS of type " + offsets.Name + " (VTK needs one type for both)");
+  }
+  const auto id = [&](double k, long long v)
+  {
+    if (v < 0 || static_cast<double>(v) >= this->Points)
+    {
+      return this->Fail(at() + " connectivity id " + Number(k) + " is " + std::to_string(v) +
+        ", out of range (" + Number(this->Points) + " points)");
+    }
+    return true;
+  };
+  if (!this->Values(size, connectivity, Number(size) + " connectivity ids", id))
+  {
+    return false;
+  }
+  this->Cells += n - 1;
+  return true;
+}
+
+// "FIELD name n" and its n arrays ("NAME components tuples type" or NULL_ARRAY);
+// `tuples` >= 0: the POINT_DATA / CELL_DATA count every array must have.
+bool LegacyWalker::Field(
+  const std::vector<std::string>& w, double tuples, const std::string& section)
+{
+  double n = 0;
+  if (w.size() != 3 || !Count(w, 2, n))
+  {
+    return this->Fail(this->At() + ": a FIELD line is 'FIELD NAME N' (a name and the number of "
+                                   "arrays), not '" + Shown(w.size() > 1 ? w[1] : w[0]) +
+      (w.size() > 1 ? "...'" : "' alone"));
+  }
+  const std::string field = "FIELD " + w[1];
+  // vtkFieldData::AllocateArrays(n) comes first: an array takes a line at least.
+  const double left = static_cast<double>(this->Bytes.size() - this->Pos);
+  if (n * 2 > left)
+  {
+    return this->Fail(this->At() + " declares " + field + " of " + Number(n) +
+      " arrays but the file holds " + ByteSize(left) + " after it");
+  }
+  for (double a = 0; a < n; ++a)
+  {
+    std::vector<std::string> array;
+    if (!this->NextLine(array))
+    {
+      return this->Fail("the file ends before array " + Number(a + 1) + " of the " + Number(n) +
+        " of " + field);
+    }
+    if (!this->ShortWords(array))
+    {
+      return false;
+    }
+    if (Upper(array[0]) == "METADATA")
+    {
+      this->SkipMetadata();
+      --a;
+      continue;
+    }
+    if (array[0] == "NULL_ARRAY" && array.size() == 1)
+    {
+      continue;
+    }
+    double components = 0, count = 0;
+    LegacyType type;
+    const std::string what = field + " array " + Shown(array[0]);
+    if (array.size() != 4 || !Count(array, 1, components) || !Count(array, 2, count))
+    {
+      return this->Fail(this->At() + ": array " + Number(a + 1) + " of " + Number(n) + " of " +
+        field + " is not 'NAME COMPONENTS TUPLES TYPE'");
+    }
+    if (components < 1)
+    {
+      return this->Fail(this->At() + ": " + what + " has 0 components");
+    }
+    if (tuples >= 0 && count != tuples)
+    {
+      return this->Fail(this->At() + ": " + what + " has " + Number(count) + " tuples but " +
+        section + " declares " + Number(tuples));
+    }
+    if (!this->Type(array[3], what, type, false) ||
+      !this->Values(components * count, type,
+        what + " (" + Number(count) + " tuples of " + Number(components) + ")"))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// One attribute of a POINT_DATA / CELL_DATA section (vtkDataReader::ReadPointData).
+bool LegacyWalker::Attribute(
+  const std::vector<std::string>& w, const std::string& section, double tuples, bool& handled)
+{
+  const std::string key = Upper(w[0]);
+  handled = true;
+  LegacyType type;
+  double components = 0;
+  std::string what = key + (w.size() > 1 ? " " + Shown(w[1]) : std::string());
+  if (key == "SCALARS")
+  {
+    components = 1;
+    if ((w.size() != 3 && w.size() != 4) || (w.size() == 4 && !Count(w, 3, components)) ||
+      components < 1)
+    {
+      return this->Fail(this->At() + ": a SCALARS line is 'SCALARS NAME TYPE [COMPONENTS]'");
+    }
+    if (!this->Type(w[2], what, type, false))
+    {
+      return false;
+    }
+    std::vector<std::string> table;
+    if (!this->NextLine(table) || Upper(table[0]) != "LOOKUP_TABLE" || table.size() != 2 ||
+      !this->ShortWords(table))
+    {
+      return this->Fail(this->At() + ": " + what + " is not followed by 'LOOKUP_TABLE NAME' "
+                                                   "(VTK needs one; 'LOOKUP_TABLE default')");
+    }
+  }
+  else if (key == "VECTORS" || key == "NORMALS" || key == "TENSORS" || key == "TENSORS6" ||
+    key == "GLOBAL_IDS" || key == "PEDIGREE_IDS" || (key == "EDGE_FLAGS" && section == "POINT_DATA"))
+  {
+    components = key == "TENSORS" ? 9 : key == "TENSORS6" ? 6 : key == "VECTORS" || key == "NORMALS" ? 3 : 1;
+    if (w.size() != 3)
+    {
+      return this->Fail(this->At() + ": a " + key + " line is '" + key + " NAME TYPE'");
+    }
+    if (!this->Type(w[2], what, type, false))
+    {
+      return false;
+    }
+  }
+  else if (key == "TEXTURE_COORDINATES")
+  {
+    if (w.size() != 4 || !Count(w, 2, components) || components < 1 || components > 3)
+    {
+      return this->Fail(this->At() + ": a TEXTURE_COORDINATES line is 'TEXTURE_COORDINATES NAME "
+                                     "DIMENSION TYPE' with a dimension of 1 to 3");
+    }
+    if (!this->Type(w[3], what, type, false))
+    {
+      return false;
+    }
+  }
+  else if (key == "COLOR_SCALARS" || key == "LOOKUP_TABLE")
+  {
+    double n = 0;
+    if (w.size() != 3 || !Count(w, 2, n) || (key == "COLOR_SCALARS" && n < 1))
+    {
+      return this->Fail(this->At() + ": a " + key + " line is '" + key + " NAME " +
+        (key == "LOOKUP_TABLE" ? "SIZE'" : "COMPONENTS'"));
+    }
+    FindLegacyType(this->Binary ? "unsigned_char" : "float", type);
+    // A lookup table is `n` RGBA colours, whatever the section's count.
+    components = key == "LOOKUP_TABLE" ? 4 : n;
+    if (key == "LOOKUP_TABLE")
+    {
+      return this->Values(4 * n, type, what + " of " + Number(n) + " colours");
+    }
+  }
+  else if (key == "FIELD")
+  {
+    return this->Field(w, tuples, section + " " + Number(tuples));
+  }
+  else
+  {
+    handled = false;
+    return true;
+  }
+  return this->Values(tuples * components, type,
+    what + ": " + Number(tuples) + " tuples of " + Number(components));
+}
+
+bool LegacyWalker::Walk()
 {
   std::vector<std::string> w;
-  double attributes = 0; // tuples of the current POINT_DATA / CELL_DATA section
-  double points = 0, cells = 0;
-  bool pointsKnown = false; // a POINTS line (structured data sets have DIMENSIONS)
-  bool cellsKnown = false; // POLYDATA and UNSTRUCTURED_GRID list their cells
-  while (!walk.Stop && walk.NextLine(w))
+  if (!this->NextLine(w))
   {
+    return this->Fail("the file ends after its header (no DATASET POLYDATA)");
+  }
+  if (!this->ShortWords(w))
+  {
+    return false;
+  }
+  if (Upper(w[0]) != "DATASET")
+  {
+    return this->Fail(this->At() + ": '" + Shown(w[0]) + "' where DATASET POLYDATA is expected "
+                                                         "(the loader reads polygonal data)");
+  }
+  if (w.size() != 2 || Upper(w[1]) != "POLYDATA")
+  {
+    return this->Fail(this->At() + ": DATASET " + Shown(w.size() > 1 ? w[1] : "") +
+      " is not polygonal data (the loader reads DATASET POLYDATA; convert with "
+      "vtkGeometryFilter)");
+  }
+  // Geometry: FIELD, POINTS and the cell sections, up to the attributes.
+  std::string section;
+  while (this->NextLine(w))
+  {
+    if (!this->ShortWords(w))
+    {
+      return false;
+    }
     const std::string key = Upper(w[0]);
-    double n = 0, m = 0;
-    std::ostringstream what;
-    what << std::fixed << std::setprecision(0);
-    if (key == "DATASET")
+    if (key == "POINT_DATA" || key == "CELL_DATA")
     {
-      cellsKnown = w.size() >= 2 && (Upper(w[1]) == "POLYDATA" || Upper(w[1]) == "UNSTRUCTURED_GRID");
-      continue;
+      section = key;
+      break;
     }
-    if (key == "DIMENSIONS" || key == "ORIGIN" || key == "SPACING" ||
-      key == "ASPECT_RATIO")
+    bool ok = true;
+    if (key == "METADATA")
     {
-      continue;
+      this->SkipMetadata();
     }
-    if (key == "POINTS" && Count(w, 1, n) && w.size() >= 3)
+    else if (key == "FIELD")
     {
-      points = n;
-      pointsKnown = true;
-      what << n << " points";
-      if (!walk.Skip(3 * n, w[2], what.str(), error))
-        return false;
+      ok = this->Field(w, -1, "");
     }
-    else if ((key == "X_COORDINATES" || key == "Y_COORDINATES" || key == "Z_COORDINATES") &&
-      Count(w, 1, n) && w.size() >= 3)
+    else if (key == "POINTS")
     {
-      what << n << " " << w[0];
-      if (!walk.Skip(n, w[2], what.str(), error))
-        return false;
+      ok = this->Points_(w);
     }
-    else if ((key == "VERTICES" || key == "LINES" || key == "POLYGONS" ||
-               key == "TRIANGLE_STRIPS" || key == "CELLS") &&
-      Count(w, 1, n) && Count(w, 2, m))
+    else if (key == "VERTICES" || key == "LINES" || key == "POLYGONS" || key == "TRIANGLE_STRIPS")
     {
-      cells = key == "CELLS" ? n : cells + n;
-      // Version 5: "POLYGONS offsets connectivity" then OFFSETS and CONNECTIVITY blocks.
-      const std::size_t keep = walk.Pos;
-      const int line = walk.Line;
-      std::vector<std::string> next;
-      if (walk.NextLine(next) && Upper(next[0]) == "OFFSETS" && next.size() >= 2)
-      {
-        what << n << " " << w[0] << " offsets";
-        if (!walk.Skip(n, next[1], what.str(), error))
-          return false;
-        if (!walk.NextLine(next) || Upper(next[0]) != "CONNECTIVITY" || next.size() < 2)
-          return true; // the reader says what is wrong
-        if (!walk.Skip(m, next[1], std::to_string(static_cast<long long>(m)) + " connectivity ids",
-              error))
-          return false;
-        continue;
-      }
-      walk.Pos = keep;
-      walk.Line = line;
-      what << n << " " << w[0] << " (" << m << " ids)";
-      if (!walk.Skip(m, "int", what.str(), error))
-        return false;
-    }
-    else if (key == "CELL_TYPES" && Count(w, 1, n))
-    {
-      what << n << " cell types";
-      if (!walk.Skip(n, "int", what.str(), error))
-        return false;
-    }
-    else if ((key == "POINT_DATA" || key == "CELL_DATA") && Count(w, 1, n))
-    {
-      const double limit = key == "POINT_DATA" ? points : cells;
-      if (n > limit && (key == "POINT_DATA" ? pointsKnown : cellsKnown))
-      {
-        std::ostringstream s;
-        s << std::fixed << std::setprecision(0) << "line " << walk.Line << ": " << w[0] << " " << n << " but the data set has " << limit
-          << (key == "POINT_DATA" ? " points" : " cells");
-        error = s.str();
-        return false;
-      }
-      attributes = n;
-    }
-    else if (key == "SCALARS" && w.size() >= 3)
-    {
-      double components = 1;
-      if (w.size() >= 4 && !Count(w, 3, components))
-        return true;
-      std::vector<std::string> next;
-      const std::size_t keep = walk.Pos;
-      const int line = walk.Line;
-      if (!walk.NextLine(next) || Upper(next[0]) != "LOOKUP_TABLE")
-      {
-        walk.Pos = keep; // LOOKUP_TABLE is optional
-        walk.Line = line;
-      }
-      what << "SCALARS " << w[1] << ": " << attributes << " tuples of " << components;
-      if (!walk.Skip(attributes * components, w[2], what.str(), error))
-        return false;
-    }
-    else if (key == "LOOKUP_TABLE" && Count(w, 2, n))
-    {
-      what << "LOOKUP_TABLE " << w[1] << " of " << n << " colours";
-      if (!walk.Skip(4 * n, walk.IsBinary() ? "unsigned_char" : "float", what.str(), error))
-        return false;
-    }
-    else if (key == "COLOR_SCALARS" && Count(w, 2, n))
-    {
-      what << "COLOR_SCALARS " << w[1] << ": " << attributes << " tuples of " << n;
-      if (!walk.Skip(attributes * n, walk.IsBinary() ? "unsigned_char" : "float", what.str(), error))
-        return false;
-    }
-    else if ((key == "VECTORS" || key == "NORMALS" || key == "TENSORS" || key == "TENSORS6") &&
-      w.size() >= 3)
-    {
-      const double components = key == "TENSORS" ? 9 : key == "TENSORS6" ? 6 : 3;
-      what << w[0] << " " << w[1] << ": " << attributes << " tuples";
-      if (!walk.Skip(attributes * components, w[2], what.str(), error))
-        return false;
-    }
-    else if ((key == "TEXTURE_COORDINATES" || key == "TCOORDS") && Count(w, 2, n) &&
-      w.size() >= 4)
-    {
-      what << w[0] << " " << w[1] << ": " << attributes << " tuples of " << n;
-      if (!walk.Skip(attributes * n, w[3], what.str(), error))
-        return false;
-    }
-    else if ((key == "GLOBAL_IDS" || key == "PEDIGREE_IDS") && w.size() >= 3)
-    {
-      what << w[0] << " " << w[1] << ": " << attributes << " ids";
-      if (!walk.Skip(attributes, w[2], what.str(), error))
-        return false;
-    }
-    else if (key == "FIELD" && Count(w, 2, n))
-    {
-      for (double a = 0; a < n && !walk.Stop; ++a)
-      {
-        std::vector<std::string> array;
-        double components = 0, tuples = 0;
-        if (!walk.NextLine(array))
-          return true;
-        if (Upper(array[0]) == "METADATA")
-        {
-          --a;
-          continue;
-        }
-        if (!Count(array, 1, components) || !Count(array, 2, tuples) || array.size() < 4)
-          return true;
-        std::ostringstream array_what;
-        array_what << std::fixed << std::setprecision(0);
-        array_what << "field array " << array[0] << ": " << tuples << " tuples of " << components;
-        if (!walk.Skip(components * tuples, array[3], array_what.str(), error))
-          return false;
-      }
-    }
-    else if (key == "METADATA" || key == "INFORMATION" || key == "NAME" || key == "DATA" ||
-      key == "COMPONENT_NAMES")
-    {
-      continue; // metadata lines: no counts that allocate
+      ok = this->CellSection(w);
     }
     else
     {
-      return true; // unknown to this check: the reader will say
+      return this->Fail(this->At() + ": unknown keyword '" + Shown(w[0]) +
+        "' in DATASET POLYDATA (VTK's legacy reader takes FIELD, POINTS, VERTICES, LINES, "
+        "POLYGONS, TRIANGLE_STRIPS, POINT_DATA and CELL_DATA)");
     }
+    if (!ok)
+    {
+      return false;
+    }
+  }
+  // Attributes: POINT_DATA n / CELL_DATA n sections up to the end of the file.
+  double tuples = 0;
+  while (!section.empty())
+  {
+    double n = 0;
+    const double expected = section == "POINT_DATA" ? std::max(this->Points, 0.0) : this->Cells;
+    if (w.size() != 2 || !Count(w, 1, n))
+    {
+      return this->Fail(this->At() + ": a " + section + " line is '" + section + " N'");
+    }
+    if (n != expected)
+    {
+      return this->Fail(this->At() + ": " + section + " " + Number(n) + " but the data set has " +
+        Number(expected) + (section == "POINT_DATA" ? " points" : " cells"));
+    }
+    tuples = n;
+    std::string next;
+    while (next.empty() && this->NextLine(w))
+    {
+      if (!this->ShortWords(w))
+      {
+        return false;
+      }
+      const std::string key = Upper(w[0]);
+      bool handled = false;
+      if (key == "POINT_DATA" || key == "CELL_DATA")
+      {
+        next = key;
+      }
+      else if (key == "METADATA")
+      {
+        this->SkipMetadata();
+      }
+      else if (!this->Attribute(w, section, tuples, handled))
+      {
+        return false;
+      }
+      else if (!handled)
+      {
+        return this->Fail(this->At() + ": unknown keyword '" + Shown(w[0]) + "' in " + section +
+          " (VTK's legacy reader takes SCALARS, COLOR_SCALARS, LOOKUP_TABLE, VECTORS, NORMALS, "
+          "TEXTURE_COORDINATES, TENSORS, TENSORS6, GLOBAL_IDS, PEDIGREE_IDS, " +
+          (section == "POINT_DATA" ? "EDGE_FLAGS, " : "") + "FIELD, POINT_DATA and CELL_DATA)");
+      }
+    }
+    section = next;
   }
   return true;
 }
@@ -318,15 +798,20 @@ bool WalkLegacy(LegacyWalker& walk, std::string& error)
 
 bool CheckLegacyVtk(const std::string& file, const std::string& bytes, std::string& error)
 {
-  LegacyWalker header(bytes, false);
-  std::vector<std::string> w;
   const std::string magic = "# vtk DataFile Version";
   if (bytes.compare(0, magic.size(), magic) != 0)
   {
     const std::size_t end = std::min(bytes.find('\n'), std::size_t(40));
     error = file + ": not a legacy VTK file (the first line is '" +
-      bytes.substr(0, std::min(end, bytes.size())) + "', not '" + magic + " N.N')";
+      Shown(bytes.substr(0, std::min(end, bytes.size()))) + "', not '" + magic + " N.N')";
     return false;
+  }
+  // VTK reads the version with sscanf("%d.%d"); without one it reads legacy cells.
+  int major = 0, minor = 0;
+  const std::string first = bytes.substr(magic.size(), 64);
+  if (std::sscanf(first.c_str(), "%d.%d", &major, &minor) != 2)
+  {
+    major = 0;
   }
   // Line 1 the magic, line 2 a title (anything, possibly empty), line 3 the format.
   std::size_t pos = 0;
@@ -340,132 +825,25 @@ bool CheckLegacyVtk(const std::string& file, const std::string& bytes, std::stri
     }
     pos = end + 1;
   }
-  header.Pos = pos;
-  header.Line = 2;
-  if (!header.NextLine(w) || (Upper(w[0]) != "ASCII" && Upper(w[0]) != "BINARY"))
+  std::istringstream format(bytes.substr(pos, bytes.find('\n', pos) - pos));
+  std::string word;
+  format >> word;
+  if (Upper(word) != "ASCII" && Upper(word) != "BINARY")
   {
-    error = file + ": line 3 of a legacy VTK file must be ASCII or BINARY, not '" +
-      (w.empty() ? std::string() : w[0]) + "'";
+    error = file + ": line 3 of a legacy VTK file must be ASCII or BINARY, not '" + Shown(word) +
+      "'";
     return false;
   }
-  LegacyWalker walk(bytes, Upper(w[0]) == "BINARY");
-  walk.Pos = header.Pos;
-  walk.Line = header.Line;
-  std::string why;
-  if (!WalkLegacy(walk, why))
+  const std::size_t end = bytes.find('\n', pos);
+  LegacyWalker walk(bytes, Upper(word) == "BINARY", major);
+  walk.Pos = end == std::string::npos ? bytes.size() : end + 1;
+  walk.Line = 3;
+  if (!walk.Walk())
   {
-    error = file + ": " + why;
+    error = file + ": " + walk.Error;
     return false;
   }
   return true;
-}
-namespace
-{
-// The value of attribute `name` in the tag that starts at `tag` (up to its '>').
-bool Attribute(const std::string& bytes, std::size_t tag, const std::string& name,
-  std::string& value)
-{
-  const std::size_t close = bytes.find('>', tag);
-  std::size_t at = bytes.find(" " + name + "=", tag);
-  if (at == std::string::npos || at > close)
-  {
-    at = bytes.find("\t" + name + "=", tag);
-    if (at == std::string::npos || at > close)
-      return false;
-  }
-  at += name.size() + 2;
-  if (at >= bytes.size() || (bytes[at] != '"' && bytes[at] != '\''))
-    return false;
-  const std::size_t end = bytes.find(bytes[at], at + 1);
-  if (end == std::string::npos)
-    return false;
-  value = bytes.substr(at + 1, end - at - 1);
-  return true;
-}
-
-bool CheckXml(const std::string& file, const std::string& bytes, int depth, std::string& error)
-{
-  std::size_t start = 0;
-  if (bytes.compare(0, 3, "\xEF\xBB\xBF") == 0)
-    start = 3;
-  start = bytes.find_first_not_of(" \t\r\n", start);
-  if (start == std::string::npos || bytes[start] != '<')
-  {
-    error = file + ": not an XML file (it does not start with '<')";
-    return false;
-  }
-  // The data may be compressed: a count can then exceed the file's bytes by
-  // the compressor's best ratio (runs of one value), and no more.
-  const std::size_t root = bytes.find("<VTKFile");
-  double ratio = 1;
-  std::string compressor;
-  if (root != std::string::npos && Attribute(bytes, root, "compressor", compressor))
-  {
-    ratio = compressor.find("LZ4") != std::string::npos ? 255
-      : compressor.find("LZMA") != std::string::npos   ? 7000
-                                                        : 1032;
-  }
-  // Raw appended data is binary: attributes are only looked for before it.
-  const std::size_t end = std::min(bytes.find("<AppendedData"), bytes.size());
-  const double limit = ratio * static_cast<double>(bytes.size());
-  for (const char* name : { "NumberOfPoints", "NumberOfCells", "NumberOfVerts", "NumberOfLines",
-         "NumberOfStrips", "NumberOfPolys", "NumberOfTuples" })
-  {
-    const std::string key = std::string(" ") + name + "=";
-    for (std::size_t at = bytes.find(key); at < end; at = bytes.find(key, at + 1))
-    {
-      std::string value;
-      const std::size_t tag = bytes.rfind('<', at);
-      if (!Attribute(bytes, tag, name, value))
-        continue;
-      const double per = std::string(name) == "NumberOfPoints" ? 3 : 1;
-      char* stop = nullptr;
-      const double n = std::strtod(value.c_str(), &stop);
-      if (*stop != '\0' || !(n >= 0))
-      {
-        error = file + ": " + name + "=\"" + value + "\" (byte " + std::to_string(at + 1) +
-          ") is not a count";
-        return false;
-      }
-      if (n * per > limit)
-      {
-        std::ostringstream s;
-        s << file << ": " << name << "=\"" << value << "\" (byte " << at + 1 << ") needs at least "
-          << ByteSize(n * per / ratio) << (ratio > 1 ? " compressed (" + compressor + ")" : "")
-          << " but the file holds " << bytes.size() << " bytes";
-        error = s.str();
-        return false;
-      }
-    }
-  }
-  // A multiblock file names its pieces: they are checked too.
-  const std::string dir = file.find('/') == std::string::npos ? ""
-                                                              : file.substr(0, file.rfind('/') + 1);
-  for (std::size_t at = bytes.find("<DataSet"); at < end; at = bytes.find("<DataSet", at + 1))
-  {
-    std::string piece;
-    if (!Attribute(bytes, at, "file", piece) || piece.empty())
-      continue;
-    const std::string path = piece[0] == '/' ? piece : dir + piece;
-    std::string pieceBytes;
-    if (depth > 8)
-    {
-      error = file + ": data sets nested deeper than 8 files";
-      return false;
-    }
-    if (!ReadFileBytes(path, pieceBytes, error) || !CheckXml(path, pieceBytes, depth + 1, error))
-    {
-      error = file + ": block file '" + piece + "': " + error;
-      return false;
-    }
-  }
-  return true;
-}
-} // namespace
-
-bool CheckXmlVtk(const std::string& file, const std::string& bytes, std::string& error)
-{
-  return CheckXml(file, bytes, 0, error);
 }
 } // namespace cli
 } // namespace radiosity
