@@ -503,6 +503,156 @@ TEST_F(SceneFiles, XmlCountBeyondTheFileAndUnknownTypesRefused)
   EXPECT_NE(error.find("missing.ply: cannot be opened"), std::string::npos) << error;
 }
 
+namespace
+{
+// The fuzzer's legacy findings (Testing/Fuzz/regressions/vtk-*): the loader
+// reads DATASET POLYDATA only, and walks it as vtkPolyDataReader will.
+const char* LegacyHeader = "# vtk DataFile Version 3.0\nt\nASCII\n";
+
+std::string BigEndian32(std::int32_t v)
+{
+  std::string s(4, '\0');
+  for (int i = 0; i < 4; ++i)
+  {
+    s[i] = static_cast<char>((static_cast<std::uint32_t>(v) >> (24 - 8 * i)) & 0xFF);
+  }
+  return s;
+}
+} // namespace
+
+TEST_F(SceneFiles, LegacyVtkOtherThanPolyDataRefused)
+{
+  const std::string h = LegacyHeader;
+  ExpectRefused(this->Write("grid.vtk", h + "DATASET STRUCTURED_GRID\nDIMENSIONS 2 2 1\n"),
+    { "line 4: DATASET STRUCTURED_GRID is not polygonal data (the loader reads DATASET "
+      "POLYDATA; convert with vtkGeometryFilter)" });
+  ExpectRefused(this->Write("ugrid.vtk",
+                  h + "DATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n"
+                      "CELLS 1 1\n4 0 1 2 3\n"),
+    { "line 4: DATASET UNSTRUCTURED_GRID is not polygonal data" });
+  ExpectRefused(this->Write("field.vtk", h + "FIELD f 1\na 1 2 float\n1 2\n"),
+    { "line 4: 'FIELD' where DATASET POLYDATA is expected" });
+}
+
+TEST_F(SceneFiles, LegacyVtkCellsMustFitTheirSizeAndPoints)
+{
+  const std::string h = std::string(LegacyHeader) +
+    "DATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
+  ExpectRefused(this->Write("size.vtk", h + "POLYGONS 1 4\n100000 0 1 2\n"),
+    { "line 8: POLYGONS cell 0 has 100000 points but the declared size 4 leaves room for 3" });
+  ExpectRefused(this->Write("index.vtk", h + "POLYGONS 1 5\n4 0 1 2 100000000\n"),
+    { "line 8: POLYGONS cell 0 has the point id 100000000, out of range (3 points)" });
+  ExpectRefused(this->Write("count.vtk", h + "POLYGONS 2 4\n3 0 1 2\n"),
+    { "line 7: POLYGONS declares 2 cells but its size 4 holds 1" });
+  ExpectRefused(this->Write("cells.vtk", h + "CELL_DATA 1\nSCALARS a float\nLOOKUP_TABLE default\n1\n"),
+    { "line 7: CELL_DATA 1 but the data set has 0 cells" });
+  // Binary: big-endian ints.
+  const std::string binary = "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET POLYDATA\n"
+                             "POINTS 3 float\n" + std::string(36, '\0') + "\nPOLYGONS 1 4\n";
+  ExpectRefused(this->Write("binary.vtk",
+                  binary + BigEndian32(3) + BigEndian32(0) + BigEndian32(1) + BigEndian32(7) + "\n"),
+    { "POLYGONS cell 0 has the point id 7, out of range (3 points)" });
+  ExpectRefused(this->Write("negative.vtk",
+                  binary + BigEndian32(-5) + BigEndian32(0) + BigEndian32(1) + BigEndian32(2) + "\n"),
+    { "POLYGONS cell 0 has -5 points" });
+  std::string error;
+  std::vector<std::string> warnings;
+  EXPECT_TRUE(LoadScene(this->Write("good.vtk", binary + BigEndian32(3) + BigEndian32(0) +
+                                       BigEndian32(1) + BigEndian32(2) + "\n"),
+    error, warnings))
+    << error;
+  // VTK 5.1: OFFSETS and CONNECTIVITY.
+  const std::string v5 = "# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\n"
+                         "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 2 3\n";
+  EXPECT_TRUE(LoadScene(this->Write("v5.vtk", v5 + "OFFSETS vtktypeint64\n0 3\n"
+                                                   "CONNECTIVITY vtktypeint64\n0 1 2\n"),
+    error, warnings))
+    << error;
+  ExpectRefused(this->Write("v5off.vtk", v5 + "OFFSETS vtktypeint64\n0 4\nCONNECTIVITY "
+                                              "vtktypeint64\n0 1 2\n"),
+    { "line 9: POLYGONS offset 1 is 4, beyond the 3 connectivity ids" });
+  ExpectRefused(this->Write("v5id.vtk", v5 + "OFFSETS vtktypeint64\n0 3\nCONNECTIVITY "
+                                             "vtktypeint64\n0 1 3\n"),
+    { "line 11: POLYGONS connectivity id 2 is 3, out of range (3 points)" });
+  ExpectRefused(this->Write("v5type.vtk", v5 + "OFFSETS float\n0 3\n"),
+    { "line 8: POLYGONS OFFSETS has the data type 'float', not an integer type" });
+}
+
+TEST_F(SceneFiles, LegacyVtkTypesFieldsAndKeywordsChecked)
+{
+  const std::string h = std::string(LegacyHeader) + "DATASET POLYDATA\n";
+  const std::string tri = h + "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\n";
+  ExpectRefused(this->Write("variant.vtk", h + "POINTS 1 variant\n0 0 0\n"),
+    { "line 5: POINTS has the data type 'variant', not a number type" });
+  ExpectRefused(this->Write("field.vtk", h + "FIELD\n"),
+    { "line 5: a FIELD line is 'FIELD NAME N'", "'FIELD' alone" });
+  ExpectRefused(this->Write("arrays.vtk", h + "FIELD f 1\n"),
+    { "FIELD f of 1 arrays but the file holds 0 bytes after it" });
+  ExpectRefused(this->Write("noarray.vtk", h + "FIELD f 2\na 1 1 float\n1\n\n\n"),
+    { "the file ends before array 2 of the 2 of FIELD f" });
+  ExpectRefused(this->Write("tuples.vtk", tri + "CELL_DATA 1\nFIELD f 1\nEmission 3 2 float\n1 1 1 1 1 1\n"),
+    { "line 11: FIELD f array Emission has 2 tuples but CELL_DATA 1 declares 1" });
+  ExpectRefused(this->Write("lut.vtk", tri + "CELL_DATA 1\nSCALARS Emission float 3\n1 1 1\n"),
+    { "line 10: SCALARS Emission is not followed by 'LOOKUP_TABLE NAME'" });
+  ExpectRefused(this->Write("keyword.vtk", tri + "XYZ\n"),
+    { "line 9: unknown keyword 'XYZ' in DATASET POLYDATA" });
+  ExpectRefused(this->Write("attribute.vtk", tri + "CELL_DATA 1\nCOLORS c float\n"),
+    { "line 10: unknown keyword 'COLORS' in CELL_DATA" });
+  ExpectRefused(this->Write("points.vtk", tri + "POINT_DATA 2\n"),
+    { "line 9: POINT_DATA 2 but the data set has 3 points" });
+  ExpectRefused(this->Write("nan.vtk", h + "POINTS 1 float\n0 nan 0\n"),
+    { "line 6: 1 points: value 2, 'nan', is not a number (float)" });
+  ExpectRefused(this->Write("value.vtk", tri + "CELL_DATA 1\nVECTORS v double\n1 2 3F3\n"),
+    { "line 11: VECTORS v: 1 tuples of 3: value 3, '3F3', is not a number (double)" });
+}
+
+// vtkPLY reads ASCII lines as C strings: a NUL ends a line early.
+TEST_F(SceneFiles, PlyNulByteRefused)
+{
+  std::string ply = TwoTrianglesPly;
+  ply[ply.find("1 0 0")] = '\0';
+  ExpectRefused(this->Write("nul.ply", ply), { "a NUL byte at offset", "(line 11) in the ASCII body" });
+}
+
+// vtkXMLPolyDataReader crashes on ASCII values that do not parse and leaks
+// on Points without 3 components (Testing/Fuzz/regressions/vtp-*).
+TEST_F(SceneFiles, XmlArraysCheckedAgainstThePiece)
+{
+  const auto vtp = [](const std::string& points, const std::string& cellData,
+                     const std::string& connectivity, const std::string& offsets)
+  {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\">\n"
+           "<PolyData><Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\">\n<Points>" +
+      points + "</Points>\n<CellData>" + cellData + "</CellData>\n<Polys>\n" +
+      "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">" + connectivity +
+      "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">" + offsets +
+      "</DataArray>\n</Polys></Piece></PolyData></VTKFile>\n";
+  };
+  const std::string points =
+    "<DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0</DataArray>";
+  const std::string emission =
+    "<DataArray type=\"Float64\" Name=\"Emission\" NumberOfComponents=\"3\" format=\"ascii\">";
+  std::string error;
+  std::vector<std::string> warnings;
+  EXPECT_TRUE(LoadScene(this->Write("good.vtp", vtp(points, emission + "1 1 1</DataArray>", "0 1 2", "3")),
+    error, warnings))
+    << error;
+  ExpectRefused(this->Write("value.vtp", vtp(points, emission + "3 3F3</DataArray>", "0 1 2", "3")),
+    { "line 5: CellData DataArray 'Emission': value 2, '3F3', is not a number (Float64)" });
+  ExpectRefused(this->Write("few.vtp", vtp(points, emission + "1 1</DataArray>", "0 1 2", "3")),
+    { "line 5: CellData DataArray 'Emission' holds 2 values but 1 cells x 3 need 3" });
+  ExpectRefused(this->Write("one.vtp",
+                  vtp("<DataArray type=\"Float64\" format=\"ascii\">0 0 0</DataArray>", "", "0 1 2", "3")),
+    { "line 4: Points DataArray has 1 component (no NumberOfComponents); points have "
+      "NumberOfComponents=\"3\"" });
+  ExpectRefused(this->Write("id.vtp", vtp(points, "", "0 1 5", "3")),
+    { "Polys DataArray 'connectivity': value 3, '5', is out of range (3 points)" });
+  ExpectRefused(this->Write("offset.vtp", vtp(points, "", "0 1 2", "4")),
+    { "Polys (1 cells): the last offset is 4 but the connectivity holds 3 ids" });
+  ExpectRefused(this->Write("broken.vtp", "<VTKFile><PolyData></VTKFile>\n"),
+    { "not well-formed XML at byte" });
+}
+
 // ---------------------------------------------------------------------- EXR
 
 using Exr = TempDir;

@@ -620,10 +620,11 @@ bool LegacyWalker::Attribute(
       return false;
     }
     std::vector<std::string> table;
+    const std::string at = this->At();
     if (!this->NextLine(table) || Upper(table[0]) != "LOOKUP_TABLE" || table.size() != 2 ||
       !this->ShortWords(table))
     {
-      return this->Fail(this->At() + ": " + what + " is not followed by 'LOOKUP_TABLE NAME' "
+      return this->Fail(at + ": " + what + " is not followed by 'LOOKUP_TABLE NAME' "
                                                    "(VTK needs one; 'LOOKUP_TABLE default')");
     }
   }
