@@ -3,13 +3,7 @@
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
-function(expect_exit code)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (NOT rc EQUAL code)
-    message(FATAL_ERROR "expected exit ${code}, got ${rc}: ${ARGN}\n${out}\n${err}")
-  endif ()
-  set(last_stderr "${err}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/CliTestSupport.cmake")
 
 expect_exit(0 "${PROGRAM}" solve "${DATA}/room.obj" --tolerance 1e-2
   --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/values.csv"
@@ -295,12 +289,7 @@ expect_exit(2 "${PROGRAM}" solve "${DATA}/white.obj" --max-reflectance 1 --outpu
 function(expect_refusal file pattern)
   expect_exit(2 "${PROGRAM}" solve "${file}" --output "${WORK}/bad_loader.vtp"
     --report "${WORK}/bad_loader.json")
-  string(REPLACE ";" "," plain "${last_stderr}") # a list counts its ';' as separators
-  string(REGEX MATCHALL "(^|\n)error:[^\n]*" errors "${plain}")
-  list(LENGTH errors n)
-  if (NOT n EQUAL 1 OR NOT last_stderr MATCHES "error: bad input: [^\n]*${pattern}")
-    message(FATAL_ERROR "${file}: expected one 'error: bad input: ...${pattern}' line: ${last_stderr}")
-  endif ()
+  expect_one_error("error: bad input: [^\n]*${pattern}")
   if (EXISTS "${WORK}/bad_loader.vtp" OR EXISTS "${WORK}/bad_loader.json")
     message(FATAL_ERROR "${file}: refused but wrote an output")
   endif ()

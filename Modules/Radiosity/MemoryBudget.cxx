@@ -26,32 +26,34 @@ double ResolveMemoryBudget(double budget)
   return budget > 0 ? budget : DefaultMemoryBudgetBytes();
 }
 
-std::string FormatBytes(double bytes)
+namespace
 {
-  const char* units[] = { "bytes", "kB", "MB", "GB", "TB", "PB", "EB" };
+/// `value` in steps of 1000 named by `names` (names[0] for below 1000),
+/// three significant digits past the first step.
+std::string InThousands(double value, const char* const* names, int count)
+{
   int u = 0;
-  while (bytes >= 1000.0 && u < 6)
+  while (value >= 1000.0 && u + 1 < count)
   {
-    bytes /= 1000.0;
+    value /= 1000.0;
     ++u;
   }
   char text[64];
-  std::snprintf(text, sizeof text, u == 0 ? "%.0f %s" : "%.3g %s", bytes, units[u]);
+  std::snprintf(text, sizeof text, u == 0 ? "%.0f%s" : "%.3g%s", value, names[u]);
   return text;
+}
+}
+
+std::string FormatBytes(double bytes)
+{
+  const char* units[] = { " bytes", " kB", " MB", " GB", " TB", " PB", " EB" };
+  return InThousands(bytes, units, 7);
 }
 
 std::string FormatCount(double count)
 {
   const char* words[] = { "", " thousand", " million", " billion", " trillion" };
-  int u = 0;
-  while (count >= 1000.0 && u < 4)
-  {
-    count /= 1000.0;
-    ++u;
-  }
-  char text[64];
-  std::snprintf(text, sizeof text, u == 0 ? "%.0f%s" : "%.3g%s", count, words[u]);
-  return text;
+  return InThousands(count, words, 5);
 }
 
 void CheckMemoryBudget(

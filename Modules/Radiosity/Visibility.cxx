@@ -30,6 +30,8 @@ struct Visibility::Internals
   std::vector<unsigned> GeometryToTriangle; // Embree primitive id -> scene triangle
   Vec3 Origin{ 0.0 }; // scene centre: float coordinates relative to it lose less
   mutable std::atomic<std::size_t> Rays{ 0 };
+  /// An Embree point query of the sphere (centre, radius) in the BVH's frame.
+  RTCPointQuery PointQuery(const Vec3& centre, float radius) const;
 };
 
 Visibility::Visibility(const Scene& scene, const std::vector<unsigned char>& canOcclude)
@@ -284,6 +286,18 @@ bool NearestInSphere(RTCPointQueryFunctionArguments* args)
 }
 }
 
+RTCPointQuery Visibility::Internals::PointQuery(const Vec3& centre, float radius) const
+{
+  const Vec3 c = centre - this->Origin; // the BVH's float coordinates are relative to it
+  RTCPointQuery query;
+  query.x = static_cast<float>(c.x);
+  query.y = static_cast<float>(c.y);
+  query.z = static_cast<float>(c.z);
+  query.time = 0.f;
+  query.radius = radius;
+  return query;
+}
+
 std::int64_t Visibility::NearestTriangle(const Vec3& p, double radius,
   const std::function<double(std::uint32_t)>& distance, bool shrink) const
 {
@@ -291,14 +305,9 @@ std::int64_t Visibility::NearestTriangle(const Vec3& p, double radius,
   {
     return -1;
   }
-  const Vec3 c = p - this->Impl->Origin;
-  RTCPointQuery query;
-  query.x = static_cast<float>(c.x);
-  query.y = static_cast<float>(c.y);
-  query.z = static_cast<float>(c.z);
-  query.time = 0.f;
-  query.radius = std::isfinite(radius) ? static_cast<float>(radius + this->Epsilon)
-                                       : std::numeric_limits<float>::infinity();
+  RTCPointQuery query = this->Impl->PointQuery(p, std::isfinite(radius)
+      ? static_cast<float>(radius + this->Epsilon)
+      : std::numeric_limits<float>::infinity());
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   NearestQuery user{ &this->Impl->GeometryToTriangle, &distance, std::numeric_limits<double>::infinity(), -1,
@@ -314,13 +323,7 @@ void Visibility::OccludersInSphere(
   {
     return;
   }
-  const Vec3 c = centre - this->Impl->Origin;
-  RTCPointQuery query;
-  query.x = static_cast<float>(c.x);
-  query.y = static_cast<float>(c.y);
-  query.z = static_cast<float>(c.z);
-  query.time = 0.f;
-  query.radius = static_cast<float>(radius * (1.0 + 1e-6) + this->Epsilon);
+  RTCPointQuery query = this->Impl->PointQuery(centre, static_cast<float>(radius * (1.0 + 1e-6) + this->Epsilon));
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   SphereQuery user{ &this->Impl->GeometryToTriangle, &triangles };

@@ -144,7 +144,7 @@ TEST(MemoryBudget, SampledFacingPairsWithinATenthOfAPercent)
 TEST(MemoryBudget, HierarchicalSphereOf20kTrianglesIsRefusedAtOnce)
 {
   // Used to grow past 24 GB and be killed: 20,480 triangles all facing each
-  // other make 420 million initial links (about 40 GB). With the budget of a
+  // other make 419 million initial links (about 47 GB). With the budget of a
   // 24 GB machine (18 GB) the constructor refuses before allocating them.
   const Scene sphere = MakeSphereInterior(1.0, 5, 0.9, RGB(10.0));
   ASSERT_EQ(sphere.Triangles.size(), 20480u);
