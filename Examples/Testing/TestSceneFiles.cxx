@@ -391,6 +391,16 @@ TEST_F(SceneFiles, PlyNulByteRefused)
   ExpectRefused(this->Write("nul.ply", ply), { "a NUL byte at offset", "(line 11) in the ASCII body" });
 }
 
+// vtkPLY's ply_close frees the property table of every element, and one
+// declared without properties crashes it (Testing/Fuzz/regressions/
+// ply-binary-element-without-properties-bad-free).
+TEST_F(SceneFiles, PlyElementWithoutPropertiesRefused)
+{
+  std::string ply = TwoTrianglesPly;
+  ply.insert(ply.find("end_header"), "element material 1\n");
+  ExpectRefused(this->Write("bare.ply", ply), { "bare.ply: header line 9: element 'material' has no property" });
+}
+
 // vtkXMLPolyDataReader crashes on ASCII values that do not parse and leaks
 // on Points without 3 components (Testing/Fuzz/regressions/vtp-*).
 TEST_F(SceneFiles, XmlArraysCheckedAgainstThePiece)

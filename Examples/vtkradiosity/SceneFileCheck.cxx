@@ -362,6 +362,14 @@ bool CheckPlyLayout(const std::vector<PlyElement>& elements, std::size_t& last,
   for (std::size_t i = 0; i < elements.size(); ++i)
   {
     const PlyElement& e = elements[i];
+    if (e.Properties.empty())
+    {
+      // vtkPLY's ply_close frees the property table of every element: one
+      // without properties has none, and the free crashes (found by fuzzing).
+      error = "header line " + std::to_string(e.Line) + ": element '" + Shown(e.Name) +
+        "' has no property";
+      return false;
+    }
     int& seen = e.Name == "vertex" ? vertex : face;
     if (e.Name == "vertex" || e.Name == "face")
     {
