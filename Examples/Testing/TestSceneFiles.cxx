@@ -193,7 +193,7 @@ TEST_F(SceneFiles, PlyBadHeadersAndIndicesRefused)
   ExpectRefused(variant("short.ply", "element face 2", "element face 3"),
     { "declares 7 element lines (4 vertices, 3 faces) but the file holds only 6 lines" });
   ExpectRefused(variant("blank.ply", "3 0 1 2\n", "\n3 0 1 2\n"), { "holds 0 values" });
-  ExpectRefused(variant("order.ply", "element vertex 4", "element edge 1\nelement vertex 4"),
+  ExpectRefused(variant("order.ply", "element vertex 4", "element edge 1\nproperty int a\nelement vertex 4"),
     { "element 'edge' comes before" });
   ExpectRefused(variant("orphan.ply", "format ascii 1.0\n", "format ascii 1.0\nproperty int q\n"),
     { "property before any element" });
