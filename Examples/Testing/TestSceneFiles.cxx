@@ -438,4 +438,12 @@ TEST_F(SceneFiles, XmlArraysCheckedAgainstThePiece)
     { "Polys (1 cells): the last offset is 4 but the connectivity holds 3 ids" });
   ExpectRefused(this->Write("broken.vtp", "<VTKFile><PolyData></VTKFile>\n"),
     { "not well-formed XML at byte" });
+  // An array in no format VTK knows is left unread, then dereferenced
+  // (Testing/Fuzz/regressions/vtp-array-of-unknown-format).
+  ExpectRefused(this->Write("format.vtp",
+                  vtp(points,
+                    "<DataArray type=\"Float64\" Name=\"Emission\" NumberOfComponents=\"3\" "
+                    "format=\"asci\">1 1 1</DataArray>",
+                    "0 1 2", "3")),
+    { "line 5: CellData DataArray 'Emission' has format=\"asci\", not ascii, binary or appended" });
 }

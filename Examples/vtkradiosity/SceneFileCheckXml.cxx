@@ -185,6 +185,20 @@ protected:
       this->Fail(where + " has NumberOfComponents=\"" + Shown(components) + "\", not a count of 1 or more");
       return;
     }
+    // vtkXMLDataReader reads an array only in a format it knows; another (or
+    // none) leaves the array unread and then dereferenced (found by fuzzing).
+    const std::string formatName = format ? format : "";
+    if (formatName != "ascii" && formatName != "binary" && formatName != "appended")
+    {
+      this->Fail(where + (format ? " has format=\"" + Shown(formatName) + "\"" : std::string(" has no format")) +
+        ", not ascii, binary or appended");
+      return;
+    }
+    if (formatName == "appended" && !Find(atts, "offset"))
+    {
+      this->Fail(where + " is appended but has no offset");
+      return;
+    }
     if (tuples && !ParseCount(tuples, this->Tuples))
     {
       this->Fail(where + " has NumberOfTuples=\"" + Shown(tuples) + "\", not a count");
