@@ -114,6 +114,18 @@ const char* ExtensionOf(Format f)
   return "bin";
 }
 
+/// A property of the code under test that every input must keep: a finding
+/// (printed, then abort, which libFuzzer reports as a crash) when it fails.
+#define CHECK(condition, message)                                                                  \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::cerr << "FuzzSceneLoading: " << (message) << "\n";                                      \
+      std::abort();                                                                                \
+    }                                                                                              \
+  } while (false)
+
 void WriteFile(const std::string& path, const char* data, std::size_t size)
 {
   FILE* f = std::fopen(path.c_str(), "wb");
@@ -233,12 +245,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   vtkSmartPointer<vtkDataObject> input = radiosity::cli::LoadScene(file, error, warnings);
   if (!input)
   {
-    if (error.empty())
-    {
-      // The contract: null comes with a reason (SceneLoader.h).
-      std::cerr << "FuzzSceneLoading: LoadScene returned null without an error message\n";
-      std::abort();
-    }
+    // The contract: null comes with a reason (SceneLoader.h).
+    CHECK(!error.empty(), "LoadScene returned null without an error message");
     Report("refused by LoadScene", error);
     return 0;
   }

@@ -137,5 +137,9 @@ int TestRadiosityFilterFailures(int, char*[])
   ok &= Check(probe->GetExecutive()->Update() == 0, "a NaN Level was not refused");
   ok &= Check(Contains(probe->GetLastError(), "point 0") && Contains(probe->GetLastError(), "Level nan"),
     "Shepard probe message '" + probe->GetLastError() + "'");
-  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+  if (!ok)
+  {
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
 }
