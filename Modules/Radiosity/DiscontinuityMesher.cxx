@@ -408,225 +408,227 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
   const DiscontinuityMeshOptions& options, const ProgressCallback& progress)
 {
   const Stopwatch clock;
-  const auto threads = LimitThreads(options.Threads);
-  DiscontinuityMesh out;
-  const ElementMesh& mesh = s.Mesh();
-  const Scene& scene = s.GetScene();
-  const std::vector<std::uint32_t> leaves = mesh.Leaves();
-  double brightest = 0.0;
-  for (const Material& m : scene.Materials)
-  {
-    brightest = std::max(brightest, MaxComponent(m.Emission));
-  }
-  const double minWeight = options.MinWeight * brightest;
-  const EdgeTopology topology(scene);
-  auto report = [&](const char* phase, double fraction) {
-    if (!progress)
+  // The thread limit applies to this solve alone (a task arena of its own).
+  return RunWithThreads(options.Threads, [&]() -> DiscontinuityMesh {
+    DiscontinuityMesh out;
+    const ElementMesh& mesh = s.Mesh();
+    const Scene& scene = s.GetScene();
+    const std::vector<std::uint32_t> leaves = mesh.Leaves();
+    double brightest = 0.0;
+    for (const Material& m : scene.Materials)
     {
-      return true;
+      brightest = std::max(brightest, MaxComponent(m.Emission));
     }
-    ProgressStatus status;
-    status.Phase = phase;
-    status.Fraction = fraction;
-    return progress(status);
-  };
-
-  // Phase 1: discontinuities and triangulations, per leaf.
-  std::vector<LeafWork> work(leaves.size());
-  std::vector<std::size_t> found(leaves.size(), 0), kept(leaves.size(), 0);
-  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
-    const std::uint32_t leaf = leaves[i];
-    const TriangleCorners corners = s.Corners(leaf);
-    std::vector<std::array<Vec3, 2>> segments;
-    if (options.Discontinuities)
-    {
-      segments = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
-      kept[i] = segments.size();
-    }
-    work[i].Mesh = segments.empty()
-      ? PlanarTriangulation{ { corners[0], corners[1], corners[2] }, { { 0u, 1u, 2u } } }
-      : TriangulateWithConstraints(corners, segments);
-    work[i].Segments = std::move(segments);
-  });
-  if (options.Conforming)
-  {
-    out.LeavesConformed = ConformBoundaries(s, leaves, work);
-  }
-  if (!report("meshing", 0.3))
-  {
-    return out;
-  }
-
-  // Phase 2: sample keys. Every sample on a leaf's boundary (corners, edge
-  // midpoints, vertices of neighbours inserted by the conforming step) is
-  // shared by position between the leaves that meet there: computed once, and
-  // neighbouring interpolants agree along their common edges.
-  const double quantum = 1e-9 * std::max(s.Analysis().Diagonal, 1e-300);
-  // The key is the position and the surface's normal: a point on a contact
-  // line belongs to both surfaces, with a different irradiance on each.
-  using SampleKey = std::array<std::int64_t, 6>;
-  struct PositionHash
-  {
-    std::size_t operator()(const SampleKey& k) const
-    {
-      std::size_t h = 0;
-      for (std::int64_t v : k)
+    const double minWeight = options.MinWeight * brightest;
+    const EdgeTopology topology(scene);
+    auto report = [&](const char* phase, double fraction) {
+      if (!progress)
       {
-        h = h * 1000003u ^ static_cast<std::size_t>(v);
+        return true;
       }
-      return h;
-    }
-  };
-  std::unordered_map<SampleKey, std::uint32_t, PositionHash> sharedIndex;
-  std::vector<Vec3> sharedPoints;
-  std::vector<std::uint32_t> sharedOwner; ///< the leaf whose links evaluate it
-  for (std::size_t i = 0; i < leaves.size(); ++i)
-  {
-    LeafWork& w = work[i];
-    const TriangleCorners corners = s.Corners(leaves[i]);
-    const double tolerance = 1e-7 * mesh.LongestEdge(leaves[i]);
-    out.SegmentsFound += found[i];
-    out.SegmentsKept += kept[i];
-    out.LeavesMeshed += kept[i] > 0;
-    out.LeavesTriangulationFailed += w.Mesh.ConstraintsDropped;
-    const Vec3& normal = mesh[leaves[i]].Normal;
-    auto shared = [&](const Vec3& x) {
-      const SampleKey key = { std::llround(x.x / quantum), std::llround(x.y / quantum),
-        std::llround(x.z / quantum), std::llround(normal.x * 1e6), std::llround(normal.y * 1e6),
-        std::llround(normal.z * 1e6) };
-      auto it = sharedIndex.find(key);
-      if (it == sharedIndex.end())
-      {
-        it = sharedIndex.emplace(key, static_cast<std::uint32_t>(sharedPoints.size())).first;
-        sharedPoints.push_back(x);
-        sharedOwner.push_back(static_cast<std::uint32_t>(i));
-      }
-      return SampleRef{ true, it->second };
+      ProgressStatus status;
+      status.Phase = phase;
+      status.Fraction = fraction;
+      return progress(status);
     };
-    // The leaf edge a point lies on, or -1.
-    auto edgeOf = [&](const Vec3& x) {
-      for (int k = 0; k < 3; ++k)
+
+    // Phase 1: discontinuities and triangulations, per leaf.
+    std::vector<LeafWork> work(leaves.size());
+    std::vector<std::size_t> found(leaves.size(), 0), kept(leaves.size(), 0);
+    tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+      const std::uint32_t leaf = leaves[i];
+      const TriangleCorners corners = s.Corners(leaf);
+      std::vector<std::array<Vec3, 2>> segments;
+      if (options.Discontinuities)
       {
-        bool inside = false;
-        if (EdgeDistance(x, corners[k], corners[(k + 1) % 3], inside, 0.0) < tolerance)
+        segments = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
+        kept[i] = segments.size();
+      }
+      work[i].Mesh = segments.empty()
+        ? PlanarTriangulation{ { corners[0], corners[1], corners[2] }, { { 0u, 1u, 2u } } }
+        : TriangulateWithConstraints(corners, segments);
+      work[i].Segments = std::move(segments);
+    });
+    if (options.Conforming)
+    {
+      out.LeavesConformed = ConformBoundaries(s, leaves, work);
+    }
+    if (!report("meshing", 0.3))
+    {
+      return out;
+    }
+
+    // Phase 2: sample keys. Every sample on a leaf's boundary (corners, edge
+    // midpoints, vertices of neighbours inserted by the conforming step) is
+    // shared by position between the leaves that meet there: computed once, and
+    // neighbouring interpolants agree along their common edges.
+    const double quantum = 1e-9 * std::max(s.Analysis().Diagonal, 1e-300);
+    // The key is the position and the surface's normal: a point on a contact
+    // line belongs to both surfaces, with a different irradiance on each.
+    using SampleKey = std::array<std::int64_t, 6>;
+    struct PositionHash
+    {
+      std::size_t operator()(const SampleKey& k) const
+      {
+        std::size_t h = 0;
+        for (std::int64_t v : k)
         {
-          return k;
+          h = h * 1000003u ^ static_cast<std::size_t>(v);
         }
+        return h;
       }
-      return -1;
     };
-    std::vector<int> edge(w.Mesh.Points.size(), -1);
-    std::map<std::uint64_t, std::uint32_t> localMid;
-    w.VertexSamples.resize(w.Mesh.Points.size());
-    for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
+    std::unordered_map<SampleKey, std::uint32_t, PositionHash> sharedIndex;
+    std::vector<Vec3> sharedPoints;
+    std::vector<std::uint32_t> sharedOwner; ///< the leaf whose links evaluate it
+    for (std::size_t i = 0; i < leaves.size(); ++i)
     {
-      const Vec3& x = w.Mesh.Points[v];
-      edge[v] = v < 3 ? 3 : edgeOf(x); // corners are on two edges: 3 marks them
-      if (edge[v] >= 0)
-      {
-        w.VertexSamples[v] = shared(x);
-      }
-      else
-      {
-        w.VertexSamples[v] = { false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
-        w.LocalPoints.push_back(x);
-      }
-    }
-    for (const auto& t : w.Mesh.Triangles)
-    {
-      std::array<SampleRef, 6> r{};
-      for (int k = 0; k < 3; ++k)
-      {
-        const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-        r[2 * k] = w.VertexSamples[a];
-        const Vec3 mid = 0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]);
-        if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
+      LeafWork& w = work[i];
+      const TriangleCorners corners = s.Corners(leaves[i]);
+      const double tolerance = 1e-7 * mesh.LongestEdge(leaves[i]);
+      out.SegmentsFound += found[i];
+      out.SegmentsKept += kept[i];
+      out.LeavesMeshed += kept[i] > 0;
+      out.LeavesTriangulationFailed += w.Mesh.ConstraintsDropped;
+      const Vec3& normal = mesh[leaves[i]].Normal;
+      auto shared = [&](const Vec3& x) {
+        const SampleKey key = { std::llround(x.x / quantum), std::llround(x.y / quantum),
+          std::llround(x.z / quantum), std::llround(normal.x * 1e6), std::llround(normal.y * 1e6),
+          std::llround(normal.z * 1e6) };
+        auto it = sharedIndex.find(key);
+        if (it == sharedIndex.end())
         {
-          r[2 * k + 1] = shared(mid); // a piece of the leaf's boundary
+          it = sharedIndex.emplace(key, static_cast<std::uint32_t>(sharedPoints.size())).first;
+          sharedPoints.push_back(x);
+          sharedOwner.push_back(static_cast<std::uint32_t>(i));
+        }
+        return SampleRef{ true, it->second };
+      };
+      // The leaf edge a point lies on, or -1.
+      auto edgeOf = [&](const Vec3& x) {
+        for (int k = 0; k < 3; ++k)
+        {
+          bool inside = false;
+          if (EdgeDistance(x, corners[k], corners[(k + 1) % 3], inside, 0.0) < tolerance)
+          {
+            return k;
+          }
+        }
+        return -1;
+      };
+      std::vector<int> edge(w.Mesh.Points.size(), -1);
+      std::map<std::uint64_t, std::uint32_t> localMid;
+      w.VertexSamples.resize(w.Mesh.Points.size());
+      for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
+      {
+        const Vec3& x = w.Mesh.Points[v];
+        edge[v] = v < 3 ? 3 : edgeOf(x); // corners are on two edges: 3 marks them
+        if (edge[v] >= 0)
+        {
+          w.VertexSamples[v] = shared(x);
         }
         else
         {
-          auto it = localMid.find(EdgeKey(a, b));
-          if (it == localMid.end())
-          {
-            it = localMid.emplace(EdgeKey(a, b), static_cast<std::uint32_t>(w.LocalPoints.size())).first;
-            w.LocalPoints.push_back(mid);
-          }
-          r[2 * k + 1] = { false, it->second };
+          w.VertexSamples[v] = { false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
+          w.LocalPoints.push_back(x);
         }
       }
-      w.TriangleSamples.push_back(r);
-    }
-  }
-
-  // Phase 3: accurate point irradiance, shared samples grouped by owner leaf.
-  std::vector<std::vector<std::uint32_t>> owned(leaves.size());
-  for (std::uint32_t k = 0; k < sharedOwner.size(); ++k)
-  {
-    owned[sharedOwner[k]].push_back(k);
-  }
-  std::vector<RGB> sharedValues(sharedPoints.size());
-  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
-    if (owned[i].empty() && work[i].LocalPoints.empty())
-    {
-      return;
-    }
-    const std::vector<ChainSource> chain = GatherChain(s, leaves[i]);
-    const Vec3& n = mesh[leaves[i]].Normal;
-    const Vec3& c = mesh[leaves[i]].Centroid;
-    for (std::uint32_t k : owned[i])
-    {
-      sharedValues[k] = ChainIrradiance(chain, Inside(sharedPoints[k], c), n);
-    }
-    LeafWork& w = work[i];
-    w.LocalValues.resize(w.LocalPoints.size());
-    for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
-    {
-      w.LocalValues[k] = ChainIrradiance(chain, Inside(w.LocalPoints[k], c), n);
-    }
-  });
-  out.PointSamples = sharedPoints.size();
-  if (!report("interpolants", 0.9))
-  {
-    return out;
-  }
-
-  // Phase 4: interpolants and the output mesh.
-  auto value = [&](const LeafWork& w, const SampleRef& r) {
-    return r.Shared ? sharedValues[r.Index] : w.LocalValues[r.Index];
-  };
-  for (std::size_t i = 0; i < leaves.size(); ++i)
-  {
-    const LeafWork& w = work[i];
-    const Element& el = mesh[leaves[i]];
-    out.PointSamples += w.LocalPoints.size();
-    const auto base = static_cast<std::uint32_t>(out.Points.size());
-    for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
-    {
-      out.Points.push_back(w.Mesh.Points[v]);
-      out.PointIrradiance.push_back(value(w, w.VertexSamples[v]));
-    }
-    for (std::size_t t = 0; t < w.Mesh.Triangles.size(); ++t)
-    {
-      const auto& tri = w.Mesh.Triangles[t];
-      Triangle cell;
-      cell.V = { base + tri[0], base + tri[1], base + tri[2] };
-      out.Triangles.push_back(cell);
-      std::array<RGB, 6> r;
-      for (int k = 0; k < 6; ++k)
+      for (const auto& t : w.Mesh.Triangles)
       {
-        r[k] = value(w, w.TriangleSamples[t][k]);
+        std::array<SampleRef, 6> r{};
+        for (int k = 0; k < 3; ++k)
+        {
+          const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+          r[2 * k] = w.VertexSamples[a];
+          const Vec3 mid = 0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]);
+          if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
+          {
+            r[2 * k + 1] = shared(mid); // a piece of the leaf's boundary
+          }
+          else
+          {
+            auto it = localMid.find(EdgeKey(a, b));
+            if (it == localMid.end())
+            {
+              it = localMid.emplace(EdgeKey(a, b), static_cast<std::uint32_t>(w.LocalPoints.size())).first;
+              w.LocalPoints.push_back(mid);
+            }
+            r[2 * k + 1] = { false, it->second };
+          }
+        }
+        w.TriangleSamples.push_back(r);
       }
-      out.Interpolants.push_back(QuadraticInterpolant::FromSamples(r));
-      out.Leaf.push_back(leaves[i]);
-      out.SourceTriangle.push_back(el.Source);
-      out.Level.push_back(el.Level);
-      out.Normals.push_back(el.Normal);
     }
-  }
-  out.Seconds = clock.Seconds();
-  report("interpolants", 1.0);
-  return out;
+
+    // Phase 3: accurate point irradiance, shared samples grouped by owner leaf.
+    std::vector<std::vector<std::uint32_t>> owned(leaves.size());
+    for (std::uint32_t k = 0; k < sharedOwner.size(); ++k)
+    {
+      owned[sharedOwner[k]].push_back(k);
+    }
+    std::vector<RGB> sharedValues(sharedPoints.size());
+    tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+      if (owned[i].empty() && work[i].LocalPoints.empty())
+      {
+        return;
+      }
+      const std::vector<ChainSource> chain = GatherChain(s, leaves[i]);
+      const Vec3& n = mesh[leaves[i]].Normal;
+      const Vec3& c = mesh[leaves[i]].Centroid;
+      for (std::uint32_t k : owned[i])
+      {
+        sharedValues[k] = ChainIrradiance(chain, Inside(sharedPoints[k], c), n);
+      }
+      LeafWork& w = work[i];
+      w.LocalValues.resize(w.LocalPoints.size());
+      for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
+      {
+        w.LocalValues[k] = ChainIrradiance(chain, Inside(w.LocalPoints[k], c), n);
+      }
+    });
+    out.PointSamples = sharedPoints.size();
+    if (!report("interpolants", 0.9))
+    {
+      return out;
+    }
+
+    // Phase 4: interpolants and the output mesh.
+    auto value = [&](const LeafWork& w, const SampleRef& r) {
+      return r.Shared ? sharedValues[r.Index] : w.LocalValues[r.Index];
+    };
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+    {
+      const LeafWork& w = work[i];
+      const Element& el = mesh[leaves[i]];
+      out.PointSamples += w.LocalPoints.size();
+      const auto base = static_cast<std::uint32_t>(out.Points.size());
+      for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
+      {
+        out.Points.push_back(w.Mesh.Points[v]);
+        out.PointIrradiance.push_back(value(w, w.VertexSamples[v]));
+      }
+      for (std::size_t t = 0; t < w.Mesh.Triangles.size(); ++t)
+      {
+        const auto& tri = w.Mesh.Triangles[t];
+        Triangle cell;
+        cell.V = { base + tri[0], base + tri[1], base + tri[2] };
+        out.Triangles.push_back(cell);
+        std::array<RGB, 6> r;
+        for (int k = 0; k < 6; ++k)
+        {
+          r[k] = value(w, w.TriangleSamples[t][k]);
+        }
+        out.Interpolants.push_back(QuadraticInterpolant::FromSamples(r));
+        out.Leaf.push_back(leaves[i]);
+        out.SourceTriangle.push_back(el.Source);
+        out.Level.push_back(el.Level);
+        out.Normals.push_back(el.Normal);
+      }
+    }
+    out.Seconds = clock.Seconds();
+    report("interpolants", 1.0);
+    return out;
+  });
 }
 
 std::vector<RGB> EvaluateInterpolants(

@@ -229,16 +229,18 @@ FaceClusterHierarchy::FaceClusterHierarchy(std::shared_ptr<const Scene> scene, s
   , Key(key)
 {
   const Stopwatch clock;
-  const auto threads = LimitThreads(options.Threads);
-  if (this->Triangles >= None / 2)
-  {
-    throw SceneError("Face cluster hierarchy: " + std::to_string(this->Triangles) +
-      " triangles exceed the 2^31 the hierarchy can index.");
-  }
-  this->Contract(options, progress);
-  this->LayOut();
-  this->ComputeBoxes(options);
-  this->Seconds = clock.Seconds();
+  // The thread limit applies to this build alone (a task arena of its own).
+  RunWithThreads(options.Threads, [&]() {
+    if (this->Triangles >= None / 2)
+    {
+      throw SceneError("Face cluster hierarchy: " + std::to_string(this->Triangles) +
+        " triangles exceed the 2^31 the hierarchy can index.");
+    }
+    this->Contract(options, progress);
+    this->LayOut();
+    this->ComputeBoxes(options);
+    this->Seconds = clock.Seconds();
+  });
 }
 
 //------------------------------------------------------------------------------

@@ -457,141 +457,143 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
   const Stopwatch clock;
-  const auto threads = LimitThreads(this->Settings.Threads);
-  const Scene& scene = this->GetScene();
-  double emitted = 0.0, brightest = 0.0;
-  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-  {
-    emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
-    brightest = std::max(brightest, Mean(scene.Materials[t].Emission));
-  }
-  stats.EmittedPowerW = emitted;
-  this->Nodes.clear();
-  this->Top.clear();
-  this->Iteration = 0;
-  if (!(emitted > 0.0))
-  {
-    stats.Stop = StopReason::NoEmitters;
-    return stats;
-  }
-  this->Epsilon = this->Settings.TransferTolerance * emitted;
-  for (std::uint32_t root : this->Clusters->Roots())
-  {
-    this->Top.push_back(this->NewElement(root, -1));
-  }
+  // The thread limit applies to this solve alone (a task arena of its own).
+  return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
+    const Scene& scene = this->GetScene();
+    double emitted = 0.0, brightest = 0.0;
+    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+    {
+      emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
+      brightest = std::max(brightest, Mean(scene.Materials[t].Emission));
+    }
+    stats.EmittedPowerW = emitted;
+    this->Nodes.clear();
+    this->Top.clear();
+    this->Iteration = 0;
+    if (!(emitted > 0.0))
+    {
+      stats.Stop = StopReason::NoEmitters;
+      return stats;
+    }
+    this->Epsilon = this->Settings.TransferTolerance * emitted;
+    for (std::uint32_t root : this->Clusters->Roots())
+    {
+      this->Top.push_back(this->NewElement(root, -1));
+    }
 
-  std::vector<double> residuals;
-  for (;;)
-  {
-    if (ReachedLimit(this->Iteration, this->Settings.MaxIterations, clock.Seconds(),
-          this->Settings.MaxTimeSeconds, stats.Stop))
+    std::vector<double> residuals;
+    for (;;)
     {
-      break;
-    }
-    for (std::int32_t i : this->Top)
-    {
-      this->Nodes[i].Shooters.clear();
-      for (std::int32_t j : this->Top)
+      if (ReachedLimit(this->Iteration, this->Settings.MaxIterations, clock.Seconds(),
+            this->Settings.MaxTimeSeconds, stats.Stop))
       {
-        this->AddShooter(i, j);
+        break;
       }
-    }
-    for (std::int32_t i : this->Top)
-    {
-      this->TransportLight(i, {});
-    }
-    double residual = 0.0;
-    for (FaceClusterElement& e : this->Nodes)
-    {
-      e.Unshot.swap(e.Next);
-      std::fill(e.Next.begin(), e.Next.end(), RGB(0.0));
-      e.UnshotMin = std::isfinite(e.NextMin) ? e.NextMin : 0.0;
-      e.UnshotMax = e.NextMax;
-      e.NextMin = std::numeric_limits<double>::infinity();
-      e.NextMax = 0.0;
-      if (e.IsLeaf())
+      for (std::int32_t i : this->Top)
       {
-        residual = std::max(residual, Magnitude(e.Unshot));
+        this->Nodes[i].Shooters.clear();
+        for (std::int32_t j : this->Top)
+        {
+          this->AddShooter(i, j);
+        }
       }
-    }
-    ++this->Iteration;
-    const double relative = residual / brightest;
-    residuals.push_back(relative);
-    ConvergenceRow row;
-    row.Iteration = this->Iteration;
-    row.TimeSeconds = clock.Seconds();
-    row.UnshotPowerW = relative * emitted; // the relative residual in power units
-    row.EnergyBalance = std::numeric_limits<double>::quiet_NaN();
-    stats.History.Rows.push_back(row);
-    if (!ReportProgress(progress, "shooting", this->Iteration, relative, this->Settings.Tolerance))
-    {
-      stats.Stop = StopReason::Aborted;
-      break;
-    }
-    if (relative < this->Settings.Tolerance)
-    {
-      stats.Stop = StopReason::Converged;
-      break;
-    }
-    // A steady geometric decay: the tail of the series is added at once.
-    const std::size_t k = residuals.size();
-    if (k >= 3 && residuals[k - 2] > 0.0 && residuals[k - 3] > 0.0)
-    {
-      const double r = residuals[k - 1] / residuals[k - 2];
-      const double previous = residuals[k - 2] / residuals[k - 3];
-      if (r < 1.0 && std::abs(r - previous) < 0.01 * r)
+      for (std::int32_t i : this->Top)
+      {
+        this->TransportLight(i, {});
+      }
+      double residual = 0.0;
+      for (FaceClusterElement& e : this->Nodes)
+      {
+        e.Unshot.swap(e.Next);
+        std::fill(e.Next.begin(), e.Next.end(), RGB(0.0));
+        e.UnshotMin = std::isfinite(e.NextMin) ? e.NextMin : 0.0;
+        e.UnshotMax = e.NextMax;
+        e.NextMin = std::numeric_limits<double>::infinity();
+        e.NextMax = 0.0;
+        if (e.IsLeaf())
+        {
+          residual = std::max(residual, Magnitude(e.Unshot));
+        }
+      }
+      ++this->Iteration;
+      const double relative = residual / brightest;
+      residuals.push_back(relative);
+      ConvergenceRow row;
+      row.Iteration = this->Iteration;
+      row.TimeSeconds = clock.Seconds();
+      row.UnshotPowerW = relative * emitted; // the relative residual in power units
+      row.EnergyBalance = std::numeric_limits<double>::quiet_NaN();
+      stats.History.Rows.push_back(row);
+      if (!ReportProgress(progress, "shooting", this->Iteration, relative, this->Settings.Tolerance))
+      {
+        stats.Stop = StopReason::Aborted;
+        break;
+      }
+      if (relative < this->Settings.Tolerance)
       {
         stats.Stop = StopReason::Converged;
         break;
       }
-    }
-  }
-  // Aitken: the increments still to come, r / (1 - r) times the last one.
-  const std::size_t k = residuals.size();
-  if (stats.Stop != StopReason::Aborted && k >= 2 && residuals[k - 2] > 0.0)
-  {
-    const double r = residuals[k - 1] / residuals[k - 2];
-    if (r > 0.0 && r < 1.0)
-    {
-      const double tail = r / (1.0 - r);
-      for (FaceClusterElement& e : this->Nodes)
+      // A steady geometric decay: the tail of the series is added at once.
+      const std::size_t k = residuals.size();
+      if (k >= 3 && residuals[k - 2] > 0.0 && residuals[k - 3] > 0.0)
       {
-        if (e.IsLeaf())
+        const double r = residuals[k - 1] / residuals[k - 2];
+        const double previous = residuals[k - 2] / residuals[k - 3];
+        if (r < 1.0 && std::abs(r - previous) < 0.01 * r)
         {
-          for (std::size_t a = 0; a < e.Irradiance.size(); ++a)
+          stats.Stop = StopReason::Converged;
+          break;
+        }
+      }
+    }
+    // Aitken: the increments still to come, r / (1 - r) times the last one.
+    const std::size_t k = residuals.size();
+    if (stats.Stop != StopReason::Aborted && k >= 2 && residuals[k - 2] > 0.0)
+    {
+      const double r = residuals[k - 1] / residuals[k - 2];
+      if (r > 0.0 && r < 1.0)
+      {
+        const double tail = r / (1.0 - r);
+        for (FaceClusterElement& e : this->Nodes)
+        {
+          if (e.IsLeaf())
           {
-            for (int c = 0; c < 3; ++c)
+            for (std::size_t a = 0; a < e.Irradiance.size(); ++a)
             {
-              e.Irradiance[a][c] += tail * e.LastIncrement[a][c];
+              for (int c = 0; c < 3; ++c)
+              {
+                e.Irradiance[a][c] += tail * e.LastIncrement[a][c];
+              }
             }
           }
         }
       }
     }
-  }
 
-  this->BoundLeafExpansions();
-  this->Stats.Elements = this->Nodes.size();
-  this->Stats.LeafElements = 0;
-  std::size_t bytes = 0;
-  for (const FaceClusterElement& e : this->Nodes)
-  {
-    this->Stats.LeafElements += e.IsLeaf() ? 1 : 0;
-    bytes += sizeof(FaceClusterElement) +
-      (e.PushE.capacity() + e.PushB.capacity() + e.PullB.capacity() + e.RadiosityDual.capacity() +
-        e.Rule.Phi.capacity() + e.Rule.Dual.capacity() + e.Rule.Weights.capacity()) * sizeof(double) +
-      (e.Rule.Points.capacity() + e.Rule.Normals.capacity()) * sizeof(Vec3) +
-      (e.Unshot.capacity() + e.Next.capacity()) * sizeof(RGB) +
-      (e.Irradiance.capacity() + e.LastIncrement.capacity()) * sizeof(IrradianceVector);
-  }
-  this->Stats.SolutionBytes = bytes;
-  this->Stats.SolveSeconds = clock.Seconds();
-  stats.Iterations = this->Iteration;
-  stats.Elements = this->Stats.LeafElements;
-  stats.Subdivisions = this->Stats.Refinements;
-  stats.Links = this->Stats.Transfers;
-  stats.SolveSeconds = this->Stats.SolveSeconds;
-  stats.PreprocessSeconds = this->Stats.HierarchySeconds;
-  return stats;
+    this->BoundLeafExpansions();
+    this->Stats.Elements = this->Nodes.size();
+    this->Stats.LeafElements = 0;
+    std::size_t bytes = 0;
+    for (const FaceClusterElement& e : this->Nodes)
+    {
+      this->Stats.LeafElements += e.IsLeaf() ? 1 : 0;
+      bytes += sizeof(FaceClusterElement) +
+        (e.PushE.capacity() + e.PushB.capacity() + e.PullB.capacity() + e.RadiosityDual.capacity() +
+          e.Rule.Phi.capacity() + e.Rule.Dual.capacity() + e.Rule.Weights.capacity()) * sizeof(double) +
+        (e.Rule.Points.capacity() + e.Rule.Normals.capacity()) * sizeof(Vec3) +
+        (e.Unshot.capacity() + e.Next.capacity()) * sizeof(RGB) +
+        (e.Irradiance.capacity() + e.LastIncrement.capacity()) * sizeof(IrradianceVector);
+    }
+    this->Stats.SolutionBytes = bytes;
+    this->Stats.SolveSeconds = clock.Seconds();
+    stats.Iterations = this->Iteration;
+    stats.Elements = this->Stats.LeafElements;
+    stats.Subdivisions = this->Stats.Refinements;
+    stats.Links = this->Stats.Transfers;
+    stats.SolveSeconds = this->Stats.SolveSeconds;
+    stats.PreprocessSeconds = this->Stats.HierarchySeconds;
+    return stats;
+  });
 }
 } // namespace radiosity

@@ -558,162 +558,164 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
   const Stopwatch start;
-  const auto threads = LimitThreads(this->Settings.Threads);
-  ElementMesh& mesh = *this->Elements;
-  stats.Occluders = this->SceneInfo.Occluders;
-  double emitted = 0.0;
-  for (std::uint32_t e : this->Roots)
-  {
-    emitted += Mean(mesh.MaterialOf(e).Emission) * mesh[e].Area;
-  }
-  stats.EmittedPowerW = emitted;
-  stats.Elements = mesh.NumberOfLeaves();
-  if (!(emitted > 0.0))
-  {
-    stats.Stop = StopReason::NoEmitters;
-    stats.SolveSeconds = start.Seconds();
-    return stats;
-  }
-  const std::unique_ptr<MeshProbeTracker> tracker = MeshProbeTracker::ForReference(mesh,
-    this->Settings.ErrorProbes, this->Settings.ErrorReference, this->SceneInfo.Diagonal);
-  stats.ErrorProbesTracked = tracker ? tracker->Tracked() : 0;
-  auto report = [&](const char* phase, long long iteration, double residual) {
-    return ReportProgress(progress, phase, iteration, residual, this->Settings.Tolerance);
-  };
-
-  std::vector<PendingLink> pending;
-  if (!report("linking", 0, 1.0))
-  {
-    stats.Stop = StopReason::Aborted;
-    stats.SolveSeconds = start.Seconds();
-    return stats;
-  }
-  this->InitialLinks(pending);
-  this->ComputeLinks(pending, stats);
-  this->IndexLinks();
-  this->Normalize();
-
-  std::vector<RGB> change;
-  double previousDelta = -1.0, previousRatio = -1.0;
-  bool extrapolated = false;
-  int round = 0;
-  stats.Stop = StopReason::IterationLimit;
-  for (long long iteration = 0;; ++iteration)
-  {
-    const double delta = this->Sweep(change);
-    const double ratio = previousDelta > 0 ? delta / previousDelta : -1.0;
-    const double remaining =
-      ratio > 0 && ratio < 1 ? delta * ratio / (1.0 - ratio) : std::max(delta, 0.0);
-    double total = 0.0, absorbed = 0.0;
-    for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
+  // The thread limit applies to this solve alone (a task arena of its own).
+  return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
+    ElementMesh& mesh = *this->Elements;
+    stats.Occluders = this->SceneInfo.Occluders;
+    double emitted = 0.0;
+    for (std::uint32_t e : this->Roots)
     {
-      if (mesh[e].IsLeaf())
-      {
-        const Material& m = mesh.MaterialOf(e);
-        total += Mean(this->NodeRadiosity[e]) * mesh[e].Area;
-        absorbed += Mean((RGB(1.0) - m.Reflectance) * this->NodeIrradiance[e]) * mesh[e].Area;
-      }
+      emitted += Mean(mesh.MaterialOf(e).Emission) * mesh[e].Area;
     }
-    this->StoreLeafIrradiance();
-
-    const double elapsed = start.Seconds();
-    ConvergenceRow row;
-    row.Iteration = iteration;
-    row.TimeSeconds = elapsed;
-    row.UnshotPowerW = remaining;
-    // Power that leaves the surfaces and is received nowhere: what escapes
-    // an open scene, and the form factor error of a closed one.
-    double received = 0.0;
-    for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
+    stats.EmittedPowerW = emitted;
+    stats.Elements = mesh.NumberOfLeaves();
+    if (!(emitted > 0.0))
     {
-      if (mesh[e].IsLeaf())
-      {
-        received += Mean(this->NodeIrradiance[e]) * mesh[e].Area;
-      }
+      stats.Stop = StopReason::NoEmitters;
+      stats.SolveSeconds = start.Seconds();
+      return stats;
     }
-    const double escaped = total - received;
-    row.EnergyBalance = (emitted - absorbed - escaped) / emitted;
-    if (tracker)
-    {
-      const ErrorFigures errors = RelativeErrors(tracker->Evaluate(), this->Settings.ErrorReference);
-      row.RmsError = errors.Rms;
-      row.MaxRelError = errors.Max;
-    }
-    stats.History.Rows.push_back(row);
-    stats.Iterations = iteration;
-    stats.UnshotPowerW = remaining;
-    stats.AbsorbedPowerW = absorbed;
-    stats.EscapedPowerW = escaped;
+    const std::unique_ptr<MeshProbeTracker> tracker = MeshProbeTracker::ForReference(mesh,
+      this->Settings.ErrorProbes, this->Settings.ErrorReference, this->SceneInfo.Diagonal);
+    stats.ErrorProbesTracked = tracker ? tracker->Tracked() : 0;
+    auto report = [&](const char* phase, long long iteration, double residual) {
+      return ReportProgress(progress, phase, iteration, residual, this->Settings.Tolerance);
+    };
 
-    const double relative = total > 0 ? remaining / total : 0.0;
-    if (!report("gathering", iteration, relative))
+    std::vector<PendingLink> pending;
+    if (!report("linking", 0, 1.0))
     {
       stats.Stop = StopReason::Aborted;
-      break;
+      stats.SolveSeconds = start.Seconds();
+      return stats;
     }
-    if (relative <= this->Settings.Tolerance && !extrapolated)
+    this->InitialLinks(pending);
+    this->ComputeLinks(pending, stats);
+    this->IndexLinks();
+    this->Normalize();
+
+    std::vector<RGB> change;
+    double previousDelta = -1.0, previousRatio = -1.0;
+    bool extrapolated = false;
+    int round = 0;
+    stats.Stop = StopReason::IterationLimit;
+    for (long long iteration = 0;; ++iteration)
     {
-      pending.clear();
-      if (round < this->Settings.MaxRefinementRounds && this->RefineLinks(pending) > 0)
-      {
-        ++round;
-        if (!report("linking", iteration, relative))
-        {
-          stats.Stop = StopReason::Aborted;
-          break;
-        }
-        this->ComputeLinks(pending, stats);
-        this->IndexLinks();
-        this->Normalize();
-        previousDelta = previousRatio = -1.0;
-        continue;
-      }
-      stats.Stop = StopReason::Converged;
-      break;
-    }
-    if (ReachedLimit(iteration, this->Settings.MaxIterations, elapsed,
-          this->Settings.MaxTimeSeconds, stats.Stop))
-    {
-      break;
-    }
-    extrapolated = false;
-    // Aitken: once the ratio is steady, add the geometric tail of the change.
-    if (ratio > 0.5 && ratio < 1.0 && previousRatio > 0 &&
-      std::fabs(ratio - previousRatio) < 0.02 * (1.0 - ratio))
-    {
-      const double gain = ratio / (1.0 - ratio);
+      const double delta = this->Sweep(change);
+      const double ratio = previousDelta > 0 ? delta / previousDelta : -1.0;
+      const double remaining =
+        ratio > 0 && ratio < 1 ? delta * ratio / (1.0 - ratio) : std::max(delta, 0.0);
+      double total = 0.0, absorbed = 0.0;
       for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
       {
         if (mesh[e].IsLeaf())
         {
-          this->NodeRadiosity[e] += gain * change[e];
+          const Material& m = mesh.MaterialOf(e);
+          total += Mean(this->NodeRadiosity[e]) * mesh[e].Area;
+          absorbed += Mean((RGB(1.0) - m.Reflectance) * this->NodeIrradiance[e]) * mesh[e].Area;
         }
       }
-      for (std::uint32_t r : this->Roots)
+      this->StoreLeafIrradiance();
+
+      const double elapsed = start.Seconds();
+      ConvergenceRow row;
+      row.Iteration = iteration;
+      row.TimeSeconds = elapsed;
+      row.UnshotPowerW = remaining;
+      // Power that leaves the surfaces and is received nowhere: what escapes
+      // an open scene, and the form factor error of a closed one.
+      double received = 0.0;
+      for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
       {
-        this->Pull(r);
+        if (mesh[e].IsLeaf())
+        {
+          received += Mean(this->NodeIrradiance[e]) * mesh[e].Area;
+        }
       }
-      extrapolated = true;
-      previousDelta = previousRatio = -1.0;
-      continue;
+      const double escaped = total - received;
+      row.EnergyBalance = (emitted - absorbed - escaped) / emitted;
+      if (tracker)
+      {
+        const ErrorFigures errors = RelativeErrors(tracker->Evaluate(), this->Settings.ErrorReference);
+        row.RmsError = errors.Rms;
+        row.MaxRelError = errors.Max;
+      }
+      stats.History.Rows.push_back(row);
+      stats.Iterations = iteration;
+      stats.UnshotPowerW = remaining;
+      stats.AbsorbedPowerW = absorbed;
+      stats.EscapedPowerW = escaped;
+
+      const double relative = total > 0 ? remaining / total : 0.0;
+      if (!report("gathering", iteration, relative))
+      {
+        stats.Stop = StopReason::Aborted;
+        break;
+      }
+      if (relative <= this->Settings.Tolerance && !extrapolated)
+      {
+        pending.clear();
+        if (round < this->Settings.MaxRefinementRounds && this->RefineLinks(pending) > 0)
+        {
+          ++round;
+          if (!report("linking", iteration, relative))
+          {
+            stats.Stop = StopReason::Aborted;
+            break;
+          }
+          this->ComputeLinks(pending, stats);
+          this->IndexLinks();
+          this->Normalize();
+          previousDelta = previousRatio = -1.0;
+          continue;
+        }
+        stats.Stop = StopReason::Converged;
+        break;
+      }
+      if (ReachedLimit(iteration, this->Settings.MaxIterations, elapsed,
+            this->Settings.MaxTimeSeconds, stats.Stop))
+      {
+        break;
+      }
+      extrapolated = false;
+      // Aitken: once the ratio is steady, add the geometric tail of the change.
+      if (ratio > 0.5 && ratio < 1.0 && previousRatio > 0 &&
+        std::fabs(ratio - previousRatio) < 0.02 * (1.0 - ratio))
+      {
+        const double gain = ratio / (1.0 - ratio);
+        for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
+        {
+          if (mesh[e].IsLeaf())
+          {
+            this->NodeRadiosity[e] += gain * change[e];
+          }
+        }
+        for (std::uint32_t r : this->Roots)
+        {
+          this->Pull(r);
+        }
+        extrapolated = true;
+        previousDelta = previousRatio = -1.0;
+        continue;
+      }
+      previousRatio = ratio;
+      previousDelta = delta;
     }
-    previousRatio = ratio;
-    previousDelta = delta;
-  }
-  stats.Elements = mesh.NumberOfLeaves();
-  stats.Links = this->LinkList.size();
-  stats.PartialLinks = 0;
-  stats.HiddenLinks = 0;
-  stats.LinksWithBlockersCut = 0;
-  for (const HierarchicalLink& l : this->LinkList)
-  {
-    stats.PartialLinks += l.Kind == HierarchicalLink::Partial;
-    stats.HiddenLinks += l.Kind == HierarchicalLink::Hidden;
-    stats.LinksWithBlockersCut += l.BlockersCut;
-  }
-  stats.Subdivisions = (mesh.Elements().size() - this->Roots.size()) / 4;
-  stats.RaysCast = this->Rays->RaysCast();
-  stats.SolveSeconds = start.Seconds();
-  return stats;
+    stats.Elements = mesh.NumberOfLeaves();
+    stats.Links = this->LinkList.size();
+    stats.PartialLinks = 0;
+    stats.HiddenLinks = 0;
+    stats.LinksWithBlockersCut = 0;
+    for (const HierarchicalLink& l : this->LinkList)
+    {
+      stats.PartialLinks += l.Kind == HierarchicalLink::Partial;
+      stats.HiddenLinks += l.Kind == HierarchicalLink::Hidden;
+      stats.LinksWithBlockersCut += l.BlockersCut;
+    }
+    stats.Subdivisions = (mesh.Elements().size() - this->Roots.size()) / 4;
+    stats.RaysCast = this->Rays->RaysCast();
+    stats.SolveSeconds = start.Seconds();
+    return stats;
+  });
 }
 } // namespace radiosity

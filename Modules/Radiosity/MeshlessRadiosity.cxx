@@ -400,128 +400,130 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
   const Stopwatch clock;
-  const auto threads = LimitThreads(this->Settings.Threads);
-  const Scene& scene = this->SourceScene;
-  double emitted = 0.0, area = 0.0;
-  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-  {
-    emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
-    area += scene.Area(t);
-  }
-  stats.EmittedPowerW = emitted;
-  if (!(emitted > 0.0))
-  {
-    stats.Stop = StopReason::NoEmitters;
-    return stats;
-  }
-  auto report = [&](const char* phase, long long iteration, double residual) {
-    return ReportProgress(progress, phase, iteration, residual, this->Settings.Tolerance);
-  };
-  if (!report("placing points", 0, 1.0))
-  {
-    stats.Stop = StopReason::Aborted;
-    return stats;
-  }
-  const double pointBound = MaxPoissonDiskPoints(scene, this->Settings.Placement);
-  CheckMemoryBudget(pointBound * BytesPerMeshlessPoint, ResolveMemoryBudget(this->Settings.MemoryBudgetBytes),
-    "meshless radiosity: up to " + FormatCount(pointBound) + " points",
-    "raise --point-radius (PointRadius) or lower --point-levels (PointLevels)");
-  this->Rays = std::make_unique<Visibility>(scene, Visibility::AllTriangles(scene));
-  // Only what can occlude casts shadows (SceneAnalysis): no rays, and no
-  // grazing-angle misses, inside a convex enclosure.
-  this->Shadows = std::make_unique<Visibility>(scene, AnalyzeScene(scene).CanOcclude);
-  this->Hierarchy = std::make_unique<PointHierarchy>(scene, this->Settings.Placement, this->Rays.get());
-  const PointHierarchy& points = *this->Hierarchy;
-  this->Touched.assign(points.Points().size(), 0);
-  this->Stats.SamplesGenerated = points.Points().size();
-  this->Stats.Levels = points.NumberOfLevels();
-  this->Stats.CoarsestSamples = points.NumberOfLevels() > 0 ? points.LevelEnd(0) : 0;
-  this->Stats.PlacementSeconds = clock.Seconds();
-  this->Solution = std::make_unique<ShepardField>(points);
-  if (points.Points().empty() || points.LevelEnd(0) == 0)
-  {
-    throw SceneError("meshless radiosity: no points could be placed on the surfaces");
-  }
-
-  if (!report("direct light", 0, 1.0))
-  {
-    stats.Stop = StopReason::Aborted;
-    return stats;
-  }
-  Bounce direct;
-  this->DirectLight(direct);
-  this->Direct = std::make_unique<ShepardField>(points);
-  this->Direct->Coefficients() = direct.Field->Coefficients();
-  this->Solution->Coefficients() = direct.Field->Coefficients();
-  this->Stats.DirectSeconds = clock.Seconds() - this->Stats.PlacementSeconds;
-  const double base = std::max(direct.Magnitude, 1e-300);
-  const double perPoint = area / static_cast<double>(points.LevelEnd(0));
-
-  auto row = [&](long long iteration, double remaining) {
-    ConvergenceRow r;
-    r.Iteration = iteration;
-    r.TimeSeconds = clock.Seconds();
-    r.UnshotPowerW = remaining * perPoint;
-    r.EnergyBalance = std::numeric_limits<double>::quiet_NaN();
-    if (!this->Settings.ErrorProbes.empty() &&
-      this->Settings.ErrorReference.size() == this->Settings.ErrorProbes.size())
+  // The thread limit applies to this solve alone (a task arena of its own).
+  return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
+    const Scene& scene = this->SourceScene;
+    double emitted = 0.0, area = 0.0;
+    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
     {
-      const ErrorFigures e = RelativeErrors(this->Evaluate(this->Settings.ErrorProbes), this->Settings.ErrorReference);
-      r.RmsError = e.Rms;
-      r.MaxRelError = e.Max;
+      emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
+      area += scene.Area(t);
     }
-    stats.History.Rows.push_back(r);
-  };
-  row(0, direct.Magnitude);
-
-  std::unique_ptr<Bounce> previous = std::make_unique<Bounce>(std::move(direct));
-  double previousRatio = -1.0;
-  stats.Stop = StopReason::IterationLimit;
-  for (int bounce = 1; bounce <= this->Settings.MaxBounces; ++bounce)
-  {
-    auto next = std::make_unique<Bounce>();
-    this->ComputeBounce(*previous->Field, *next);
-    std::vector<RGB>& b = this->Solution->Coefficients();
-    const std::vector<RGB>& add = next->Field->Coefficients();
-    const double ratio = previous->Magnitude > 0 ? next->Magnitude / previous->Magnitude : 0.0;
-    // Aitken: a steady ratio makes the rest of the series geometric.
-    const bool steady = ratio > 0.3 && ratio < 1.0 && previousRatio > 0 &&
-      std::fabs(ratio - previousRatio) < 0.01 * (1.0 - ratio);
-    const double gain = steady ? 1.0 / (1.0 - ratio) : 1.0;
-    for (std::size_t j = 0; j < b.size(); ++j)
+    stats.EmittedPowerW = emitted;
+    if (!(emitted > 0.0))
     {
-      b[j] += gain * add[j];
+      stats.Stop = StopReason::NoEmitters;
+      return stats;
     }
-    const double remaining = steady ? 0.0 : next->Magnitude * (ratio < 1 ? ratio / (1 - ratio) : 1.0);
-    row(bounce, remaining);
-    stats.Iterations = bounce;
-    const double relative = next->Magnitude / base;
-    if (!report("bounces", bounce, relative))
+    auto report = [&](const char* phase, long long iteration, double residual) {
+      return ReportProgress(progress, phase, iteration, residual, this->Settings.Tolerance);
+    };
+    if (!report("placing points", 0, 1.0))
     {
       stats.Stop = StopReason::Aborted;
-      break;
+      return stats;
     }
-    if (steady || relative <= this->Settings.Tolerance)
+    const double pointBound = MaxPoissonDiskPoints(scene, this->Settings.Placement);
+    CheckMemoryBudget(pointBound * BytesPerMeshlessPoint, ResolveMemoryBudget(this->Settings.MemoryBudgetBytes),
+      "meshless radiosity: up to " + FormatCount(pointBound) + " points",
+      "raise --point-radius (PointRadius) or lower --point-levels (PointLevels)");
+    this->Rays = std::make_unique<Visibility>(scene, Visibility::AllTriangles(scene));
+    // Only what can occlude casts shadows (SceneAnalysis): no rays, and no
+    // grazing-angle misses, inside a convex enclosure.
+    this->Shadows = std::make_unique<Visibility>(scene, AnalyzeScene(scene).CanOcclude);
+    this->Hierarchy = std::make_unique<PointHierarchy>(scene, this->Settings.Placement, this->Rays.get());
+    const PointHierarchy& points = *this->Hierarchy;
+    this->Touched.assign(points.Points().size(), 0);
+    this->Stats.SamplesGenerated = points.Points().size();
+    this->Stats.Levels = points.NumberOfLevels();
+    this->Stats.CoarsestSamples = points.NumberOfLevels() > 0 ? points.LevelEnd(0) : 0;
+    this->Stats.PlacementSeconds = clock.Seconds();
+    this->Solution = std::make_unique<ShepardField>(points);
+    if (points.Points().empty() || points.LevelEnd(0) == 0)
     {
-      stats.Stop = StopReason::Converged;
-      break;
+      throw SceneError("meshless radiosity: no points could be placed on the surfaces");
     }
-    if (this->Settings.MaxTimeSeconds > 0 && clock.Seconds() >= this->Settings.MaxTimeSeconds)
+
+    if (!report("direct light", 0, 1.0))
     {
-      stats.Stop = StopReason::TimeLimit;
-      break;
+      stats.Stop = StopReason::Aborted;
+      return stats;
     }
-    previousRatio = ratio;
-    previous = std::move(next);
-  }
-  this->Stats.BounceSeconds = clock.Seconds() - this->Stats.PlacementSeconds - this->Stats.DirectSeconds;
-  this->Stats.SamplesGatheredTo = static_cast<std::size_t>(std::count(this->Touched.begin(), this->Touched.end(), 1));
-  this->Stats.VisibilityRays = this->Rays->RaysCast() + this->Shadows->RaysCast();
-  this->Stats.MemoryBytes = points.Points().size() * (sizeof(MeshlessPoint) + 3 * sizeof(RGB) + 2);
-  stats.Elements = points.Points().size();
-  stats.RaysCast = this->Stats.VisibilityRays;
-  stats.SolveSeconds = clock.Seconds();
-  stats.PreprocessSeconds = this->Stats.PlacementSeconds;
-  return stats;
+    Bounce direct;
+    this->DirectLight(direct);
+    this->Direct = std::make_unique<ShepardField>(points);
+    this->Direct->Coefficients() = direct.Field->Coefficients();
+    this->Solution->Coefficients() = direct.Field->Coefficients();
+    this->Stats.DirectSeconds = clock.Seconds() - this->Stats.PlacementSeconds;
+    const double base = std::max(direct.Magnitude, 1e-300);
+    const double perPoint = area / static_cast<double>(points.LevelEnd(0));
+
+    auto row = [&](long long iteration, double remaining) {
+      ConvergenceRow r;
+      r.Iteration = iteration;
+      r.TimeSeconds = clock.Seconds();
+      r.UnshotPowerW = remaining * perPoint;
+      r.EnergyBalance = std::numeric_limits<double>::quiet_NaN();
+      if (!this->Settings.ErrorProbes.empty() &&
+        this->Settings.ErrorReference.size() == this->Settings.ErrorProbes.size())
+      {
+        const ErrorFigures e = RelativeErrors(this->Evaluate(this->Settings.ErrorProbes), this->Settings.ErrorReference);
+        r.RmsError = e.Rms;
+        r.MaxRelError = e.Max;
+      }
+      stats.History.Rows.push_back(r);
+    };
+    row(0, direct.Magnitude);
+
+    std::unique_ptr<Bounce> previous = std::make_unique<Bounce>(std::move(direct));
+    double previousRatio = -1.0;
+    stats.Stop = StopReason::IterationLimit;
+    for (int bounce = 1; bounce <= this->Settings.MaxBounces; ++bounce)
+    {
+      auto next = std::make_unique<Bounce>();
+      this->ComputeBounce(*previous->Field, *next);
+      std::vector<RGB>& b = this->Solution->Coefficients();
+      const std::vector<RGB>& add = next->Field->Coefficients();
+      const double ratio = previous->Magnitude > 0 ? next->Magnitude / previous->Magnitude : 0.0;
+      // Aitken: a steady ratio makes the rest of the series geometric.
+      const bool steady = ratio > 0.3 && ratio < 1.0 && previousRatio > 0 &&
+        std::fabs(ratio - previousRatio) < 0.01 * (1.0 - ratio);
+      const double gain = steady ? 1.0 / (1.0 - ratio) : 1.0;
+      for (std::size_t j = 0; j < b.size(); ++j)
+      {
+        b[j] += gain * add[j];
+      }
+      const double remaining = steady ? 0.0 : next->Magnitude * (ratio < 1 ? ratio / (1 - ratio) : 1.0);
+      row(bounce, remaining);
+      stats.Iterations = bounce;
+      const double relative = next->Magnitude / base;
+      if (!report("bounces", bounce, relative))
+      {
+        stats.Stop = StopReason::Aborted;
+        break;
+      }
+      if (steady || relative <= this->Settings.Tolerance)
+      {
+        stats.Stop = StopReason::Converged;
+        break;
+      }
+      if (this->Settings.MaxTimeSeconds > 0 && clock.Seconds() >= this->Settings.MaxTimeSeconds)
+      {
+        stats.Stop = StopReason::TimeLimit;
+        break;
+      }
+      previousRatio = ratio;
+      previous = std::move(next);
+    }
+    this->Stats.BounceSeconds = clock.Seconds() - this->Stats.PlacementSeconds - this->Stats.DirectSeconds;
+    this->Stats.SamplesGatheredTo = static_cast<std::size_t>(std::count(this->Touched.begin(), this->Touched.end(), 1));
+    this->Stats.VisibilityRays = this->Rays->RaysCast() + this->Shadows->RaysCast();
+    this->Stats.MemoryBytes = points.Points().size() * (sizeof(MeshlessPoint) + 3 * sizeof(RGB) + 2);
+    stats.Elements = points.Points().size();
+    stats.RaysCast = this->Stats.VisibilityRays;
+    stats.SolveSeconds = clock.Seconds();
+    stats.PreprocessSeconds = this->Stats.PlacementSeconds;
+    return stats;
+  });
 }
 } // namespace radiosity

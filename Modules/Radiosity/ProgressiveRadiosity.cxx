@@ -555,126 +555,128 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
   const Stopwatch start;
-  const auto threads = LimitThreads(this->Settings.Threads);
-  ElementMesh& mesh = *this->Elements;
-  stats.Occluders = this->SceneInfo.Occluders;
-  double emitted = 0.0;
-  double area = 0.0;
-  RGB rhoMean(0.0);
-  for (const Element& e : mesh.Elements())
-  {
-    if (e.IsLeaf())
+  // The thread limit applies to this solve alone (a task arena of its own).
+  return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
+    ElementMesh& mesh = *this->Elements;
+    stats.Occluders = this->SceneInfo.Occluders;
+    double emitted = 0.0;
+    double area = 0.0;
+    RGB rhoMean(0.0);
+    for (const Element& e : mesh.Elements())
     {
-      const Material& m = this->SourceScene.Materials[e.Source];
-      emitted += Mean(m.Emission) * e.Area;
-      rhoMean += m.Reflectance * e.Area;
-      area += e.Area;
-    }
-  }
-  rhoMean /= std::max(area, 1e-300);
-  stats.EmittedPowerW = emitted;
-  stats.Elements = mesh.NumberOfLeaves();
-  if (!(emitted > 0.0))
-  {
-    stats.Stop = StopReason::NoEmitters;
-    stats.SolveSeconds = start.Seconds();
-    return stats;
-  }
-  // Cohen 1988's interreflection factor R = 1 / (1 - mean reflectance).
-  const RGB interreflection = RGB(1.0) / (RGB(1.0) - rhoMean);
-
-  const std::unique_ptr<MeshProbeTracker> tracker = MeshProbeTracker::ForReference(mesh,
-    this->Settings.ErrorProbes, this->Settings.ErrorReference, this->SceneInfo.Diagonal);
-  stats.ErrorProbesTracked = tracker ? tracker->Tracked() : 0;
-  std::vector<RGB> nodePower(mesh.Elements().size(), RGB(0.0));
-  stats.Stop = StopReason::IterationLimit;
-  for (long long iteration = 0;; ++iteration)
-  {
-    // Unshot power per shooter node (Coombe 3.1: the residual is mipmapped
-    // to the shooting level and the node of highest power shoots).
-    const std::vector<std::uint32_t> leaves = mesh.Leaves();
-    Selection sel;
-    for (std::uint32_t e : leaves)
-    {
-      const Element& el = mesh[e];
-      nodePower[el.ShooterNode] += el.Unshot * el.Area;
-      sel.AbsPower += Mean(glm::abs(el.Unshot)) * el.Area;
-      sel.SignedPower += el.Unshot * el.Area;
-    }
-    // Overshooting (Feda & Purgathofer 1992): each shooter also shoots, in
-    // advance, its share rho * ambient of what the unshot power will bring it
-    // (Cohen 1988's ambient term), and the shooters are ranked by that total:
-    // a shooter left with a negative residual has already shot its future.
-    const RGB ambient =
-      this->Settings.Overshooting ? interreflection * sel.SignedPower / area : RGB(0.0);
-    for (std::uint32_t n : mesh.Shooters())
-    {
-      const RGB total = nodePower[n] + mesh.MaterialOf(n).Reflectance * ambient * mesh[n].Area;
-      const double p = std::fabs(Mean(total));
-      if (p > sel.BestPower)
+      if (e.IsLeaf())
       {
-        sel.BestPower = p;
-        sel.Best = n;
+        const Material& m = this->SourceScene.Materials[e.Source];
+        emitted += Mean(m.Emission) * e.Area;
+        rhoMean += m.Reflectance * e.Area;
+        area += e.Area;
       }
     }
-    const RGB nodeUnshot = nodePower[sel.Best] / mesh[sel.Best].Area;
-    for (std::uint32_t n : mesh.Shooters())
+    rhoMean /= std::max(area, 1e-300);
+    stats.EmittedPowerW = emitted;
+    stats.Elements = mesh.NumberOfLeaves();
+    if (!(emitted > 0.0))
     {
-      nodePower[n] = RGB(0.0);
+      stats.Stop = StopReason::NoEmitters;
+      stats.SolveSeconds = start.Seconds();
+      return stats;
     }
+    // Cohen 1988's interreflection factor R = 1 / (1 - mean reflectance).
+    const RGB interreflection = RGB(1.0) / (RGB(1.0) - rhoMean);
 
-    const double elapsed = start.Seconds();
-    ConvergenceRow row;
-    row.Iteration = iteration;
-    row.TimeSeconds = elapsed;
-    row.UnshotPowerW = sel.AbsPower;
-    const double signedUnshot = Mean(sel.SignedPower);
-    row.EnergyBalance = (emitted - this->Absorbed - this->Escaped - signedUnshot) / emitted;
-    const RGB overshoot = mesh.MaterialOf(sel.Best).Reflectance * ambient;
-    row.OvershootPowerW = Mean(glm::abs(overshoot)) * mesh[sel.Best].Area;
-    if (tracker)
+    const std::unique_ptr<MeshProbeTracker> tracker = MeshProbeTracker::ForReference(mesh,
+      this->Settings.ErrorProbes, this->Settings.ErrorReference, this->SceneInfo.Diagonal);
+    stats.ErrorProbesTracked = tracker ? tracker->Tracked() : 0;
+    std::vector<RGB> nodePower(mesh.Elements().size(), RGB(0.0));
+    stats.Stop = StopReason::IterationLimit;
+    for (long long iteration = 0;; ++iteration)
     {
-      const ErrorFigures errors = RelativeErrors(tracker->Evaluate(), this->Settings.ErrorReference);
-      row.RmsError = errors.Rms;
-      row.MaxRelError = errors.Max;
-    }
-    stats.History.Rows.push_back(row);
-    stats.Iterations = iteration;
-    stats.UnshotPowerW = sel.AbsPower;
-
-    const double relative = sel.AbsPower / emitted;
-    if (progress)
-    {
-      ProgressStatus status;
-      status.Phase = "shooting";
-      status.Iteration = iteration;
-      status.Residual = relative;
-      status.Fraction = std::clamp(
-        std::log(std::max(relative, 1e-300)) / std::log(this->Settings.Tolerance), 0.0, 1.0);
-      if (!progress(status))
+      // Unshot power per shooter node (Coombe 3.1: the residual is mipmapped
+      // to the shooting level and the node of highest power shoots).
+      const std::vector<std::uint32_t> leaves = mesh.Leaves();
+      Selection sel;
+      for (std::uint32_t e : leaves)
       {
-        stats.Stop = StopReason::Aborted;
+        const Element& el = mesh[e];
+        nodePower[el.ShooterNode] += el.Unshot * el.Area;
+        sel.AbsPower += Mean(glm::abs(el.Unshot)) * el.Area;
+        sel.SignedPower += el.Unshot * el.Area;
+      }
+      // Overshooting (Feda & Purgathofer 1992): each shooter also shoots, in
+      // advance, its share rho * ambient of what the unshot power will bring it
+      // (Cohen 1988's ambient term), and the shooters are ranked by that total:
+      // a shooter left with a negative residual has already shot its future.
+      const RGB ambient =
+        this->Settings.Overshooting ? interreflection * sel.SignedPower / area : RGB(0.0);
+      for (std::uint32_t n : mesh.Shooters())
+      {
+        const RGB total = nodePower[n] + mesh.MaterialOf(n).Reflectance * ambient * mesh[n].Area;
+        const double p = std::fabs(Mean(total));
+        if (p > sel.BestPower)
+        {
+          sel.BestPower = p;
+          sel.Best = n;
+        }
+      }
+      const RGB nodeUnshot = nodePower[sel.Best] / mesh[sel.Best].Area;
+      for (std::uint32_t n : mesh.Shooters())
+      {
+        nodePower[n] = RGB(0.0);
+      }
+
+      const double elapsed = start.Seconds();
+      ConvergenceRow row;
+      row.Iteration = iteration;
+      row.TimeSeconds = elapsed;
+      row.UnshotPowerW = sel.AbsPower;
+      const double signedUnshot = Mean(sel.SignedPower);
+      row.EnergyBalance = (emitted - this->Absorbed - this->Escaped - signedUnshot) / emitted;
+      const RGB overshoot = mesh.MaterialOf(sel.Best).Reflectance * ambient;
+      row.OvershootPowerW = Mean(glm::abs(overshoot)) * mesh[sel.Best].Area;
+      if (tracker)
+      {
+        const ErrorFigures errors = RelativeErrors(tracker->Evaluate(), this->Settings.ErrorReference);
+        row.RmsError = errors.Rms;
+        row.MaxRelError = errors.Max;
+      }
+      stats.History.Rows.push_back(row);
+      stats.Iterations = iteration;
+      stats.UnshotPowerW = sel.AbsPower;
+
+      const double relative = sel.AbsPower / emitted;
+      if (progress)
+      {
+        ProgressStatus status;
+        status.Phase = "shooting";
+        status.Iteration = iteration;
+        status.Residual = relative;
+        status.Fraction = std::clamp(
+          std::log(std::max(relative, 1e-300)) / std::log(this->Settings.Tolerance), 0.0, 1.0);
+        if (!progress(status))
+        {
+          stats.Stop = StopReason::Aborted;
+          break;
+        }
+      }
+      if (relative <= this->Settings.Tolerance)
+      {
+        stats.Stop = StopReason::Converged;
         break;
       }
+      if (ReachedLimit(iteration, this->Settings.MaxIterations, elapsed,
+            this->Settings.MaxTimeSeconds, stats.Stop))
+      {
+        break;
+      }
+      mesh[sel.Best].Unshot = -overshoot; // handed to the shooter's leaves after the shot
+      this->Shoot(sel.Best, nodeUnshot + overshoot, leaves, stats);
     }
-    if (relative <= this->Settings.Tolerance)
-    {
-      stats.Stop = StopReason::Converged;
-      break;
-    }
-    if (ReachedLimit(iteration, this->Settings.MaxIterations, elapsed,
-          this->Settings.MaxTimeSeconds, stats.Stop))
-    {
-      break;
-    }
-    mesh[sel.Best].Unshot = -overshoot; // handed to the shooter's leaves after the shot
-    this->Shoot(sel.Best, nodeUnshot + overshoot, leaves, stats);
-  }
-  stats.Elements = mesh.NumberOfLeaves();
-  stats.RaysCast = this->Rays->RaysCast();
-  stats.AbsorbedPowerW = this->Absorbed;
-  stats.EscapedPowerW = this->Escaped;
-  stats.SolveSeconds = start.Seconds();
-  return stats;
+    stats.Elements = mesh.NumberOfLeaves();
+    stats.RaysCast = this->Rays->RaysCast();
+    stats.AbsorbedPowerW = this->Absorbed;
+    stats.EscapedPowerW = this->Escaped;
+    stats.SolveSeconds = start.Seconds();
+    return stats;
+  });
 }
 } // namespace radiosity

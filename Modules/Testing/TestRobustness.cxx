@@ -13,6 +13,8 @@
 #include "Radiosity/SolutionMesh.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <chrono>
 #include <cmath>
@@ -270,4 +272,30 @@ TEST(Robustness, LinksWithTooManyBlockersAreCounted)
   options.MaxBlockersPerLink = 1000;
   HierarchicalRadiosity all(fine, options);
   EXPECT_EQ(all.Solve().LinksWithBlockersCut, 0u);
+}
+
+TEST(Robustness, ThreadLimitIsScopedToTheSolve)
+{
+  // Threads = 1 used to set a tbb::global_control: while the solve ran, every
+  // TBB user of the process (a ParaView session, another filter) was capped
+  // at one thread. The solve's own loops see one thread now, the rest of the
+  // process TBB's default.
+  const int all = tbb::this_task_arena::max_concurrency();
+  if (all < 2)
+  {
+    GTEST_SKIP() << "one core: a limit of 1 cannot be told from the default";
+  }
+  const Scene box = MakeClosedCube(1.0, 2, 0.5, 1.0);
+  ProgressiveOptions options;
+  options.Threads = 1;
+  ProgressiveRadiosity solver(box, options);
+  int inside = 0;
+  std::size_t outside = 0;
+  solver.Solve([&](const ProgressStatus&) {
+    inside = tbb::this_task_arena::max_concurrency();
+    outside = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+    return true;
+  });
+  EXPECT_EQ(inside, 1);
+  EXPECT_GE(outside, static_cast<std::size_t>(all)) << "the process-wide limit was set";
 }
