@@ -26,8 +26,12 @@ vtkFaceClusterHierarchyFilter::~vtkFaceClusterHierarchyFilter() = default;
 
 int vtkFaceClusterHierarchyFilter::FillInputPortInformation(int, vtkInformation* info)
 {
-  // Composite data arrive whole: each block is one object of the scene.
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  // What vtkRadiositySceneConverter::ToScene accepts: any dataset (polydata,
+  // or the outer surface of another dataset) and composite data, which arrive
+  // whole (each leaf one object of the scene; a composite that is not a tree
+  // is refused by ToScene with its message, as before).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
 

@@ -120,8 +120,12 @@ const char* vtkRadiosityFilter::GetBasisName(int basis)
 
 int vtkRadiosityFilter::FillInputPortInformation(int, vtkInformation* info)
 {
-  // Composite data arrive whole: each block is one object of the scene.
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  // What vtkRadiositySceneConverter::ToScene accepts: any dataset (polydata,
+  // or the outer surface of another dataset) and composite data, which arrive
+  // whole (each leaf one object of the scene; a composite that is not a tree
+  // is refused by ToScene with its message, as before).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
 
@@ -403,5 +407,6 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FaceClusterSolution: " << (this->FaceClusterSolution ? "yes" : "none") << "\n";
   os << indent << "HierarchicalSolution: " << (this->HierarchicalSolution ? "yes" : "none") << "\n";
   os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";
+  os << indent << "StatusCallback: " << (this->StatusCallback ? "set" : "(none)") << "\n";
   os << indent << "LastError: " << this->LastError << "\n";
 }

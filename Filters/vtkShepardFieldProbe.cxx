@@ -292,6 +292,9 @@ int vtkShepardFieldProbe::ExecuteRequest(vtkInformationVector** inputVector, vtk
 void vtkShepardFieldProbe::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Source: "
+     << (this->GetNumberOfInputConnections(1) > 0 ? this->GetInputDataObject(1, 0) : nullptr)
+     << "\n";
   os << indent << "MaxLevel: " << this->MaxLevel << "\n";
   os << indent << "LastError: " << (this->LastError.empty() ? "(none)" : this->LastError) << "\n";
 }

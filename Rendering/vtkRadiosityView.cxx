@@ -424,7 +424,7 @@ bool vtkRadiosityView::WritePNG(const char* fileName)
 void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Input: " << this->Input.GetPointer() << "\n";
+  os << indent << "InputData: " << this->Input.GetPointer() << "\n";
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
   os << indent << "InterpolantRendering: " << (this->InterpolantRendering ? "On" : "Off") << "\n";
   os << indent << "UsesInterpolantMapper: " << (this->UsesInterpolantMapper() ? "true" : "false")
@@ -436,6 +436,16 @@ void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "OffScreen: " << (this->OffScreen ? "On" : "Off") << "\n";
   os << indent << "CameraSet: " << (this->CameraSet ? "true" : "false") << "\n";
+  if (vtkCamera* camera = this->Renderer ? this->Renderer->GetActiveCamera() : nullptr)
+  {
+    const double* p = camera->GetPosition();
+    const double* f = camera->GetFocalPoint();
+    const double* u = camera->GetViewUp();
+    os << indent << "Camera: position (" << p[0] << ", " << p[1] << ", " << p[2]
+       << "), focal point (" << f[0] << ", " << f[1] << ", " << f[2] << "), view up (" << u[0]
+       << ", " << u[1] << ", " << u[2] << "), view angle " << camera->GetViewAngle()
+       << (this->CameraSet ? "" : " (framed at the next render)") << "\n";
+  }
   os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
   os << indent << "RenderWindow: " << this->RenderWindow.GetPointer() << "\n";
   os << indent << "ToneMappingPass: " << this->ToneMappingPass.GetPointer() << "\n";

@@ -479,8 +479,8 @@ void vtkShepardSplatMapper::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent << "SurfaceError: " << this->SurfaceError << "\n";
   }
-  os << indent << "G-buffer: " << this->Passes->GetWidth() << " x " << this->Passes->GetHeight()
-     << "\n";
+  os << indent << "Passes:\n";
+  this->Passes->PrintSelf(os, indent.GetNextIndent());
   os << indent << "PointBuffer:\n";
   this->PointBuffer->PrintSelf(os, indent.GetNextIndent());
   os << indent << "WarnedNoReflectance: " << (this->WarnedNoReflectance ? "true" : "false")

@@ -1,5 +1,6 @@
 #include "vtkShepardSplatPasses.h"
 
+#include "vtkIndent.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -351,4 +352,12 @@ void vtkShepardSplatPasses::ReleaseGraphicsResources(vtkWindow* window)
     }
   }
   this->Width = this->Height = 0;
+}
+
+void vtkShepardSplatPasses::PrintSelf(std::ostream& os, vtkIndent indent) const
+{
+  os << indent << "Width: " << this->Width << "\n";
+  os << indent << "Height: " << this->Height << "\n";
+  os << indent << "Normalise: " << (this->Normalise ? "built" : "(none)") << "\n";
+  os << indent << "CompositeQuad: " << (this->CompositeQuad ? "built" : "(none)") << "\n";
 }

@@ -9,10 +9,12 @@
 
 #include "vtkNew.h"
 
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
 
+class vtkIndent;
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
@@ -63,6 +65,9 @@ public:
     std::string& error);
 
   void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// The G-buffer's size and which shaders are built (for the mapper's PrintSelf).
+  void PrintSelf(std::ostream& os, vtkIndent indent) const;
 
 private:
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
