@@ -197,10 +197,14 @@ void HierarchicalRadiosity::Refine(std::uint32_t p, std::uint32_t q, std::vector
   }
 }
 
-void HierarchicalRadiosity::InitialLinks(std::vector<PendingLink>& out)
+bool HierarchicalRadiosity::InitialLinks(std::vector<PendingLink>& out, const std::function<bool()>& keepGoing)
 {
   for (std::uint32_t p : this->Roots)
   {
+    if (!keepGoing())
+    {
+      return false;
+    }
     for (std::uint32_t q : this->Roots)
     {
       if (p != q)
@@ -209,6 +213,7 @@ void HierarchicalRadiosity::InitialLinks(std::vector<PendingLink>& out)
       }
     }
   }
+  return true;
 }
 
 std::size_t HierarchicalRadiosity::RefineLinks(std::vector<PendingLink>& out)
@@ -237,8 +242,8 @@ std::size_t HierarchicalRadiosity::RefineLinks(std::vector<PendingLink>& out)
   return changed;
 }
 
-void HierarchicalRadiosity::ComputeLinks(
-  const std::vector<PendingLink>& pending, SolverStatistics& stats)
+bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending,
+  SolverStatistics& stats, const std::function<bool()>& keepGoing)
 {
   struct Result
   {
@@ -247,137 +252,147 @@ void HierarchicalRadiosity::ComputeLinks(
   };
   std::vector<Result> results(pending.size());
   const Scene& scene = this->SourceScene;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 16),
-    [&](const tbb::blocked_range<std::size_t>& range) {
-      std::vector<TriangleCorners> blockerCorners;
-      for (std::size_t i = range.begin(); i != range.end(); ++i)
-      {
-        Result& res = results[i];
-        HierarchicalLink& link = res.Link;
-        link.Receiver = pending[i].Receiver;
-        link.Source = pending[i].Source;
-        const TriangleCorners p = this->Corners(link.Receiver);
-        const TriangleCorners q = this->Corners(link.Source);
-        const Vec3& n = (*this->Elements)[link.Receiver].Normal;
-        // Candidate blockers: occluders near the shaft (the BVH's boxes that
-        // meet its bounding sphere), inside the shaft's hull planes and with a
-        // vertex in front of both nodes. A superset is harmless:
-        // backprojection is exact, and a candidate that hides nothing
-        // subtracts nothing.
-        const Element& pe = (*this->Elements)[link.Receiver];
-        const Element& qe = (*this->Elements)[link.Source];
-        if (!this->Rays->Empty())
+  // In blocks, so that an abort is seen between them (progress and abort go
+  // through this thread, not the workers).
+  constexpr std::size_t Block = 1 << 14;
+  for (std::size_t begin = 0; begin < pending.size(); begin += Block)
+  {
+    if (!keepGoing())
+    {
+      return false;
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, std::min(pending.size(), begin + Block), 16),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        std::vector<TriangleCorners> blockerCorners;
+        for (std::size_t i = range.begin(); i != range.end(); ++i)
         {
-          const Vec3 centre = (p[0] + p[1] + p[2] + q[0] + q[1] + q[2]) / 6.0;
-          double radius = 0.0;
-          for (int k = 0; k < 3; ++k)
+          Result& res = results[i];
+          HierarchicalLink& link = res.Link;
+          link.Receiver = pending[i].Receiver;
+          link.Source = pending[i].Source;
+          const TriangleCorners p = this->Corners(link.Receiver);
+          const TriangleCorners q = this->Corners(link.Source);
+          const Vec3& n = (*this->Elements)[link.Receiver].Normal;
+          // Candidate blockers: occluders near the shaft (the BVH's boxes that
+          // meet its bounding sphere), inside the shaft's hull planes and with a
+          // vertex in front of both nodes. A superset is harmless:
+          // backprojection is exact, and a candidate that hides nothing
+          // subtracts nothing.
+          const Element& pe = (*this->Elements)[link.Receiver];
+          const Element& qe = (*this->Elements)[link.Source];
+          if (!this->Rays->Empty())
           {
-            radius = std::max({ radius, glm::length(p[k] - centre), glm::length(q[k] - centre) });
-          }
-          std::vector<std::uint32_t> near;
-          this->Rays->OccludersInSphere(centre, radius, near);
-          const Shaft shaft(p, q);
-          for (std::uint32_t b : near)
-          {
-            if (b == pe.Source || b == qe.Source ||
-              shaft.Excludes({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) }))
-            {
-              continue;
-            }
-            bool frontP = false, frontQ = false;
+            const Vec3 centre = (p[0] + p[1] + p[2] + q[0] + q[1] + q[2]) / 6.0;
+            double radius = 0.0;
             for (int k = 0; k < 3; ++k)
             {
-              const Vec3 v = scene.Vertex(b, k);
-              frontP = frontP || glm::dot(v - pe.Centroid, pe.Normal) > this->PlaneTolerance;
-              frontQ = frontQ || glm::dot(v - qe.Centroid, qe.Normal) > this->PlaneTolerance;
+              radius = std::max({ radius, glm::length(p[k] - centre), glm::length(q[k] - centre) });
             }
-            if (frontP && frontQ)
+            std::vector<std::uint32_t> near;
+            this->Rays->OccludersInSphere(centre, radius, near);
+            const Shaft shaft(p, q);
+            for (std::uint32_t b : near)
             {
-              res.Blockers.push_back(b);
-            }
-          }
-          std::sort(res.Blockers.begin(), res.Blockers.end());
-          res.Blockers.erase(std::unique(res.Blockers.begin(), res.Blockers.end()), res.Blockers.end());
-        }
-        if (res.Blockers.size() > this->Settings.MaxBlockersPerLink)
-        {
-          {
-            // Too many candidates: keep those the rays between the nodes meet.
-            std::vector<std::uint32_t> hit;
-            Vec3 from[16], to[16];
-            for (int a = 0; a < 4; ++a)
-            {
-              for (int b = 0; b < 4; ++b)
+              if (b == pe.Source || b == qe.Source ||
+                shaft.Excludes({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) }))
               {
-                from[4 * a + b] = At(p, RuleA[a]);
-                to[4 * a + b] = At(q, RuleA[b]);
+                continue;
+              }
+              bool frontP = false, frontQ = false;
+              for (int k = 0; k < 3; ++k)
+              {
+                const Vec3 v = scene.Vertex(b, k);
+                frontP = frontP || glm::dot(v - pe.Centroid, pe.Normal) > this->PlaneTolerance;
+                frontQ = frontQ || glm::dot(v - qe.Centroid, qe.Normal) > this->PlaneTolerance;
+              }
+              if (frontP && frontQ)
+              {
+                res.Blockers.push_back(b);
               }
             }
-            Vec3 f[32], t[32];
-            for (int a = 0; a < 4; ++a)
+            std::sort(res.Blockers.begin(), res.Blockers.end());
+            res.Blockers.erase(std::unique(res.Blockers.begin(), res.Blockers.end()), res.Blockers.end());
+          }
+          if (res.Blockers.size() > this->Settings.MaxBlockersPerLink)
+          {
             {
-              for (int b = 0; b < 4; ++b)
+              // Too many candidates: keep those the rays between the nodes meet.
+              std::vector<std::uint32_t> hit;
+              Vec3 from[16], to[16];
+              for (int a = 0; a < 4; ++a)
               {
-                f[8 * a + 2 * b] = At(p, RuleA[a]);
-                t[8 * a + 2 * b] = At(q, RuleB[b]);
-                f[8 * a + 2 * b + 1] = At(p, RuleB[a]);
-                t[8 * a + 2 * b + 1] = At(q, RuleA[b]);
+                for (int b = 0; b < 4; ++b)
+                {
+                  from[4 * a + b] = At(p, RuleA[a]);
+                  to[4 * a + b] = At(q, RuleA[b]);
+                }
+              }
+              Vec3 f[32], t[32];
+              for (int a = 0; a < 4; ++a)
+              {
+                for (int b = 0; b < 4; ++b)
+                {
+                  f[8 * a + 2 * b] = At(p, RuleA[a]);
+                  t[8 * a + 2 * b] = At(q, RuleB[b]);
+                  f[8 * a + 2 * b + 1] = At(p, RuleB[a]);
+                  t[8 * a + 2 * b + 1] = At(q, RuleA[b]);
+                }
+              }
+              this->Rays->CollectOccluders(from, to, 16, hit);
+              this->Rays->CollectOccluders(f, t, 32, hit);
+              std::sort(hit.begin(), hit.end());
+              hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
+              hit.erase(std::remove_if(hit.begin(), hit.end(),
+                          [&](std::uint32_t b) { return b == pe.Source || b == qe.Source; }),
+                hit.end());
+              if (hit.size() > this->Settings.MaxBlockersPerLink)
+              {
+                hit.resize(this->Settings.MaxBlockersPerLink);
+              }
+              link.BlockersCut = true;
+              res.Blockers.swap(hit);
+            }
+          }
+          link.Kind = res.Blockers.empty() ? HierarchicalLink::Visible : HierarchicalLink::Partial;
+          blockerCorners.clear();
+          for (std::uint32_t b : res.Blockers)
+          {
+            blockerCorners.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
+          }
+          // Receiver-area mean of the point form factor: the centroids of the
+          // uniform midpoint subdivision, finer where the source is close (the
+          // kernel varies fastest there, and the sums over a closed room must
+          // stay 1 to 1e-4 for reflectance 0.999).
+          const double distance = glm::length(
+            (*this->Elements)[link.Source].Centroid - (*this->Elements)[link.Receiver].Centroid);
+          const double size = this->Elements->LongestEdge(link.Receiver);
+          const int splits = distance < 1.5 * size ? 8 : distance < 4 * size ? 4 : 2;
+          double f = 0.0;
+          int count = 0;
+          auto accumulate = [&](double s, double t) {
+            const double w[3] = { 1.0 - s - t, s, t };
+            const Vec3 x = At(p, w);
+            f += link.Kind == HierarchicalLink::Partial
+              ? VisibleFormFactor(x, n, q, blockerCorners.data(), blockerCorners.size())
+              : PointToPolygonFormFactor(x, n, q.data(), 3);
+            ++count;
+          };
+          for (int i = 0; i < splits; ++i)
+          {
+            for (int j = 0; i + j < splits; ++j)
+            {
+              accumulate((i + 1.0 / 3) / splits, (j + 1.0 / 3) / splits);
+              if (i + j < splits - 1)
+              {
+                accumulate((i + 2.0 / 3) / splits, (j + 2.0 / 3) / splits);
               }
             }
-            this->Rays->CollectOccluders(from, to, 16, hit);
-            this->Rays->CollectOccluders(f, t, 32, hit);
-            std::sort(hit.begin(), hit.end());
-            hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
-            hit.erase(std::remove_if(hit.begin(), hit.end(),
-                        [&](std::uint32_t b) { return b == pe.Source || b == qe.Source; }),
-              hit.end());
-            if (hit.size() > this->Settings.MaxBlockersPerLink)
-            {
-              hit.resize(this->Settings.MaxBlockersPerLink);
-            }
-            link.BlockersCut = true;
-            res.Blockers.swap(hit);
           }
+          f /= count;
+          link.Factor = f;
         }
-        link.Kind = res.Blockers.empty() ? HierarchicalLink::Visible : HierarchicalLink::Partial;
-        blockerCorners.clear();
-        for (std::uint32_t b : res.Blockers)
-        {
-          blockerCorners.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
-        }
-        // Receiver-area mean of the point form factor: the centroids of the
-        // uniform midpoint subdivision, finer where the source is close (the
-        // kernel varies fastest there, and the sums over a closed room must
-        // stay 1 to 1e-4 for reflectance 0.999).
-        const double distance = glm::length(
-          (*this->Elements)[link.Source].Centroid - (*this->Elements)[link.Receiver].Centroid);
-        const double size = this->Elements->LongestEdge(link.Receiver);
-        const int splits = distance < 1.5 * size ? 8 : distance < 4 * size ? 4 : 2;
-        double f = 0.0;
-        int count = 0;
-        auto accumulate = [&](double s, double t) {
-          const double w[3] = { 1.0 - s - t, s, t };
-          const Vec3 x = At(p, w);
-          f += link.Kind == HierarchicalLink::Partial
-            ? VisibleFormFactor(x, n, q, blockerCorners.data(), blockerCorners.size())
-            : PointToPolygonFormFactor(x, n, q.data(), 3);
-          ++count;
-        };
-        for (int i = 0; i < splits; ++i)
-        {
-          for (int j = 0; i + j < splits; ++j)
-          {
-            accumulate((i + 1.0 / 3) / splits, (j + 1.0 / 3) / splits);
-            if (i + j < splits - 1)
-            {
-              accumulate((i + 2.0 / 3) / splits, (j + 2.0 / 3) / splits);
-            }
-          }
-        }
-        f /= count;
-        link.Factor = f;
-      }
-    });
+      });
+  }
   for (Result& r : results)
   {
     r.Link.FirstBlocker = static_cast<std::uint32_t>(this->BlockerPool.size());
@@ -387,6 +402,7 @@ void HierarchicalRadiosity::ComputeLinks(
     stats.PartialLinks += r.Link.Kind == HierarchicalLink::Partial;
     stats.HiddenLinks += r.Link.Kind == HierarchicalLink::Hidden;
   }
+  return true;
 }
 
 void HierarchicalRadiosity::IndexLinks()
@@ -589,8 +605,13 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
       stats.SolveSeconds = start.Seconds();
       return stats;
     }
-    this->InitialLinks(pending);
-    this->ComputeLinks(pending, stats);
+    const auto linking = [&]() { return report("linking", 0, 1.0); };
+    if (!this->InitialLinks(pending, linking) || !this->ComputeLinks(pending, stats, linking))
+    {
+      stats.Stop = StopReason::Aborted;
+      stats.SolveSeconds = start.Seconds();
+      return stats;
+    }
     this->IndexLinks();
     this->Normalize();
 
@@ -663,7 +684,11 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
             stats.Stop = StopReason::Aborted;
             break;
           }
-          this->ComputeLinks(pending, stats);
+          if (!this->ComputeLinks(pending, stats, [&]() { return report("linking", iteration, relative); }))
+          {
+            stats.Stop = StopReason::Aborted;
+            break;
+          }
           this->IndexLinks();
           this->Normalize();
           previousDelta = previousRatio = -1.0;

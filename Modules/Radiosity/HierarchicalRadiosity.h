@@ -47,6 +47,7 @@
 #include "Radiosity/SceneAnalysis.h"
 #include "Radiosity/SolverTypes.h"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -140,9 +141,12 @@ private:
   bool Splittable(std::uint32_t e) const;
   std::uint32_t Children(std::uint32_t e);
   void Refine(std::uint32_t p, std::uint32_t q, std::vector<PendingLink>& out);
-  void InitialLinks(std::vector<PendingLink>& out);
+  /// false when `keepGoing` (asked once per root) said stop.
+  bool InitialLinks(std::vector<PendingLink>& out, const std::function<bool()>& keepGoing);
   std::size_t RefineLinks(std::vector<PendingLink>& out);
-  void ComputeLinks(const std::vector<PendingLink>& pending, SolverStatistics& stats);
+  /// false when `keepGoing` (asked between blocks of links, on this thread) said stop.
+  bool ComputeLinks(const std::vector<PendingLink>& pending, SolverStatistics& stats,
+    const std::function<bool()>& keepGoing);
   void IndexLinks();
   double Sweep(std::vector<RGB>& change);
   RGB PushPull(std::uint32_t e, const RGB& downVisible, const RGB& downOther,

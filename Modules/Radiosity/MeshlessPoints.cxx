@@ -130,9 +130,10 @@ double MaxPoissonDiskPoints(const Scene& scene, const PointPlacementOptions& opt
   return points;
 }
 
-PointHierarchy::PointHierarchy(
-  const Scene& scene, const PointPlacementOptions& options, const Visibility* rays)
+PointHierarchy::PointHierarchy(const Scene& scene, const PointPlacementOptions& options,
+  const Visibility* rays, const std::function<bool()>& keepGoing)
 {
+  std::size_t candidates = 0;
   const int levels = std::max(1, options.Levels);
   const double diagonal = scene.Diagonal() > 0 ? scene.Diagonal() : 1.0;
   const double r0 = options.InitialRadius * diagonal;
@@ -179,6 +180,10 @@ PointHierarchy::PointHierarchy(
       int failures = 0;
       while (failures < options.MaxRejections)
       {
+        if (keepGoing && (++candidates & 1023) == 0 && !keepGoing())
+        {
+          throw PlacementAborted();
+        }
         // Every surface point equally likely: a triangle by area, a point in it.
         const double pick = uniform(rng) * total;
         const std::size_t k = static_cast<std::size_t>(

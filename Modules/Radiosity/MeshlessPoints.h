@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <functional>
 #include <vector>
 
 namespace radiosity
@@ -49,14 +50,22 @@ struct PointPlacementOptions
 /// estimate, before any point is placed.
 double MaxPoissonDiskPoints(const Scene& scene, const PointPlacementOptions& options);
 
+/// Thrown by PointHierarchy when its `keepGoing` said stop (an abort).
+struct PlacementAborted
+{
+};
+
 class PointHierarchy
 {
 public:
   /**
    * Places the points. `rays`, when given, must be built over every triangle
    * (Visibility::AllTriangles): it serves the inside-geometry test.
+   * `keepGoing`, when given, is asked every 1,024 candidate points (on this
+   * thread); false ends the placement with PlacementAborted.
    */
-  PointHierarchy(const Scene& scene, const PointPlacementOptions& options, const Visibility* rays);
+  PointHierarchy(const Scene& scene, const PointPlacementOptions& options, const Visibility* rays,
+    const std::function<bool()>& keepGoing = {});
   ~PointHierarchy();
   PointHierarchy(const PointHierarchy&) = delete;
   PointHierarchy& operator=(const PointHierarchy&) = delete;

@@ -431,7 +431,16 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     // Only what can occlude casts shadows (SceneAnalysis): no rays, and no
     // grazing-angle misses, inside a convex enclosure.
     this->Shadows = std::make_unique<Visibility>(scene, AnalyzeScene(scene).CanOcclude);
-    this->Hierarchy = std::make_unique<PointHierarchy>(scene, this->Settings.Placement, this->Rays.get());
+    try
+  {
+    this->Hierarchy = std::make_unique<PointHierarchy>(scene, this->Settings.Placement, this->Rays.get(),
+      [&]() { return report("placing points", 0, 1.0); });
+  }
+  catch (const PlacementAborted&)
+  {
+    stats.Stop = StopReason::Aborted;
+    return stats;
+  }
     const PointHierarchy& points = *this->Hierarchy;
     this->Touched.assign(points.Points().size(), 0);
     this->Stats.SamplesGenerated = points.Points().size();

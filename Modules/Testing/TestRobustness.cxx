@@ -17,6 +17,7 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <iostream>
 
@@ -298,4 +299,75 @@ TEST(Robustness, ThreadLimitIsScopedToTheSolve)
   });
   EXPECT_EQ(inside, 1);
   EXPECT_GE(outside, static_cast<std::size_t>(all)) << "the process-wide limit was set";
+}
+
+namespace
+{
+/// A progress callback that says stop once `after` seconds have passed, and
+/// remembers when it first did.
+struct AbortAfter
+{
+  explicit AbortAfter(double after)
+    : After(after)
+  {
+  }
+  using Clock = std::chrono::steady_clock;
+  double After;
+  Clock::time_point Start = Clock::now();
+  Clock::time_point Stopped{};
+  bool Asked = false;
+  bool operator()(const ProgressStatus&)
+  {
+    const auto now = Clock::now();
+    if (std::chrono::duration<double>(now - this->Start).count() < this->After)
+    {
+      return true;
+    }
+    if (!this->Asked)
+    {
+      this->Asked = true;
+      this->Stopped = now;
+    }
+    return false;
+  }
+  double SecondsSinceStop() const
+  {
+    return std::chrono::duration<double>(Clock::now() - this->Stopped).count();
+  }
+};
+}
+
+TEST(Robustness, AbortDuringMeshlessPointPlacementWithinASecond)
+{
+  // Placement used to ask for progress only before it began: fine radii made
+  // it minutes long and deaf to an abort.
+  const Scene box = MakeCornellBox();
+  MeshlessOptions options;
+  options.Placement.InitialRadius = 0.004;
+  options.Placement.Levels = 4;
+  MeshlessRadiosity solver(box, options);
+  AbortAfter abort(0.3);
+  const SolverStatistics stats = solver.Solve(std::ref(abort));
+  ASSERT_TRUE(abort.Asked);
+  const double late = abort.SecondsSinceStop();
+  std::cout << "meshless placement stopped " << late << " s after the abort\n";
+  EXPECT_EQ(stats.Stop, StopReason::Aborted);
+  EXPECT_LT(late, 1.0);
+  ExpectZero(solver.Surface(), "meshless aborted during placement");
+}
+
+TEST(Robustness, AbortDuringHierarchicalLinkingWithinASecond)
+{
+  // 1.64 million initial links inside a sphere of 1,280 triangles: several
+  // seconds of linking, which used to ask for progress only before it began.
+  const Scene sphere = MakeSphereInterior(1.0, 3, 0.9, RGB(10.0));
+  HierarchicalRadiosity solver(sphere, HierarchicalOptions());
+  AbortAfter abort(0.2);
+  const SolverStatistics stats = solver.Solve(std::ref(abort));
+  ASSERT_TRUE(abort.Asked);
+  const double late = abort.SecondsSinceStop();
+  std::cout << "hierarchical linking stopped " << late << " s after the abort\n";
+  EXPECT_EQ(stats.Stop, StopReason::Aborted);
+  EXPECT_EQ(stats.Iterations, 0) << "the abort came during linking, before any sweep";
+  EXPECT_LT(late, 1.0);
 }
