@@ -435,20 +435,30 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     // Phase 1: discontinuities and triangulations, per leaf.
     std::vector<LeafWork> work(leaves.size());
     std::vector<std::size_t> found(leaves.size(), 0), kept(leaves.size(), 0);
-    tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
-      const std::uint32_t leaf = leaves[i];
-      const TriangleCorners corners = s.Corners(leaf);
-      std::vector<std::array<Vec3, 2>> segments;
-      if (options.Discontinuities)
+    // In blocks of leaves, so that progress and an abort are seen between
+    // them (on this thread) and not only after the whole phase.
+    constexpr std::size_t Block = 256;
+    for (std::size_t begin = 0; begin < leaves.size(); begin += Block)
+    {
+      if (!report("finding discontinuities", 0.3 * static_cast<double>(begin) / static_cast<double>(leaves.size())))
       {
-        segments = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
-        kept[i] = segments.size();
+        return out;
       }
-      work[i].Mesh = segments.empty()
-        ? PlanarTriangulation{ { corners[0], corners[1], corners[2] }, { { 0u, 1u, 2u } } }
-        : TriangulateWithConstraints(corners, segments);
-      work[i].Segments = std::move(segments);
-    });
+      tbb::parallel_for(begin, std::min(leaves.size(), begin + Block), [&](std::size_t i) {
+        const std::uint32_t leaf = leaves[i];
+        const TriangleCorners corners = s.Corners(leaf);
+        std::vector<std::array<Vec3, 2>> segments;
+        if (options.Discontinuities)
+        {
+          segments = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
+          kept[i] = segments.size();
+        }
+        work[i].Mesh = segments.empty()
+          ? PlanarTriangulation{ { corners[0], corners[1], corners[2] }, { { 0u, 1u, 2u } } }
+          : TriangulateWithConstraints(corners, segments);
+        work[i].Segments = std::move(segments);
+      });
+    }
     if (options.Conforming)
     {
       out.LeavesConformed = ConformBoundaries(s, leaves, work);

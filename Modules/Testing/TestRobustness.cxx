@@ -3,6 +3,7 @@
 // before its first phase. The surface solution and the probes must then be
 // zero, not a null dereference.
 #include "Radiosity/FaceClusterRadiosity.h"
+#include "Radiosity/DiscontinuityMesher.h"
 #include "Radiosity/ElementMesh.h"
 #include "Radiosity/HierarchicalRadiosity.h"
 #include "Radiosity/MemoryBudget.h"
@@ -369,5 +370,27 @@ TEST(Robustness, AbortDuringHierarchicalLinkingWithinASecond)
   std::cout << "hierarchical linking stopped " << late << " s after the abort\n";
   EXPECT_EQ(stats.Stop, StopReason::Aborted);
   EXPECT_EQ(stats.Iterations, 0) << "the abort came during linking, before any sweep";
+  EXPECT_LT(late, 1.0);
+}
+
+TEST(Robustness, AbortDuringTheFirstMeshingPhaseWithinASecond)
+{
+  // The discontinuities and triangulations of every leaf (phase 1) used to
+  // run to their end before the first progress report.
+  const Scene box = MakeCornellBox();
+  HierarchicalRadiosity solver(box, HierarchicalOptions());
+  ASSERT_EQ(solver.Solve().Stop, StopReason::Converged);
+  AbortAfter abort(0.1);
+  std::string phase;
+  const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions(),
+    [&](const ProgressStatus& status) {
+      phase = status.Phase;
+      return abort(status);
+    });
+  ASSERT_TRUE(abort.Asked);
+  const double late = abort.SecondsSinceStop();
+  std::cout << "meshing stopped in phase '" << phase << "' " << late << " s after the abort\n";
+  EXPECT_EQ(phase, "finding discontinuities");
+  EXPECT_TRUE(mesh.Interpolants.empty());
   EXPECT_LT(late, 1.0);
 }
