@@ -401,6 +401,17 @@ TEST_F(SceneFiles, PlyElementWithoutPropertiesRefused)
   ExpectRefused(this->Write("bare.ply", ply), { "bare.ply: header line 9: element 'material' has no property" });
 }
 
+// A list on an element other than face, with lines that hold its values,
+// crashed vtkPLY (Testing/Fuzz/regressions/ply-list-property-outside-face).
+TEST_F(SceneFiles, PlyListOutsideTheFaceElementRefused)
+{
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                          "property float y\nproperty float z\nproperty list uchar int extra\n"
+                          "end_header\n0 0 0 1 7\n1 0 0 1 7\n0 1 0 1 7\n";
+  ExpectRefused(this->Write("list.ply", ply),
+    { "list.ply: header line 3+: property 'extra' of element 'vertex' is a list" });
+}
+
 // vtkXMLPolyDataReader crashes on ASCII values that do not parse and leaks
 // on Points without 3 components (Testing/Fuzz/regressions/vtp-*).
 TEST_F(SceneFiles, XmlArraysCheckedAgainstThePiece)
