@@ -207,5 +207,9 @@ int TestRadiosityFilterConventions(int, char*[])
   ok &= PrintsAll(splats, { "Exposure", "Gamma", "ToneMapping", "Field", "Passes", "Width",
                             "Height" });
 
-  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+  if (!ok)
+  {
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
 }
