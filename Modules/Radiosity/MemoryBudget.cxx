@@ -1,6 +1,6 @@
 #include "Radiosity/MemoryBudget.h"
 
-#include <unistd.h>
+#include "Radiosity/SystemInfo.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,13 +9,6 @@
 
 namespace radiosity
 {
-double PhysicalMemoryBytes()
-{
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long size = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && size > 0 ? static_cast<double>(pages) * static_cast<double>(size) : 0.0;
-}
-
 double DefaultMemoryBudgetBytes()
 {
   return 0.75 * PhysicalMemoryBytes();

@@ -21,10 +21,7 @@ public:
   using SceneError::SceneError;
 };
 
-/// Physical memory of this machine (sysconf), bytes; 0 when unknown.
-double PhysicalMemoryBytes();
-
-/// The default budget: 75% of physical memory (SPEC, --max-memory).
+/// The default budget: 75% of physical memory (SystemInfo.h; --max-memory).
 double DefaultMemoryBudgetBytes();
 
 /// `budget` when positive, else the default.

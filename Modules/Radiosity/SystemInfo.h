@@ -12,6 +12,9 @@ std::string CpuModel();
 
 /// Peak resident memory of this process so far, bytes.
 double PeakMemoryBytes();
+
+/// Physical memory of this machine (sysconf), bytes; 0 when unknown.
+double PhysicalMemoryBytes();
 } // namespace radiosity
 
 #endif
