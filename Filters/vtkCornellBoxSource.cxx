@@ -6,7 +6,7 @@
 #include "vtkPolyData.h"
 #include "vtkRadiositySceneConverter.h"
 
-#include "Radiosity/SceneGenerators.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
 
 vtkStandardNewMacro(vtkCornellBoxSource);
 

@@ -21,7 +21,7 @@
 #include "vtkRadiositySceneConverter.h"
 #include "vtkVersion.h"
 
-#include "Radiosity/HierarchicalRadiosity.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 
 #include <chrono>
 

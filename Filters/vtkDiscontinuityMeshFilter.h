@@ -30,7 +30,7 @@
 #include "RadiosityFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include "Radiosity/DiscontinuityMesher.h" // for radiosity::DiscontinuityMesh
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h" // for radiosity::DiscontinuityMesh
 
 #include <memory> // for std::shared_ptr
 #include <string> // for std::string

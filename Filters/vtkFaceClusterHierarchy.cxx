@@ -2,7 +2,7 @@
 
 #include "vtkObjectFactory.h"
 
-#include "Radiosity/FaceClusterHierarchy.h"
+#include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
 
 vtkStandardNewMacro(vtkFaceClusterHierarchy);
 

@@ -13,7 +13,7 @@
 #include "vtkRadiositySceneConverter.h"
 #include "vtkVersion.h"
 
-#include "Radiosity/FaceClusterHierarchy.h"
+#include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
 
 #include <string>
 #include <vector>

@@ -2,7 +2,7 @@
 
 #include "vtkObjectFactory.h"
 
-#include "Radiosity/HierarchicalRadiosity.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 
 vtkStandardNewMacro(vtkHierarchicalRadiositySolution);
 

@@ -16,7 +16,7 @@
 #include "vtkRadiositySceneConverter.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "Radiosity/MeshlessRadiosity.h"
+#include "Radiosity/Meshless/MeshlessRadiosity.h"
 
 vtkStandardNewMacro(vtkMeshlessFieldFilter);
 

@@ -2,7 +2,7 @@
 
 #include "vtkObjectFactory.h"
 
-#include "Radiosity/MeshlessRadiosity.h"
+#include "Radiosity/Meshless/MeshlessRadiosity.h"
 
 vtkStandardNewMacro(vtkMeshlessRadiositySolution);
 

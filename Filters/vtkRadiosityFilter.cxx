@@ -18,11 +18,11 @@
 #include "vtkRadiosityRequestGuard.h"
 #include "vtkVersion.h"
 
-#include "Radiosity/FaceClusterRadiosity.h"
-#include "Radiosity/HierarchicalRadiosity.h"
-#include "Radiosity/MeshlessRadiosity.h"
-#include "Radiosity/ProgressiveRadiosity.h"
-#include "Radiosity/SolutionMesh.h"
+#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+#include "Radiosity/Meshless/MeshlessRadiosity.h"
+#include "Radiosity/Progressive/ProgressiveRadiosity.h"
+#include "Radiosity/Common/SolutionMesh.h"
 
 #include <algorithm>
 #include <chrono>

@@ -28,9 +28,9 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "RadiosityFiltersModule.h" // for export macro
 
-#include "Radiosity/ProbeEvaluator.h" // for radiosity::Probe
-#include "Radiosity/Scene.h"       // for radiosity::SceneCleanupReport
-#include "Radiosity/SolverTypes.h" // for radiosity::SolverStatistics
+#include "Radiosity/Common/ProbeEvaluator.h" // for radiosity::Probe
+#include "Radiosity/Common/Scene.h"       // for radiosity::SceneCleanupReport
+#include "Radiosity/Common/SolverTypes.h" // for radiosity::SolverStatistics
 
 #include <memory> // for std::unique_ptr, std::shared_ptr
 #include <string> // for std::string

@@ -10,7 +10,7 @@
 
 #include "vtkDataObject.h"
 
-#include "Radiosity/Scene.h"
+#include "Radiosity/Common/Scene.h"
 
 #include <exception>
 #include <new>

@@ -16,9 +16,9 @@
 #include "RadiosityFiltersModule.h" // for export macro
 #include "vtkSmartPointer.h"           // for return values
 
-#include "Radiosity/ConvergenceHistory.h" // for radiosity::ConvergenceHistory
-#include "Radiosity/Scene.h"              // for radiosity::Scene
-#include "Radiosity/SolutionMesh.h"       // for radiosity::SolutionMesh
+#include "Radiosity/Common/ConvergenceHistory.h" // for radiosity::ConvergenceHistory
+#include "Radiosity/Common/Scene.h"              // for radiosity::Scene
+#include "Radiosity/Common/SolutionMesh.h"       // for radiosity::SolutionMesh
 
 #include <string> // for std::string
 #include <vector> // for std::vector

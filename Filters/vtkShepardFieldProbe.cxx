@@ -18,7 +18,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStaticPointLocator.h"
 
-#include "Radiosity/ShepardField.h"
+#include "Radiosity/Meshless/ShepardField.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #ifndef BenchArguments_h
 #define BenchArguments_h
 
-#include "Radiosity/SystemInfo.h"
+#include "Radiosity/Common/SystemInfo.h"
 
 #include <iostream>
 #include <ostream>

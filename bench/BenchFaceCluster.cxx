@@ -9,12 +9,12 @@
 //   bench_facecluster <dir> [--quick] [--bunny index.js]
 #include "BenchArguments.h"
 
-#include "Radiosity/BunnyScene.h"
-#include "Radiosity/ErrorMetrics.h"
-#include "Radiosity/FaceClusterRadiosity.h"
-#include "Radiosity/SceneGenerators.h"
-#include "Radiosity/StandardScenes.h"
-#include "Radiosity/SystemInfo.h"
+#include "Radiosity/Scenes/BunnyScene.h"
+#include "Radiosity/Common/ErrorMetrics.h"
+#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+#include "Radiosity/Scenes/StandardScenes.h"
+#include "Radiosity/Common/SystemInfo.h"
 
 #include <cstdio>
 #include <fstream>

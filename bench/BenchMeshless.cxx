@@ -6,12 +6,12 @@
 //   bench_meshless <dir> [--quick]
 #include "BenchArguments.h"
 
-#include "Radiosity/BunnyScene.h"
-#include "Radiosity/ErrorMetrics.h"
-#include "Radiosity/MeshlessRadiosity.h"
-#include "Radiosity/SceneGenerators.h"
-#include "Radiosity/StandardScenes.h"
-#include "Radiosity/SystemInfo.h"
+#include "Radiosity/Scenes/BunnyScene.h"
+#include "Radiosity/Common/ErrorMetrics.h"
+#include "Radiosity/Meshless/MeshlessRadiosity.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+#include "Radiosity/Scenes/StandardScenes.h"
+#include "Radiosity/Common/SystemInfo.h"
 
 #include <cstdio>
 #include <fstream>

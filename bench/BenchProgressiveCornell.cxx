@@ -3,9 +3,9 @@
 // without overshooting, and the closed room of reflectance 0.999 that only
 // converges with the acceleration. Writes a markdown table and the
 // convergence histories (CSV) into the directory given as argv[1].
-#include "Radiosity/ProgressiveRadiosity.h"
-#include "Radiosity/SceneGenerators.h"
-#include "Radiosity/SystemInfo.h"
+#include "Radiosity/Progressive/ProgressiveRadiosity.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+#include "Radiosity/Common/SystemInfo.h"
 
 #include <unistd.h>
 

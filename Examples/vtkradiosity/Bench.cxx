@@ -8,15 +8,15 @@
 #include "vtkRadiosityConvergenceChart.h"
 #include "vtkTable.h"
 
-#include "Radiosity/AnalyticReference.h"
-#include "Radiosity/BunnyScene.h"
-#include "Radiosity/DiscontinuityMesher.h"
-#include "Radiosity/ErrorMetrics.h"
-#include "Radiosity/HierarchicalRadiosity.h"
-#include "Radiosity/ProgressiveRadiosity.h"
-#include "Radiosity/SceneGenerators.h"
-#include "Radiosity/StandardScenes.h"
-#include "Radiosity/SystemInfo.h"
+#include "Radiosity/Reference/AnalyticReference.h"
+#include "Radiosity/Scenes/BunnyScene.h"
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h"
+#include "Radiosity/Common/ErrorMetrics.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+#include "Radiosity/Progressive/ProgressiveRadiosity.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+#include "Radiosity/Scenes/StandardScenes.h"
+#include "Radiosity/Common/SystemInfo.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

@@ -2,7 +2,7 @@
 #ifndef vtkradiosity_ExrWriter_h
 #define vtkradiosity_ExrWriter_h
 
-#include "Radiosity/RadianceImage.h"
+#include "Radiosity/Common/RadianceImage.h"
 
 #include <string>
 

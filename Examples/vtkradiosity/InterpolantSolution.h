@@ -7,7 +7,7 @@
 #ifndef vtkradiosity_InterpolantSolution_h
 #define vtkradiosity_InterpolantSolution_h
 
-#include "Radiosity/DiscontinuityMesher.h"
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h"
 
 namespace radiosity
 {

@@ -2,8 +2,8 @@
 #ifndef vtkradiosity_ProbeIO_h
 #define vtkradiosity_ProbeIO_h
 
-#include "Radiosity/ProbeEvaluator.h"
-#include "Radiosity/Types.h"
+#include "Radiosity/Common/ProbeEvaluator.h"
+#include "Radiosity/Common/Types.h"
 
 #include <string>
 #include <vector>

@@ -4,7 +4,7 @@
 #ifndef vtkradiosity_ProgressBar_h
 #define vtkradiosity_ProgressBar_h
 
-#include "Radiosity/SolverTypes.h"
+#include "Radiosity/Common/SolverTypes.h"
 
 #include <chrono>
 #include <cstdio>

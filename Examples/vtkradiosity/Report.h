@@ -2,7 +2,7 @@
 #ifndef vtkradiosity_Report_h
 #define vtkradiosity_Report_h
 
-#include "Radiosity/ConvergenceHistory.h"
+#include "Radiosity/Common/ConvergenceHistory.h"
 
 #include <nlohmann/json.hpp>
 

@@ -19,8 +19,8 @@
 #include "vtkSTLReader.h"
 #include "vtkXMLGenericDataObjectReader.h"
 
-#include "Radiosity/BunnyScene.h"
-#include "Radiosity/SceneGenerators.h"
+#include "Radiosity/Scenes/BunnyScene.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
 
 #include <algorithm>
 #include <functional>

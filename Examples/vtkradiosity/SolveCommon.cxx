@@ -23,16 +23,16 @@
 #include "vtkTable.h"
 #include "vtkXMLPolyDataWriter.h"
 
-#include "Radiosity/AnalyticReference.h"
-#include "Radiosity/DiscontinuityMesher.h"
-#include "Radiosity/HierarchicalRadiosity.h"
-#include "Radiosity/ErrorMetrics.h"
-#include "Radiosity/PathTracer.h"
-#include "Radiosity/SceneGenerators.h"
-#include "Radiosity/SystemInfo.h"
-#include "Radiosity/ProbeEvaluator.h"
-#include "Radiosity/RadianceImage.h"
-#include "Radiosity/SolutionMesh.h"
+#include "Radiosity/Reference/AnalyticReference.h"
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+#include "Radiosity/Common/ErrorMetrics.h"
+#include "Radiosity/Reference/PathTracer.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+#include "Radiosity/Common/SystemInfo.h"
+#include "Radiosity/Common/ProbeEvaluator.h"
+#include "Radiosity/Common/RadianceImage.h"
+#include "Radiosity/Common/SolutionMesh.h"
 
 #include <CLI/CLI.hpp>
 

@@ -9,12 +9,12 @@
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 
-#include "Radiosity/ConvergenceHistory.h"
-#include "Radiosity/DiscontinuityMesher.h"
-#include "Radiosity/ProbeEvaluator.h"
-#include "Radiosity/Scene.h"
-#include "Radiosity/SolutionMesh.h"
-#include "Radiosity/SolverTypes.h"
+#include "Radiosity/Common/ConvergenceHistory.h"
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h"
+#include "Radiosity/Common/ProbeEvaluator.h"
+#include "Radiosity/Common/Scene.h"
+#include "Radiosity/Common/SolutionMesh.h"
+#include "Radiosity/Common/SolverTypes.h"
 
 #include <nlohmann/json.hpp>
 

@@ -5,7 +5,7 @@
 //     (.vtk vtkDataSetReader, .ply vtkPLYReader, .stl vtkSTLReader,
 //      .vtp vtkXMLGenericDataObjectReader, .obj + .mtl ObjMtlReader.cxx)
 //   vtkRadiositySceneConverter::ToScene(data)  Filters/
-//   radiosity::ValidateScene(scene)            Modules/Radiosity/Scene.cxx
+//   radiosity::ValidateScene(scene)            Modules/Radiosity/Common/Scene.cxx
 //   radiosity::DropDegenerateTriangles(scene)
 //
 // Input layout: the first byte picks the format, the rest is the file.
@@ -39,7 +39,7 @@
 #include "vtkOutputWindow.h"
 #include "vtkSmartPointer.h"
 
-#include "Radiosity/Scene.h"
+#include "Radiosity/Common/Scene.h"
 
 #include <cstddef>
 #include <cstdint>

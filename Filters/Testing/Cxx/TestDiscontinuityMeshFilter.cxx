@@ -21,7 +21,7 @@
 #include "vtkPolyData.h"
 #include "vtkRadiosityFilter.h"
 
-#include "Radiosity/HierarchicalRadiosity.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 
 #include <algorithm>
 #include <cmath>

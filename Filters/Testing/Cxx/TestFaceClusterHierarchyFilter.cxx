@@ -26,7 +26,7 @@
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "Radiosity/FaceClusterHierarchy.h"
+#include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
 
 #include "FilterTestSupport.h"
 

@@ -23,8 +23,8 @@
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "Radiosity/FaceClusterRadiosity.h"
-#include "Radiosity/SceneGenerators.h"
+#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
 
 #include "FilterTestSupport.h"
 

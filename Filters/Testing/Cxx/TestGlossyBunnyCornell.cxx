@@ -17,9 +17,9 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "Radiosity/BunnyScene.h"
-#include "Radiosity/FaceClusterRadiosity.h"
-#include "Radiosity/SceneGenerators.h"
+#include "Radiosity/Scenes/BunnyScene.h"
+#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
 
 #include <cmath>
 #include <iostream>

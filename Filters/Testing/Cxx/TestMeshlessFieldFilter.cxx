@@ -16,7 +16,7 @@
 #include "vtkRadiosityFilter.h"
 #include "vtkShepardFieldProbe.h"
 
-#include "Radiosity/MeshlessRadiosity.h"
+#include "Radiosity/Meshless/MeshlessRadiosity.h"
 
 #include "FilterTestSupport.h"
 

@@ -10,7 +10,7 @@
 #include "vtkPolyData.h"
 #include "vtkRadiosityFilter.h"
 
-#include "Radiosity/SolutionMesh.h"
+#include "Radiosity/Common/SolutionMesh.h"
 
 #include <iostream>
 

@@ -21,7 +21,7 @@
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "Radiosity/SceneGenerators.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
 
 #include <cmath>
 #include <iostream>

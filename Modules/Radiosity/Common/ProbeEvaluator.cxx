@@ -1,0 +1,181 @@
+#include "Radiosity/Common/ProbeEvaluator.h"
+
+#include "Radiosity/Common/FormFactor.h"
+#include "Radiosity/Common/MeshProbeTracker.h"
+#include "Radiosity/Common/Visibility.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+namespace radiosity
+{
+namespace
+{
+double DistanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = b - a;
+  const double length2 = glm::dot(ab, ab);
+  const double s = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + s * ab));
+}
+
+Scene AsScene(const SolutionMesh& solution)
+{
+  Scene s;
+  s.Points = solution.Points;
+  s.Triangles = solution.Triangles;
+  s.Materials.resize(solution.Triangles.size());
+  s.ObjectIds.assign(solution.Triangles.size(), 0);
+  return s;
+}
+
+}
+
+ProbeEvaluator::ProbeEvaluator(const SolutionMesh& solution, const Scene& scene)
+  : Solution(solution)
+  , SourceScene(scene)
+{
+  const Scene geometry = AsScene(solution);
+  this->Rays = std::make_unique<Visibility>(geometry, Visibility::AllTriangles(geometry));
+  this->Tolerance = 1e-6 * std::max(geometry.Diagonal(), 1e-300);
+}
+
+ProbeEvaluator::~ProbeEvaluator() = default;
+
+std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes) const
+{
+  std::vector<RGB> values(probes.size(), RGB(0.0));
+  std::atomic<std::size_t> gathered{ 0 };
+  const double edgeTolerance = 1e-6;
+  // A triangle the probe lies on is within Tolerance (1e-6 of the diagonal)
+  // of its plane and at most 1e-6 of an edge (so of the diagonal) outside
+  // its edges: well within three Tolerances of the probe.
+  const double radius = 3.0 * this->Tolerance;
+  tbb::parallel_for(std::size_t(0), probes.size(),
+    [&](std::size_t i)
+    {
+      const Probe& probe = probes[i];
+      const Vec3 n = glm::normalize(probe.Normal);
+      double u = 0, v = 0, w = 0;
+      // The element whose plane is nearest among those the probe lies on and
+      // that face its normal (the Embree point query over the elements).
+      const std::int64_t t = this->Rays->NearestTriangle(probe.Position, radius,
+        [&](std::uint32_t e) {
+          const Vec3& nt = this->Solution.Normals[e];
+          if (glm::dot(nt, n) < 0.9)
+          {
+            return std::numeric_limits<double>::infinity();
+          }
+          const auto& tri = this->Solution.Triangles[e];
+          const Vec3& a = this->Solution.Points[tri.V[0]];
+          const double dist = std::fabs(glm::dot(probe.Position - a, nt));
+          double pu, pv, pw;
+          if (dist > this->Tolerance ||
+            !ProjectOnTriangle(probe.Position, a, this->Solution.Points[tri.V[1]],
+              this->Solution.Points[tri.V[2]], pu, pv, pw) ||
+            pu < -edgeTolerance || pv < -edgeTolerance || pw < -edgeTolerance)
+          {
+            return std::numeric_limits<double>::infinity();
+          }
+          return dist;
+        },
+        false);
+      if (t < 0)
+      {
+        values[i] = this->Gather(Probe{ probe.Position, n });
+        ++gathered;
+        return;
+      }
+      const auto& tri = this->Solution.Triangles[t];
+      ProjectOnTriangle(probe.Position, this->Solution.Points[tri.V[0]], this->Solution.Points[tri.V[1]],
+        this->Solution.Points[tri.V[2]], u, v, w);
+      values[i] = InterpolateSamples(this->Solution.Samples[t], u, v, w);
+    });
+  this->Gathered = gathered;
+  return values;
+}
+
+RGB ProbeEvaluator::Gather(const Probe& probe) const
+{
+  RGB h(0.0);
+  const Vec3 origin = probe.Position + this->Rays->Offset() * probe.Normal;
+  for (std::size_t t = 0; t < this->Solution.Triangles.size(); ++t)
+  {
+    const RGB& b = this->Solution.CellRadiosity[t];
+    if (MaxComponent(b) <= 0)
+    {
+      continue;
+    }
+    const auto& tri = this->Solution.Triangles[t];
+    const Vec3 poly[3] = { this->Solution.Points[tri.V[0]], this->Solution.Points[tri.V[1]],
+      this->Solution.Points[tri.V[2]] };
+    const double f = PointToPolygonFormFactor(probe.Position, probe.Normal, poly, 3);
+    if (f <= 0)
+    {
+      continue;
+    }
+    const Vec3 centre = (poly[0] + poly[1] + poly[2]) / 3.0;
+    unsigned char visible = 1;
+    this->Rays->TestSegments(&origin, &centre, 1, &visible);
+    if (visible)
+    {
+      h += f * b;
+    }
+  }
+  return h;
+}
+
+std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vector<Probe>& probes,
+  const std::function<RGB(std::uint32_t triangle, const Vec3& x, const Vec3& n)>& at,
+  const Visibility* allTriangles)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<RGB> values(probes.size(), RGB(nan));
+  std::unique_ptr<Visibility> built;
+  if (!allTriangles)
+  {
+    built = std::make_unique<Visibility>(scene, Visibility::AllTriangles(scene));
+    allTriangles = built.get();
+  }
+  tbb::parallel_for(std::size_t(0), probes.size(), [&](std::size_t i) {
+    const Vec3 n = glm::normalize(probes[i].Normal);
+    const Vec3& x = probes[i].Position;
+    // The Euclidean distance to each facing triangle (its nearest edge when
+    // the foot is off it), minimised by an Embree point query that shrinks.
+    const std::int64_t nearest = allTriangles->NearestTriangle(x, std::numeric_limits<double>::infinity(),
+      [&](std::uint32_t t) {
+        if (glm::dot(scene.Normal(t), n) <= 0)
+        {
+          return std::numeric_limits<double>::infinity();
+        }
+        double u, v, w;
+        if (!ProjectOnTriangle(x, scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2), u, v, w))
+        {
+          return std::numeric_limits<double>::infinity();
+        }
+        const Vec3 corner[3] = { scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) };
+        if (u >= 0.0 && v >= 0.0 && w >= 0.0)
+        {
+          return glm::length(x - (u * corner[0] + v * corner[1] + w * corner[2]));
+        }
+        double d = std::numeric_limits<double>::infinity(); // off the triangle: its nearest edge
+        for (int k = 0; k < 3; ++k)
+        {
+          d = std::min(d, DistanceToSegment(x, corner[k], corner[(k + 1) % 3]));
+        }
+        return d;
+      },
+      true);
+    if (nearest >= 0)
+    {
+      values[i] = at(static_cast<std::uint32_t>(nearest), x, n);
+    }
+  });
+  return values;
+}
+} // namespace radiosity

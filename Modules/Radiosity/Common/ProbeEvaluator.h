@@ -1,0 +1,63 @@
+// Sensor values from a solution (SPEC: --probes): the irradiance a user would
+// see at a point with a normal, reconstructed from the solution itself.
+#ifndef Radiosity_ProbeEvaluator_h
+#define Radiosity_ProbeEvaluator_h
+
+#include "Radiosity/Common/SolutionMesh.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace radiosity
+{
+class Visibility;
+
+struct Probe
+{
+  Vec3 Position{ 0.0 };
+  Vec3 Normal{ 0.0, 0.0, 1.0 };
+};
+
+/**
+ * For each probe, `at` on the input triangle nearest to it among those
+ * facing its normal (the distance to the triangle's plane plus the distance
+ * from the foot to the triangle): how the methods whose solution lives on
+ * the input triangles (meshless, face cluster) answer probes. NaN where no
+ * triangle faces the probe. The search is an Embree point query over
+ * `allTriangles` (a Visibility built over every triangle of `scene`; built
+ * here when null), not a loop over the triangles.
+ */
+std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vector<Probe>& probes,
+  const std::function<RGB(std::uint32_t triangle, const Vec3& x, const Vec3& n)>& at,
+  const Visibility* allTriangles = nullptr);
+
+class ProbeEvaluator
+{
+public:
+  explicit ProbeEvaluator(const SolutionMesh& solution, const Scene& scene);
+  ~ProbeEvaluator();
+
+  /**
+   * On a surface (within 1e-6 of the scene size, normals within 25 degrees),
+   * the element's own interpolant (corner and centre samples); elsewhere, a
+   * gather of the solution's radiosity with exact point-to-polygon form
+   * factors and one visibility ray per element.
+   */
+  std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
+
+  /// How many of the last probes were gathered rather than interpolated.
+  std::size_t GatheredCount() const { return this->Gathered; }
+
+private:
+  RGB Gather(const Probe& probe) const;
+  const SolutionMesh& Solution;
+  const Scene& SourceScene;
+  std::unique_ptr<Visibility> Rays;
+  double Tolerance = 0.0;
+  mutable std::size_t Gathered = 0;
+};
+} // namespace radiosity
+
+#endif

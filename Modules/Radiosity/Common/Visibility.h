@@ -1,0 +1,89 @@
+// Segment visibility on Embree 3: one BVH over the triangles that can occlude
+// (SceneAnalysis), occlusion rays in batches (rtcOccluded1M).
+#ifndef Radiosity_Visibility_h
+#define Radiosity_Visibility_h
+
+#include "Radiosity/Common/Scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace radiosity
+{
+class Visibility
+{
+public:
+  /// Builds the BVH over the triangles with `canOcclude[t]` set.
+  Visibility(const Scene& scene, const std::vector<unsigned char>& canOcclude);
+  ~Visibility();
+  Visibility(const Visibility&) = delete;
+  Visibility& operator=(const Visibility&) = delete;
+
+  /// True when nothing can occlude: every segment is visible, no rays needed.
+  bool Empty() const { return this->NumberOfOccluders == 0; }
+
+  /**
+   * The self-intersection offset: a distance that scales with the scene size
+   * (Embree works in single precision, so the offset is relative to the
+   * scene's extent, and the same test passes at 1e-4 m and at 1e4 m).
+   */
+  double Offset() const { return this->Epsilon; }
+
+  /**
+   * For each i < n: visible[i] = 1 when the open segment from[i] -> to[i],
+   * shortened by the offset at both ends, hits no occluder, else 0.
+   * Thread-safe; call it from parallel loops with batches of segments.
+   */
+  void TestSegments(const Vec3* from, const Vec3* to, std::size_t n, unsigned char* visible) const;
+
+  /**
+   * Every occluder that any of the segments from[i] -> to[i] passes through
+   * (not only the nearest), appended to `triangles` as scene triangle indices
+   * (sorted, without repeats). These are the blockers of a link (Hanrahan,
+   * Salzman, Aupperle 1991; Hardt & Teller section 3). Thread-safe.
+   */
+  void CollectOccluders(
+    const Vec3* from, const Vec3* to, std::size_t n, std::vector<std::uint32_t>& triangles) const;
+
+  /**
+   * Every occluder whose bounding box meets the sphere (centre, radius),
+   * appended to `triangles` (Embree point query over the BVH): a superset of
+   * the blockers of any shaft inside the sphere. Thread-safe.
+   */
+  void OccludersInSphere(
+    const Vec3& centre, double radius, std::vector<std::uint32_t>& triangles) const;
+
+  /**
+   * The triangle t (scene index) that minimises `distance(t)` among those
+   * within `radius` of p, -1 when none: an Embree point query over the BVH,
+   * whose sphere shrinks to the best distance so far when `shrink` is set
+   * (then `distance` must be at least the Euclidean distance from p to t;
+   * infinity excludes t). Ties go to the lowest index, as a loop over the
+   * triangles would. Thread-safe.
+   */
+  std::int64_t NearestTriangle(const Vec3& p, double radius,
+    const std::function<double(std::uint32_t)>& distance, bool shrink) const;
+  /// Nearest hit of a ray, for primary rays of images; returns false on a miss.
+  /// Only meaningful when built over every triangle (see `AllTriangles`).
+  bool Intersect(const Vec3& origin, const Vec3& direction, double& t, unsigned& triangle,
+    double& u, double& v) const;
+
+  static std::vector<unsigned char> AllTriangles(const Scene& scene)
+  {
+    return std::vector<unsigned char>(scene.Triangles.size(), 1);
+  }
+
+  std::size_t RaysCast() const;
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+  std::size_t NumberOfOccluders = 0;
+  double Epsilon = 0.0;
+};
+} // namespace radiosity
+
+#endif

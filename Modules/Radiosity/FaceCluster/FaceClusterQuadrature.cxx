@@ -1,0 +1,229 @@
+#include "Radiosity/FaceCluster/FaceClusterQuadrature.h"
+
+#include "Radiosity/FaceCluster/FaceClusterTransfer.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace radiosity
+{
+namespace
+{
+// The hit of the line p + t n, |t| <= reach, with cluster id's triangles
+// nearest t = 0: true with the point and the triangle's unit normal.
+bool ProjectOntoCluster(const FaceClusterHierarchy& h, std::uint32_t id, const Vec3& p,
+  const Vec3& n, double reach, Vec3& hit, Vec3& normal)
+{
+  const Scene& scene = h.GetScene();
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<std::uint32_t> stack{ id };
+  while (!stack.empty())
+  {
+    const std::uint32_t node = stack.back();
+    stack.pop_back();
+    if (const FaceCluster* c = h.InternalCluster(node))
+    {
+      if (SegmentCrossesBox(*c, p - reach * n, 2.0 * reach * n, 0.0, 1.0))
+      {
+        stack.push_back(c->Child[0]);
+        stack.push_back(c->Child[1]);
+      }
+      continue;
+    }
+    double t = 0.0;
+    if (!LineHitsTriangle(scene.Vertex(node, 0), scene.Vertex(node, 1), scene.Vertex(node, 2), p, n, t) ||
+      std::abs(t) > reach || std::abs(t) >= best)
+    {
+      continue;
+    }
+    best = std::abs(t);
+    hit = p + t * n;
+    normal = scene.Normal(node);
+  }
+  return std::isfinite(best);
+}
+}
+
+void SurfaceRule::Fit(const double* values, std::size_t stride, double* coefficients) const
+{
+  for (int a = 0; a < this->Functions; ++a)
+  {
+    double s = 0.0;
+    for (std::size_t p = 0; p < this->Size(); ++p)
+    {
+      s += this->Dual[p * this->Functions + a] * values[p * stride];
+    }
+    coefficients[a] = s;
+  }
+}
+
+std::vector<double> DualWeights(const FaceCluster& frame, const PolynomialBasis& basis,
+  const std::vector<Vec3>& points, const std::vector<double>& weights)
+{
+  const int n = basis.Size();
+  const auto m = static_cast<Eigen::Index>(points.size());
+  Eigen::MatrixXd phi(m, n);
+  double total = 0.0;
+  double values[PolynomialBasis::MaximumSize];
+  for (Eigen::Index p = 0; p < m; ++p)
+  {
+    const glm::dvec2 uv = BoxCoordinates(frame, points[p]);
+    basis.Evaluate(uv.x, uv.y, values);
+    for (int a = 0; a < n; ++a)
+    {
+      phi(p, a) = values[a];
+    }
+    total += weights[p];
+  }
+  // Weighted least squares: c = (Phi^T W Phi)^+ Phi^T W f.
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index p = 0; p < m; ++p)
+  {
+    gram += (weights[p] / total) * phi.row(p).transpose() * phi.row(p);
+  }
+  const Eigen::MatrixXd inverse = gram.completeOrthogonalDecomposition().pseudoInverse();
+  std::vector<double> dual(static_cast<std::size_t>(m) * n);
+  for (Eigen::Index p = 0; p < m; ++p)
+  {
+    const Eigen::VectorXd d = inverse * phi.row(p).transpose() * (weights[p] / total);
+    for (int a = 0; a < n; ++a)
+    {
+      dual[p * n + a] = d(a);
+    }
+  }
+  return dual;
+}
+
+namespace
+{
+// The basis at the rule's nodes, its least-squares weights, and the weights
+// scaled to sum to the cluster's area.
+void FinishRule(const FaceCluster& c, const PolynomialBasis& basis, SurfaceRule& rule)
+{
+  double total = 0.0;
+  for (double w : rule.Weights)
+  {
+    total += w;
+  }
+  for (double& w : rule.Weights)
+  {
+    w *= double(c.Area) / total;
+  }
+  double values[PolynomialBasis::MaximumSize];
+  for (const Vec3& p : rule.Points)
+  {
+    const glm::dvec2 uv = BoxCoordinates(c, p);
+    basis.Evaluate(uv.x, uv.y, values);
+    rule.Phi.insert(rule.Phi.end(), values, values + rule.Functions);
+  }
+  rule.Dual = DualWeights(c, basis, rule.Points, rule.Weights);
+}
+}
+
+SurfaceRule MakeTriangleRule(const Vec3 corner[3], const FaceCluster& c, const PolynomialBasis& basis,
+  int nodesPerAxis)
+{
+  SurfaceRule rule;
+  rule.Functions = basis.Size();
+  double nodes[5], weights[5];
+  const int n = std::clamp(nodesPerAxis, 1, 5);
+  GaussLegendre(n, nodes, weights);
+  // Stroud's conical product: (s, t) in the square to corner0 + s e1 +
+  // (1 - s) t e2, Jacobian (1 - s).
+  const Vec3 e1 = corner[1] - corner[0], e2 = corner[2] - corner[0];
+  const Vec3 normal = c.MeanNormal();
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      rule.Points.push_back(corner[0] + nodes[i] * e1 + (1.0 - nodes[i]) * nodes[j] * e2);
+      rule.Normals.push_back(normal);
+      rule.Weights.push_back(weights[i] * weights[j] * (1.0 - nodes[i]));
+    }
+  }
+  FinishRule(c, basis, rule);
+  // Just inside, so that a corner on an emitter's edge (a contact edge) is
+  // not on the kernel's singularity.
+  const Vec3 centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
+  double values[PolynomialBasis::MaximumSize];
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3 x = corner[k] + 0.01 * (centroid - corner[k]);
+    rule.Controls.push_back(x);
+    rule.ControlNormals.push_back(normal);
+    const glm::dvec2 uv = BoxCoordinates(c, x);
+    basis.Evaluate(uv.x, uv.y, values);
+    rule.ControlPhi.insert(rule.ControlPhi.end(), values, values + rule.Functions);
+  }
+  return rule;
+}
+
+SurfaceRule MakeSurfaceRule(const FaceClusterHierarchy& hierarchy, std::uint32_t id,
+  const FaceCluster& c, const PolynomialBasis& basis, int nodesPerAxis)
+{
+  if (!hierarchy.InternalCluster(id))
+  {
+    const Scene& scene = hierarchy.GetScene();
+    const Vec3 corner[3] = { scene.Vertex(id, 0), scene.Vertex(id, 1), scene.Vertex(id, 2) };
+    return MakeTriangleRule(corner, c, basis, nodesPerAxis);
+  }
+  SurfaceRule rule;
+  rule.Functions = basis.Size();
+  double nodes[5], weights[5];
+  const int n = std::clamp(nodesPerAxis, 1, 5);
+  GaussLegendre(n, nodes, weights);
+  const Vec3 axis(c.Axis[2]);
+  const double plane = std::max(double(c.HalfSize.x), double(c.HalfSize.y));
+  const double reach = 1.01 * double(c.HalfSize.z) + 1e-6 * plane + 1e-12;
+  // A cluster that is not one flat sheet (its faces do not all look along
+  // its normal) gets nodes at its area quantiles instead, on every face:
+  // projected along the normal, the nodes would all land on the faces that
+  // look that way, and the transfer error would never see the others (the
+  // paper: "to ensure subdivision of side-on clusters, we distribute sample
+  // points on the entire cluster").
+  const bool sheet = c.DMinus[2] <= 1e-6f * c.Area && c.NormalProjectedArea() >= 0.98 * double(c.Area);
+  if (!sheet && c.Count > 1)
+  {
+    const std::vector<double>& cumulative = hierarchy.CumulativeArea();
+    const double start = cumulative[c.First], total = cumulative[c.First + c.Count] - start;
+    const int count = n * n;
+    for (int k = 0; k < count; ++k)
+    {
+      const double target = start + (k + 0.5) / count * total;
+      const auto it = std::upper_bound(cumulative.begin() + c.First + 1,
+        cumulative.begin() + c.First + c.Count + 1, target);
+      const std::size_t position = static_cast<std::size_t>(it - cumulative.begin()) - 1;
+      const std::uint32_t t = hierarchy.TriangleOrder()[std::min<std::size_t>(position, c.First + c.Count - 1)];
+      const Scene& scene = hierarchy.GetScene();
+      rule.Points.push_back(scene.Centroid(t));
+      rule.Normals.push_back(scene.Normal(t));
+      rule.Weights.push_back(1.0);
+    }
+  }
+  for (int i = 0; i < n && (sheet || c.Count <= 1); ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      Vec3 hit, normal;
+      if (ProjectOntoCluster(hierarchy, id, BoxPoint(c, nodes[i], nodes[j]), axis, reach, hit, normal))
+      {
+        rule.Points.push_back(hit);
+        rule.Normals.push_back(normal);
+        const double tilt = std::max(std::abs(glm::dot(normal, axis)), 0.05);
+        rule.Weights.push_back(weights[i] * weights[j] / tilt);
+      }
+    }
+  }
+  if (rule.Points.empty())
+  {
+    rule.Points.push_back(Vec3(c.Centroid));
+    rule.Normals.push_back(c.MeanNormal());
+    rule.Weights.push_back(1.0);
+  }
+  FinishRule(c, basis, rule);
+  return rule;
+}
+} // namespace radiosity

@@ -1,0 +1,175 @@
+// Hierarchical higher-order face cluster radiosity (Gobbetti, Spano & Agus
+// 2003, sections 3.2 to 3.4, Algorithm 1): vector irradiance and radiosity
+// expanded in orthonormal polynomial bases on the face clusters' box planes
+// (ClusterBasis), a solution hierarchy of elements over the face cluster
+// hierarchy, and the linkless shooting iteration: per iteration every
+// top-level element receives from the top-level elements with unshot
+// radiosity that face it, and TRANSPORT-LIGHT walks its hierarchy top-down
+// with a list of potential shooters per element; a transfer is accepted
+// when its BFA error (3.3.2) is below the tolerance, else the larger of the
+// emitter and the receiver is subdivided; non-convex elements refine their
+// self-transfer (3.3.3). Unshot vector irradiance is pushed down to the
+// leaves (only there is irradiance stored) and the leaves' new unshot
+// radiosity, (1 - F_ii) rho_i n_i . dE, is pulled back up (3.3.4). The
+// iteration stops on the infinity norm of the unshot radiosity relative to
+// the brightest emission; the geometric tail of the series is then added
+// (Aitken), as in the other solvers.
+//
+// Departures, as in DESIGN.md's note for this method: emission is the
+// elements' own (each element's first shot is its own cluster's mean
+// emission, not the parent's pushed average), pull weights are surface
+// areas (energy is conserved whatever the children's boxes), and a triangle
+// emitter's constant part uses the exact vector form factor.
+#ifndef Radiosity_FaceClusterRadiosity_h
+#define Radiosity_FaceClusterRadiosity_h
+
+#include "Radiosity/FaceCluster/FaceClusterTransfer.h"
+#include "Radiosity/Common/ProbeEvaluator.h"
+#include "Radiosity/Common/SolutionMesh.h"
+#include "Radiosity/Common/SolverTypes.h"
+
+#include <array>
+#include <deque>
+#include <memory>
+
+namespace radiosity
+{
+struct FaceClusterSettings
+{
+  BasisKind RadiosityBasis = BasisKind::Constant;
+  BasisKind IrradianceBasis = BasisKind::Linear;
+  /// Transfer error (W) accepted, relative to the scene's emitted power.
+  double TransferTolerance = 1e-5; // the paper's "relative transfer accuracy"
+  /// Stop when the largest unshot radiosity is below this fraction of the
+  /// brightest emission.
+  double Tolerance = 1e-4;
+  int MaxIterations = 200;
+  double MaxTimeSeconds = 0.0; ///< 0: no limit
+  int Threads = 0;
+  /// How many times an input triangle may be halved (longest-edge
+  /// bisection) below the face cluster hierarchy's leaves when a transfer
+  /// between two leaves is still too inaccurate; 0 keeps the paper's
+  /// leaves (the default: the paper's method, whose cost does not grow with
+  /// the input). A coarse input (a contact edge, slivers) otherwise keeps
+  /// one expansion per triangle whatever the light.
+  int MaxBisections = 0;
+  /// Bytes the hierarchy and the elements may use; 0: 75% of physical
+  /// memory. Checked before the hierarchy is built and as elements are made.
+  double MemoryBudgetBytes = 0.0;
+  TransferRule Rule;
+  FaceClusterOptions Clustering;
+};
+
+/// Irradiance vector: one vector per colour channel.
+using IrradianceVector = std::array<Vec3, 3>;
+
+struct FaceClusterElement
+{
+  std::uint32_t Cluster = 0;
+  std::int32_t Parent = -1;
+  std::int32_t Child[2]{ -1, -1 };
+  FaceCluster Data;
+  SurfaceRule Rule;                  ///< nodes on its surface, irradiance basis
+  std::vector<double> RadiosityDual; ///< least-squares weights of the radiosity basis
+  std::vector<double> PushE;         ///< irradiance from the parent, N_e x N_e
+  std::vector<double> PushB;         ///< radiosity from the parent, N_b x N_b
+  std::vector<double> PullB;         ///< radiosity to the parent, N_b x N_b
+  std::vector<RGB> Unshot, Next;           ///< radiosity coefficients, N_b
+  /// The range of the unshot radiosity (mean of the channels) over the
+  /// leaves' nodes below: the emitter bounds of the transfer error (3.3.2).
+  double UnshotMin = 0.0, UnshotMax = 0.0, NextMin = 0.0, NextMax = 0.0;
+  std::vector<IrradianceVector> Irradiance; ///< N_e coefficients, leaves only
+  std::vector<IrradianceVector> LastIncrement;
+  std::vector<std::int32_t> Shooters;
+  /// Per channel, the bounds of the expansion's components at the nodes:
+  /// the limiter of Expansion (leaves, after the solve).
+  IrradianceVector Lowest{}, Highest{};
+  /// A single triangle's corners (an input triangle, or a part of one).
+  std::array<Vec3, 3> Corners{};
+  int Bisections = 0; ///< halvings below the input triangle
+  bool IsLeaf() const { return this->Child[0] < 0; }
+  /// An input triangle or a part of one (its cluster data is a leaf's).
+  bool IsTriangle() const { return this->Data.IsLeaf(); }
+};
+
+struct FaceClusterStatistics
+{
+  std::size_t Elements = 0;
+  std::size_t LeafElements = 0;
+  std::size_t Transfers = 0;     ///< accepted energy transfers, all iterations
+  std::size_t Refinements = 0;   ///< transfers refined instead
+  std::size_t SolutionBytes = 0; ///< the element hierarchy
+  double HierarchySeconds = 0.0;
+  double SolveSeconds = 0.0;
+};
+
+class FaceClusterRadiosity
+{
+public:
+  /// Takes (or builds, through FaceClusterHierarchy::Shared) the hierarchy.
+  FaceClusterRadiosity(const Scene& scene, const FaceClusterSettings& settings,
+    std::shared_ptr<const FaceClusterHierarchy> hierarchy = nullptr);
+
+  SolverStatistics Solve(const ProgressCallback& progress = {});
+
+  /// The irradiance vector at x on triangle t, from the leaf element there.
+  IrradianceVector IrradianceVectorAt(std::uint32_t t, const Vec3& x) const;
+  /// Irradiance (W/m^2) at x with normal n on triangle t: (n . E_c)_+.
+  RGB IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const;
+  /// Per scene point: the irradiance vector (9 values: R, G, B vectors),
+  /// the mean over the triangles using the point of their leaf elements'
+  /// expansions at it (section 3.5: what the display interpolates).
+  std::vector<std::array<double, 9>> VertexIrradianceVectors() const;
+  /// Irradiance at probes, on the nearest input triangle facing each.
+  std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
+  /// The input triangles with the SPEC output fields: per triangle, the
+  /// irradiance of its leaf element's expansion at its corners and centre;
+  /// `ElementId` is the leaf element's cluster, `Level` its depth.
+  SolutionMesh Surface() const;
+  /// The leaf element holding x on triangle t (triangle t itself, a part
+  /// of it, or a cluster holding it).
+  std::int32_t LeafAt(std::uint32_t t, const Vec3& x) const;
+  /// The element of triangle t itself, or the leaf cluster holding it: the
+  /// descent through the clusters, once per triangle.
+  std::int32_t ElementOf(std::uint32_t t) const;
+  /// The leaf below element e (a triangle's parts) that x is in.
+  std::int32_t PartAt(std::int32_t e, const Vec3& x) const;
+
+  const FaceClusterStatistics& Statistics() const { return this->Stats; }
+  const std::deque<FaceClusterElement>& Elements() const { return this->Nodes; }
+  const FaceClusterHierarchy& Hierarchy() const { return *this->Clusters; }
+  std::shared_ptr<const FaceClusterHierarchy> SharedHierarchy() const { return this->Clusters; }
+  const Scene& GetScene() const { return this->Clusters->GetScene(); }
+
+private:
+  FaceClusterSettings Settings;
+  std::shared_ptr<const FaceClusterHierarchy> Clusters;
+  std::unique_ptr<FaceClusterVisibility> Visibility;
+  PolynomialBasis RadiosityBasis;
+  PolynomialBasis IrradianceBasis;
+  std::deque<FaceClusterElement> Nodes;
+  std::vector<std::int32_t> Top;
+  FaceClusterStatistics Stats;
+  int Iteration = 0;
+  double Epsilon = 0.0;
+  double Budget = 0.0;        ///< bytes (MemoryBudgetBytes resolved)
+  double BytesPerElement = 0.0; ///< an element with its basis coefficients
+
+  /// The irradiance vector of element e's expansion at x (zero for e < 0),
+  /// limited to the range it takes at the element's nodes.
+  IrradianceVector Expansion(std::int32_t e, const Vec3& x) const;
+  /// Lowest and Highest of every leaf.
+  void BoundLeafExpansions();
+  /// An element of `cluster`, or with `corners`, of a part of that
+  /// triangle (cluster) below the input.
+  std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent, const Vec3* corners = nullptr);
+  bool CanSubdivide(const FaceClusterElement& e) const;
+  void Subdivide(std::int32_t e);
+  bool HasUnshot(const FaceClusterElement& e) const;
+  void TransportLight(std::int32_t i, const std::vector<IrradianceVector>& up);
+  void Gather(std::int32_t i, std::int32_t j, std::vector<IrradianceVector>& into);
+  void AddShooter(std::int32_t receiver, std::int32_t emitter);
+};
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,260 @@
+// The output side of FaceClusterRadiosity: the leaf elements' irradiance
+// expansions evaluated on the input triangles, at their vertices and at
+// probes (section 3.5, and SPEC: probes from the vector irradiance bases).
+#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/Common/MeshProbeTracker.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace radiosity
+{
+namespace
+{
+// The least barycentric coordinate of x (projected into the triangle's
+// plane): positive inside, the larger the deeper.
+double DepthInside(const std::array<Vec3, 3>& c, const Vec3& x)
+{
+  double u, v, w;
+  if (!ProjectOnTriangle(x, c[0], c[1], c[2], u, v, w))
+  {
+    return -std::numeric_limits<double>::infinity();
+  }
+  return std::min({ u, v, w });
+}
+
+RGB Received(const IrradianceVector& v, const Vec3& n)
+{
+  return RGB(std::max(glm::dot(n, v[0]), 0.0), std::max(glm::dot(n, v[1]), 0.0),
+    std::max(glm::dot(n, v[2]), 0.0));
+}
+}
+
+std::int32_t FaceClusterRadiosity::LeafAt(std::uint32_t t, const Vec3& x) const
+{
+  return this->PartAt(this->ElementOf(t), x);
+}
+
+std::int32_t FaceClusterRadiosity::ElementOf(std::uint32_t t) const
+{
+  const std::uint32_t position = this->Clusters->TrianglePosition(t);
+  auto holds = [position](const FaceClusterElement& e) {
+    return position >= e.Data.First && position < e.Data.First + e.Data.Count;
+  };
+  std::int32_t e = -1;
+  for (std::int32_t top : this->Top)
+  {
+    if (holds(this->Nodes[top]))
+    {
+      e = top;
+      break;
+    }
+  }
+  while (e >= 0 && !this->Nodes[e].IsLeaf() && !this->Nodes[e].IsTriangle())
+  {
+    const std::int32_t k0 = this->Nodes[e].Child[0];
+    e = holds(this->Nodes[k0]) ? k0 : this->Nodes[e].Child[1];
+  }
+  return e;
+}
+
+std::int32_t FaceClusterRadiosity::PartAt(std::int32_t e, const Vec3& x) const
+{
+  while (e >= 0 && !this->Nodes[e].IsLeaf())
+  {
+    // Parts of one triangle: the one x is deepest inside.
+    const std::int32_t k0 = this->Nodes[e].Child[0], k1 = this->Nodes[e].Child[1];
+    e = DepthInside(this->Nodes[k0].Corners, x) >= DepthInside(this->Nodes[k1].Corners, x) ? k0 : k1;
+  }
+  return e;
+}
+
+IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x) const
+{
+  IrradianceVector v{};
+  if (e < 0)
+  {
+    return v;
+  }
+  const FaceClusterElement& leaf = this->Nodes[e];
+  const glm::dvec2 uv = glm::clamp(BoxCoordinates(leaf.Data, x), glm::dvec2(0.0), glm::dvec2(1.0));
+  double phi[PolynomialBasis::MaximumSize];
+  this->IrradianceBasis.Evaluate(uv.x, uv.y, phi);
+  for (int a = 0; a < this->IrradianceBasis.Size(); ++a)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] += phi[a] * leaf.Irradiance[a][c];
+    }
+  }
+  // A limiter, as for discontinuous Galerkin solutions (Barth & Jespersen
+  // 1989): between its nodes a fit is faithful, but out at a curved
+  // cluster's vertices a quadratic one can overshoot, even below zero
+  // (black specks on a glossy statue). The part above the mean is scaled
+  // back until every component lies within its range at the nodes, widened
+  // by half of it.
+  double theta = 1.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const Vec3 mean = phi[0] * leaf.Irradiance[0][c];
+    for (int k = 0; k < 3; ++k)
+    {
+      // Slack of half the range: a steady gradient runs on past the
+      // outermost nodes to the element's edge (a contact edge), an
+      // overshoot does not.
+      const double slack = 0.5 * (leaf.Highest[c][k] - leaf.Lowest[c][k]);
+      const double high = leaf.Highest[c][k] + slack, low = leaf.Lowest[c][k] - slack;
+      const double rise = v[c][k] - mean[k];
+      if (v[c][k] > high && rise > 0.0)
+      {
+        theta = std::min(theta, std::max(high - mean[k], 0.0) / rise);
+      }
+      else if (v[c][k] < low && rise < 0.0)
+      {
+        theta = std::min(theta, std::min(low - mean[k], 0.0) / rise);
+      }
+    }
+  }
+  if (theta < 1.0)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const Vec3 mean = phi[0] * leaf.Irradiance[0][c];
+      v[c] = mean + theta * (v[c] - mean);
+    }
+  }
+  return v;
+}
+
+void FaceClusterRadiosity::BoundLeafExpansions()
+{
+  const int ne = this->IrradianceBasis.Size();
+  for (FaceClusterElement& e : this->Nodes)
+  {
+    if (!e.IsLeaf())
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      e.Lowest[c] = Vec3(std::numeric_limits<double>::infinity());
+      e.Highest[c] = Vec3(-std::numeric_limits<double>::infinity());
+    }
+    for (std::size_t q = 0; q < e.Rule.Size(); ++q)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        Vec3 atNode(0.0);
+        for (int a = 0; a < ne; ++a)
+        {
+          atNode += e.Rule.Phi[q * ne + a] * e.Irradiance[a][c];
+        }
+        e.Lowest[c] = glm::min(e.Lowest[c], atNode);
+        e.Highest[c] = glm::max(e.Highest[c], atNode);
+      }
+    }
+  }
+}
+
+IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const Vec3& x) const
+{
+  return this->Expansion(this->LeafAt(t, x), x);
+}
+
+RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const
+{
+  return Received(this->IrradianceVectorAt(t, x), n);
+}
+
+std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors() const
+{
+  const Scene& scene = this->GetScene();
+  std::vector<std::array<double, 9>> out(scene.Points.size(), std::array<double, 9>{});
+  std::vector<int> count(scene.Points.size(), 0);
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    const std::int32_t element = this->ElementOf(static_cast<std::uint32_t>(t));
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t v = scene.Triangles[t].V[k];
+      const IrradianceVector e = this->Expansion(this->PartAt(element, scene.Points[v]), scene.Points[v]);
+      for (int c = 0; c < 3; ++c)
+      {
+        for (int d = 0; d < 3; ++d)
+        {
+          out[v][3 * c + d] += e[c][d];
+        }
+      }
+      ++count[v];
+    }
+  }
+  for (std::size_t v = 0; v < out.size(); ++v)
+  {
+    if (count[v] > 0)
+    {
+      for (double& x : out[v])
+      {
+        x /= count[v];
+      }
+    }
+  }
+  return out;
+}
+
+SolutionMesh FaceClusterRadiosity::Surface() const
+{
+  const Scene& scene = this->GetScene();
+  SolutionMesh out;
+  out.Points = scene.Points;
+  out.Triangles = scene.Triangles;
+  out.PointIrradiance.assign(scene.Points.size(), RGB(0.0));
+  out.PointRadiosity.assign(scene.Points.size(), RGB(0.0));
+  std::vector<double> weight(scene.Points.size(), 0.0);
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    const auto id = static_cast<std::uint32_t>(t);
+    const Vec3 n = scene.Normal(t);
+    const Material& m = scene.Materials[t];
+    const std::int32_t element = this->ElementOf(id);
+    const std::int32_t leaf = this->PartAt(element, scene.Centroid(t));
+    ElementSamples samples;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3 corner = scene.Vertex(t, k);
+      samples.Corner[k] = Received(this->Expansion(this->PartAt(element, corner), corner), n);
+    }
+    samples.Centre = Received(this->Expansion(leaf, scene.Centroid(t)), n);
+    const RGB h = samples.Mean();
+    out.CellIrradiance.push_back(h);
+    out.CellRadiosity.push_back(m.Emission + m.Reflectance * h);
+    out.ElementId.push_back(leaf >= 0 ? this->Nodes[leaf].Cluster : 0u);
+    out.Level.push_back(static_cast<std::uint16_t>(leaf >= 0 ? this->Nodes[leaf].Data.Depth : 0));
+    out.SourceTriangle.push_back(id);
+    out.Samples.push_back(samples);
+    out.Normals.push_back(n);
+    const double area = scene.Area(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t v = scene.Triangles[t].V[k];
+      out.PointIrradiance[v] += area * samples.Corner[k];
+      out.PointRadiosity[v] += area * (m.Emission + m.Reflectance * samples.Corner[k]);
+      weight[v] += area;
+    }
+  }
+  for (std::size_t p = 0; p < weight.size(); ++p)
+  {
+    if (weight[p] > 0.0)
+    {
+      out.PointIrradiance[p] /= weight[p];
+      out.PointRadiosity[p] /= weight[p];
+    }
+  }
+  return out;
+}
+
+std::vector<RGB> FaceClusterRadiosity::Evaluate(const std::vector<Probe>& probes) const
+{
+  return EvaluateOnNearestTriangles(this->GetScene(), probes,
+    [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->IrradianceAt(t, x, n); });
+}
+} // namespace radiosity

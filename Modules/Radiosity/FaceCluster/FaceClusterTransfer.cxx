@@ -1,0 +1,229 @@
+#include "Radiosity/FaceCluster/FaceClusterTransfer.h"
+
+#include "Radiosity/Common/FormFactor.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace radiosity
+{
+void GaussLegendre(int n, double* nodes, double* weights)
+{
+  // On [-1, 1], mapped to [0, 1].
+  static const double x[5][5] = { { 0.0 }, { -0.57735026918962576, 0.57735026918962576 },
+    { -0.77459666924148338, 0.0, 0.77459666924148338 },
+    { -0.86113631159405258, -0.33998104358485626, 0.33998104358485626, 0.86113631159405258 },
+    { -0.90617984593866399, -0.53846931010568309, 0.0, 0.53846931010568309, 0.90617984593866399 } };
+  static const double w[5][5] = { { 2.0 }, { 1.0, 1.0 },
+    { 0.55555555555555556, 0.88888888888888889, 0.55555555555555556 },
+    { 0.34785484513745386, 0.65214515486254614, 0.65214515486254614, 0.34785484513745386 },
+    { 0.23692688505618909, 0.47862867049936647, 0.56888888888888889, 0.47862867049936647,
+      0.23692688505618909 } };
+  n = std::clamp(n, 1, 5);
+  for (int i = 0; i < n; ++i)
+  {
+    nodes[i] = 0.5 * (x[n - 1][i] + 1.0);
+    weights[i] = 0.5 * w[n - 1][i];
+  }
+}
+
+bool ClusterFaces(const FaceCluster& from, const FaceCluster& to)
+{
+  if (from.DMinus[2] > 1e-6f * from.Area)
+  {
+    return true; // faces pointing both ways
+  }
+  const Vec3 n(from.Axis[2]);
+  const Vec3 c(from.Centre);
+  const double below = -double(from.HalfSize.z) - 1e-9 * (1.0 + glm::length(c));
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    Vec3 p(to.Centre);
+    for (int j = 0; j < 3; ++j)
+    {
+      p += ((corner >> j) & 1 ? 1.0 : -1.0) * double(to.HalfSize[j]) * Vec3(to.Axis[j]);
+    }
+    if (glm::dot(p - c, n) > below)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+double SelfTransferError(const FaceCluster& c, double radiosityMax)
+{
+  return radiosityMax * (c.SelfFormFactorUpper() - c.SelfFormFactorLower()) * c.Area;
+}
+
+Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter,
+  const std::vector<RGB>& radiosity, double radiosityMin, double radiosityMax,
+  const FaceClusterVisibility& visibility, const TransferRule& rule)
+{
+  const FaceCluster& ri = *receiver.Cluster;
+  const FaceCluster& ej = *emitter.Cluster;
+  const SurfaceRule& rr = *receiver.Rule;
+  const SurfaceRule& er = *emitter.Rule;
+  const int ne = receiver.Functions, nb = emitter.Functions;
+  Transfer out;
+  out.Receivers = ne;
+  out.Emitters = nb;
+  out.K.assign(static_cast<std::size_t>(ne) * nb, Vec3(0.0));
+  const double spacing = 2.0 * std::max(double(ri.HalfSize.x), double(ri.HalfSize.y)) /
+    std::max(rule.Nodes, 1) * rule.VisibilityThreshold;
+
+  // The emitter's constant part by exact vector form factors, so that the
+  // 1/r^2 singularity next to an adjacent emitter costs no accuracy: the sum
+  // over its triangles for a cluster of at most ExactTriangles of them, and
+  // for a larger flat one its box rectangle's, scaled by the fraction of the
+  // rectangle its surface covers (A^(n) / |R|). Higher orders, and large
+  // clusters that are not flat, by the rule.
+  constexpr std::uint32_t ExactTriangles = 64;
+  const FaceClusterHierarchy& hierarchy = visibility.Hierarchy();
+  const Scene& scene = hierarchy.GetScene();
+  const double planeSize = std::max(double(ej.HalfSize.x), double(ej.HalfSize.y));
+  const bool small = ej.Count <= ExactTriangles;
+  const bool flat = !small && ej.DMinus[2] <= 1e-6f * ej.Area &&
+    double(ej.HalfSize.z) <= 1e-3 * planeSize && RectangleArea(ej) > 0.0;
+  const bool exactConstant = small || flat;
+  Vec3 rectangle[4];
+  double coverage = 1.0;
+  if (flat)
+  {
+    rectangle[0] = BoxPoint(ej, 0.0, 0.0);
+    rectangle[1] = BoxPoint(ej, 1.0, 0.0);
+    rectangle[2] = BoxPoint(ej, 1.0, 1.0);
+    rectangle[3] = BoxPoint(ej, 0.0, 1.0);
+    coverage = ej.NormalProjectedArea() / RectangleArea(ej);
+  }
+  // Clipped to each receiver node's hemisphere: the parts of an emitter
+  // below a node's tangent plane would otherwise cancel the parts above in
+  // n . E (a floor running under a block's face).
+  auto exactVector = [&](const Vec3& x, const Vec3& n) {
+    if (emitter.Corners)
+    {
+      return PointToPolygonVectorFormFactor(x, emitter.Corners, 3, &n);
+    }
+    if (flat)
+    {
+      return coverage * PointToPolygonVectorFormFactor(x, rectangle, 4, &n);
+    }
+    Vec3 sum(0.0);
+    for (std::uint32_t k = ej.First; k < ej.First + ej.Count; ++k)
+    {
+      const std::uint32_t t = hierarchy.TriangleOrder()[k];
+      const Vec3 tri[3] = { scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) };
+      sum += PointToPolygonVectorFormFactor(x, tri, 3, &n);
+    }
+    return sum;
+  };
+
+  // The receiver's nodes, then its control points.
+  const std::size_t np = rr.Size(), nc = rr.Controls.size(), nq = er.Size();
+  double departure = 0.0;
+  std::vector<Vec3> atNode((np + nc) * nb, Vec3(0.0)); // sum_q Phi_b(y_q) g_pq
+  std::vector<double> upper(np + nc, 0.0), lower(np + nc, std::numeric_limits<double>::infinity());
+  std::vector<char> shadowed(np + nc, 0);
+  // In parallel: each point's emitter nodes' rays.
+  tbb::parallel_for(std::size_t(0), np + nc, [&](std::size_t p) {
+    const Vec3& x = p < np ? rr.Points[p] : rr.Controls[p - np];
+    const Vec3& normal = p < np ? rr.Normals[p] : rr.ControlNormals[p - np];
+    double visibleSum = 0.0, weightSum = 0.0;
+    for (std::size_t q = 0; q < nq; ++q)
+    {
+      const Vec3& y = er.Points[q];
+      const Vec3 r = y - x;
+      const double d2 = glm::dot(r, r);
+      if (!(d2 > 0.0))
+      {
+        continue;
+      }
+      const Vec3 dir = r / std::sqrt(d2);
+      if (glm::dot(normal, dir) <= 0.0)
+      {
+        continue; // below the point's horizon
+      }
+      const double v = visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing);
+      shadowed[p] |= v < 1.0 ? 1 : 0;
+      visibleSum += er.Weights[q] * v;
+      weightSum += er.Weights[q];
+      // The point kernel m(x, y) dA_y of eq. 3 with the node's own normal.
+      const double cosine = std::max(-glm::dot(er.Normals[q], dir), 0.0);
+      const double g = er.Weights[q] * v * cosine / (Pi * d2);
+      for (int b = exactConstant ? 1 : 0; b < nb; ++b)
+      {
+        atNode[p * nb + b] += (er.Phi[q * er.Functions + b] * g) * dir;
+      }
+      // 3.3.2: bounds on B F A over the emitter's nodes.
+      const double scale = v / (Pi * d2);
+      upper[p] = std::max(upper[p], radiosityMax * scale * ri.MaxProjectedArea(dir) * ej.MaxProjectedArea(-dir));
+      lower[p] = std::min(lower[p], radiosityMin * scale * ri.MinProjectedArea(dir) * ej.MinProjectedArea(-dir));
+    }
+    if (exactConstant)
+    {
+      const double v = weightSum > 0.0 ? visibleSum / weightSum : 1.0;
+      atNode[p * nb] = v * exactVector(x, normal);
+    }
+  });
+  for (std::size_t p = 0; p < np; ++p)
+  {
+    for (int a = 0; a < ne; ++a)
+    {
+      const double d = rr.Dual[p * rr.Functions + a];
+      for (int b = 0; b < nb; ++b)
+      {
+        out.K[a * nb + b] += d * atNode[p * nb + b];
+      }
+    }
+  }
+  // 3.3.2, "the value interpolated using the element basis" against direct
+  // integration, at the nodes and at the control points.
+  for (std::size_t p = 0; p < np + nc; ++p)
+  {
+    const double* phi = p < np ? &rr.Phi[p * rr.Functions] : &rr.ControlPhi[(p - np) * rr.Functions];
+    const Vec3& normal = p < np ? rr.Normals[p] : rr.ControlNormals[p - np];
+    Vec3 fitted(0.0), direct(0.0);
+    for (int b = 0; b < nb; ++b)
+    {
+      const double radiosityB = Mean(radiosity[b]);
+      direct += radiosityB * atNode[p * nb + b];
+      for (int a = 0; a < ne; ++a)
+      {
+        fitted += (phi[a] * radiosityB) * out.K[a * nb + b];
+      }
+    }
+    out.FitError = std::max(out.FitError, ri.Area * std::abs(glm::dot(normal, fitted - direct)));
+  }
+  // The bounds on BFA over the emitter's nodes (3.3.2) where the direct
+  // values are themselves estimates: occluded or sampled emitters, or a
+  // radiosity that is not uniform (over the emitter's leaves, as the solver
+  // tracks it). An unoccluded uniform emitter's direct values are exact
+  // (vector form factors), and its parts' bounds, which never tighten next
+  // to a shared edge, would refine it for nothing.
+  bool uniform = exactConstant && radiosityMax - radiosityMin <= 1e-6 * radiosityMax;
+  for (int b = 1; b < nb && uniform; ++b)
+  {
+    uniform = MaxComponent(glm::abs(radiosity[b])) <= 1e-9 * MaxComponent(glm::abs(radiosity[0]));
+  }
+  const bool exact = uniform && std::none_of(shadowed.begin(), shadowed.end(), [](char c) { return c != 0; });
+  for (std::size_t p = 0; p < np && !exact; ++p)
+  {
+    Vec3 e(0.0);
+    for (int a = 0; a < ne; ++a)
+    {
+      for (int b = 0; b < nb; ++b)
+      {
+        e += (rr.Phi[p * rr.Functions + a] * Mean(radiosity[b])) * out.K[a * nb + b];
+      }
+    }
+    const double bfa = ri.Area * std::max(glm::dot(rr.Normals[p], e), 0.0);
+    const double lo = std::isfinite(lower[p]) ? lower[p] : 0.0;
+    departure = std::max({ departure, std::abs(bfa - upper[p]), std::abs(bfa - lo) });
+  }
+  out.Error = std::max(departure, out.FitError);
+  return out;
+}
+} // namespace radiosity

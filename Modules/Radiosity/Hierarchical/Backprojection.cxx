@@ -1,0 +1,279 @@
+#include "Radiosity/Hierarchical/Backprojection.h"
+
+#include "Radiosity/Common/FormFactor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace radiosity
+{
+namespace
+{
+struct Point2
+{
+  double X, Y;
+};
+
+/// A convex polygon in the source plane with a fixed capacity: fragments are
+/// clipped millions of times, and heap allocation dominated the cost.
+struct Polygon2
+{
+  static constexpr int Capacity = 16;
+  Point2 V[Capacity];
+  int N = 0;
+  void Push(const Point2& p) { V[N++] = p; }
+};
+
+double Cross(const Point2& o, const Point2& a, const Point2& b)
+{
+  return (a.X - o.X) * (b.Y - o.Y) - (a.Y - o.Y) * (b.X - o.X);
+}
+
+double SignedArea(const Polygon2& p)
+{
+  double a = 0.0;
+  for (int i = 0; i < p.N; ++i)
+  {
+    const Point2& u = p.V[i];
+    const Point2& v = p.V[(i + 1) % p.N];
+    a += u.X * v.Y - v.X * u.Y;
+  }
+  return 0.5 * a;
+}
+
+// Sutherland-Hodgman split by the line a->b into its left and right parts in
+// one pass; false when a part would not fit (the caller stops subtracting).
+bool SplitByLine(const Polygon2& in, const Point2& a, const Point2& b, Polygon2& left, Polygon2& right)
+{
+  left.N = right.N = 0;
+  for (int i = 0; i < in.N; ++i)
+  {
+    const Point2& p = in.V[i];
+    const Point2& q = in.V[(i + 1) % in.N];
+    const double dp = Cross(a, b, p);
+    const double dq = Cross(a, b, q);
+    if (left.N + 2 > Polygon2::Capacity || right.N + 2 > Polygon2::Capacity)
+    {
+      return false;
+    }
+    if (dp >= 0)
+    {
+      left.Push(p);
+    }
+    if (dp <= 0)
+    {
+      right.Push(p);
+    }
+    if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0))
+    {
+      const double t = dp / (dp - dq);
+      const Point2 x{ p.X + t * (q.X - p.X), p.Y + t * (q.Y - p.Y) };
+      left.Push(x);
+      right.Push(x);
+    }
+  }
+  return true;
+}
+
+// Clip of a small 3D polygon to the half-space dot(p, m) - offset >= 0.
+int ClipPlane(const Vec3* in, int n, const Vec3& m, double offset, Vec3* out)
+{
+  int k = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    const Vec3& p = in[i];
+    const Vec3& q = in[(i + 1) % n];
+    const double dp = glm::dot(p, m) - offset;
+    const double dq = glm::dot(q, m) - offset;
+    if (dp >= 0)
+    {
+      out[k++] = p;
+    }
+    if ((dp >= 0) != (dq >= 0))
+    {
+      out[k++] = p + (dp / (dp - dq)) * (q - p);
+    }
+  }
+  return k;
+}
+
+struct Box2
+{
+  double X0 = 1e300, Y0 = 1e300, X1 = -1e300, Y1 = -1e300;
+  explicit Box2(const Polygon2& p)
+  {
+    for (int i = 0; i < p.N; ++i)
+    {
+      X0 = std::min(X0, p.V[i].X);
+      Y0 = std::min(Y0, p.V[i].Y);
+      X1 = std::max(X1, p.V[i].X);
+      Y1 = std::max(Y1, p.V[i].Y);
+    }
+  }
+  bool Overlaps(const Box2& o) const
+  {
+    return X0 < o.X1 && o.X0 < X1 && Y0 < o.Y1 && o.Y0 < Y1;
+  }
+};
+
+// Fragment minus a convex counter-clockwise polygon: the parts of `piece`
+// outside each edge of `hole` in turn (disjoint by construction). False when
+// a fragment outgrew its capacity (then `piece` is kept whole).
+bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::vector<Polygon2>& out)
+{
+  const std::size_t first = out.size();
+  Polygon2 rest = piece, inside, outside;
+  for (int i = 0; i < hole.N && rest.N >= 3; ++i)
+  {
+    const Point2& a = hole.V[i];
+    const Point2& b = hole.V[(i + 1) % hole.N];
+    if (!SplitByLine(rest, a, b, inside, outside))
+    {
+      out.resize(first);
+      out.push_back(piece);
+      return false;
+    }
+    if (outside.N >= 3 && std::abs(SignedArea(outside)) > minArea)
+    {
+      out.push_back(outside);
+    }
+    rest = inside;
+  }
+  return true;
+}
+} // namespace
+
+double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+  const TriangleCorners* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
+{
+  if (exact)
+  {
+    *exact = true;
+  }
+  const Vec3 e1 = source[1] - source[0];
+  const Vec3 e2 = source[2] - source[0];
+  const Vec3 cross = glm::cross(e1, e2);
+  const double twiceArea = glm::length(cross);
+  if (!(twiceArea > 0))
+  {
+    return 0.0;
+  }
+  const Vec3 m = cross / twiceArea;
+  const double planeOffset = glm::dot(source[0], m);
+  const double height = glm::dot(x, m) - planeOffset;
+  if (!(height > 0))
+  {
+    return 0.0; // behind the one-sided source
+  }
+  if (blockerCount == 0)
+  {
+    return PointToPolygonFormFactor(x, n, source.data(), 3);
+  }
+
+  // 2D frame in the source plane.
+  const Vec3 u = e1 / glm::length(e1);
+  const Vec3 v = glm::cross(m, u);
+  auto to2 = [&](const Vec3& p) {
+    const Vec3 d = p - source[0];
+    return Point2{ glm::dot(d, u), glm::dot(d, v) };
+  };
+  auto to3 = [&](const Point2& p) { return source[0] + p.X * u + p.Y * v; };
+
+  const double sourceArea = 0.5 * twiceArea;
+  const double minArea = 1e-14 * sourceArea;
+  thread_local std::vector<Polygon2> visible, next;
+  visible.clear();
+  {
+    Polygon2 whole;
+    whole.Push(to2(source[0]));
+    whole.Push(to2(source[1]));
+    whole.Push(to2(source[2]));
+    visible.push_back(whole);
+  }
+  // Blocker parts within this distance of either plane cast no shadow worth
+  // a fragment (and would project to infinity at the receiver's plane).
+  const double slack = 1e-9 * height;
+  const double xLevel = glm::dot(x, m);
+
+  for (std::size_t b = 0; b < blockerCount && !visible.empty(); ++b)
+  {
+    const TriangleCorners& tri = blockers[b];
+    Vec3 poly[5], clipped[5];
+    int n = 3;
+    const double l0 = glm::dot(tri[0], m), l1 = glm::dot(tri[1], m), l2 = glm::dot(tri[2], m);
+    const double lo = planeOffset + slack, hi = xLevel - slack;
+    if (std::max({ l0, l1, l2 }) <= lo || std::min({ l0, l1, l2 }) >= hi)
+    {
+      continue; // wholly behind the source or behind the point
+    }
+    n = ClipPlane(tri.data(), 3, m, lo, clipped);
+    n = ClipPlane(clipped, n, -m, -hi, poly);
+    if (n < 3)
+    {
+      continue;
+    }
+    Polygon2 shadow;
+    for (int i = 0; i < n; ++i)
+    {
+      const double t = height / (xLevel - glm::dot(poly[i], m));
+      shadow.Push(to2(x + t * (poly[i] - x)));
+    }
+    const double area = SignedArea(shadow);
+    if (std::abs(area) <= minArea)
+    {
+      continue; // seen edge-on from x
+    }
+    if (area < 0)
+    {
+      std::reverse(shadow.V, shadow.V + shadow.N);
+    }
+    const Box2 shadowBox(shadow);
+    next.clear();
+    for (const Polygon2& piece : visible)
+    {
+      if (!Box2(piece).Overlaps(shadowBox))
+      {
+        next.push_back(piece);
+        continue;
+      }
+      if (!Subtract(piece, shadow, minArea, next) && exact)
+      {
+        *exact = false;
+      }
+    }
+    visible.swap(next);
+    if (visible.size() > fragmentsLimit)
+    {
+      if (exact)
+      {
+        *exact = false;
+      }
+      break;
+    }
+  }
+
+  double factor = 0.0;
+  Vec3 poly3[Polygon2::Capacity];
+  for (const Polygon2& piece : visible)
+  {
+    for (int i = 0; i < piece.N; ++i)
+    {
+      poly3[i] = to3(piece.V[i]);
+    }
+    // The contour kernel takes up to 8 vertices; larger convex fragments as fans.
+    if (piece.N <= 8)
+    {
+      factor += PointToPolygonFormFactor(x, n, poly3, static_cast<std::size_t>(piece.N));
+    }
+    else
+    {
+      for (int i = 1; i + 1 < piece.N; ++i)
+      {
+        factor += PointToTriangleFormFactor(x, n, poly3[0], poly3[i], poly3[i + 1]);
+      }
+    }
+  }
+  return std::max(0.0, factor);
+}
+} // namespace radiosity

@@ -1,0 +1,675 @@
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h"
+
+#include "Radiosity/Hierarchical/ConstrainedTriangulation.h"
+#include "Radiosity/Hierarchical/CriticalSurfaces.h"
+#include "Radiosity/Common/FormFactor.h"
+#include "Radiosity/Common/MeshProbeTracker.h"
+#include "Radiosity/Hierarchical/Shaft.h"
+#include "Radiosity/Common/Stopwatch.h"
+#include "Radiosity/Common/ThreadLimit.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <unordered_map>
+
+namespace radiosity
+{
+namespace
+{
+std::uint64_t EdgeKey(std::uint32_t a, std::uint32_t b)
+{
+  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+}
+
+/// One source that irradiates a leaf: a link of the leaf or of an ancestor.
+struct ChainSource
+{
+  TriangleCorners Polygon;
+  RGB Radiosity;
+  std::vector<TriangleCorners> Blockers; ///< empty for unoccluded links
+  const HierarchicalLink* Link;
+};
+
+std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf)
+{
+  const ElementMesh& mesh = s.Mesh();
+  const Scene& scene = s.GetScene();
+  const TriangleCorners receiver = s.Corners(leaf);
+  std::vector<ChainSource> chain;
+  for (std::int32_t a = static_cast<std::int32_t>(leaf); a >= 0;
+       a = mesh[static_cast<std::uint32_t>(a)].Parent)
+  {
+    for (std::uint32_t i : s.LinksOf(static_cast<std::uint32_t>(a)))
+    {
+      const HierarchicalLink& l = s.Links()[i];
+      if (l.Kind == HierarchicalLink::Hidden || !(MaxComponent(s.Radiosity(l.Source)) > 0))
+      {
+        continue;
+      }
+      ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), {}, &l };
+      if (l.Kind == HierarchicalLink::Partial)
+      {
+        const Shaft shaft(receiver, c.Polygon);
+        for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
+        {
+          const std::uint32_t b = s.Blockers(l)[k];
+          const TriangleCorners corners = { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) };
+          if (!shaft.Excludes(corners))
+          {
+            c.Blockers.push_back(corners);
+          }
+        }
+      }
+      chain.push_back(std::move(c));
+    }
+  }
+  return chain;
+}
+
+/// On a leaf's boundary a sample can lie in a neighbour's plane (a contact
+/// edge, the shared edge of a tessellated sphere), where the form factor of
+/// that neighbour jumps to 0; the interpolant needs the limit from inside the
+/// leaf, so samples are moved towards its centroid by a relative 1e-7.
+Vec3 Inside(const Vec3& x, const Vec3& centroid)
+{
+  return x + 1e-7 * (centroid - x);
+}
+
+RGB ChainIrradiance(const std::vector<ChainSource>& chain, const Vec3& x, const Vec3& n)
+{
+  RGB e(0.0);
+  for (const ChainSource& c : chain)
+  {
+    const double f = c.Blockers.empty()
+      ? PointToPolygonFormFactor(x, n, c.Polygon.data(), 3)
+      : VisibleFormFactor(x, n, c.Polygon, c.Blockers.data(), c.Blockers.size());
+    e += f * c.Radiosity;
+  }
+  return e;
+}
+
+/// Which edges of the input are silhouettes: an edge shared with a coplanar
+/// triangle of the same emission (the diagonal of a quad) bounds nothing.
+class EdgeTopology
+{
+public:
+  explicit EdgeTopology(const Scene& scene)
+    : SourceScene(scene)
+  {
+    for (std::uint32_t t = 0; t < scene.Triangles.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        this->Edges[EdgeKey(scene.Triangles[t].V[k], scene.Triangles[t].V[(k + 1) % 3])].push_back(t);
+      }
+    }
+  }
+
+  bool Coplanar(std::uint32_t a, std::uint32_t b) const
+  {
+    const Vec3 na = this->SourceScene.Normal(a), nb = this->SourceScene.Normal(b);
+    return glm::dot(na, nb) > 1.0 - 1e-9;
+  }
+
+  /// Edge k of source triangle t lies inside a larger emitting polygon.
+  bool InteriorEmitterEdge(std::uint32_t t, int k) const
+  {
+    const Triangle& tri = this->SourceScene.Triangles[t];
+    const auto it = this->Edges.find(EdgeKey(tri.V[k], tri.V[(k + 1) % 3]));
+    for (std::uint32_t o : it->second)
+    {
+      if (o != t && this->Coplanar(o, t) &&
+        this->SourceScene.Materials[o].Emission == this->SourceScene.Materials[t].Emission)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// The edges of a blocker set that are not shared by two coplanar members.
+  std::vector<BlockerEdge> Silhouette(const std::vector<std::uint32_t>& blockers) const
+  {
+    std::vector<BlockerEdge> out;
+    for (std::uint32_t b : blockers)
+    {
+      const Triangle& tri = this->SourceScene.Triangles[b];
+      for (int k = 0; k < 3; ++k)
+      {
+        const auto& sharing = this->Edges.at(EdgeKey(tri.V[k], tri.V[(k + 1) % 3]));
+        bool interior = false;
+        for (std::uint32_t o : sharing)
+        {
+          interior = interior ||
+            (o != b && this->Coplanar(o, b) &&
+              std::binary_search(blockers.begin(), blockers.end(), o));
+        }
+        if (!interior)
+        {
+          out.push_back({ this->SourceScene.Points[tri.V[k]], this->SourceScene.Points[tri.V[(k + 1) % 3]] });
+        }
+      }
+    }
+    return out;
+  }
+
+private:
+  const Scene& SourceScene;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> Edges;
+};
+
+/// The kept discontinuity segments of one leaf (section 4.2).
+std::vector<std::array<Vec3, 2>> LeafDiscontinuities(const HierarchicalRadiosity& s,
+  const EdgeTopology& topology, std::uint32_t leaf, const DiscontinuityMeshOptions& options,
+  double minWeight, std::size_t& found)
+{
+  const ElementMesh& mesh = s.Mesh();
+  const Scene& scene = s.GetScene();
+  // Sources are the input triangles behind partial links (a subdivided light
+  // casts its discontinuities from its own edges, not from its quadtree's).
+  std::map<std::uint32_t, std::pair<double, std::vector<std::uint32_t>>> sources;
+  for (std::int32_t a = static_cast<std::int32_t>(leaf); a >= 0;
+       a = mesh[static_cast<std::uint32_t>(a)].Parent)
+  {
+    for (std::uint32_t i : s.LinksOf(static_cast<std::uint32_t>(a)))
+    {
+      const HierarchicalLink& l = s.Links()[i];
+      if (l.Kind != HierarchicalLink::Partial)
+      {
+        continue;
+      }
+      auto& entry = sources[mesh[l.Source].Source];
+      entry.first = std::max(entry.first, MaxComponent(s.Radiosity(l.Source)));
+      entry.second.insert(entry.second.end(), s.Blockers(l), s.Blockers(l) + l.BlockerCount);
+    }
+  }
+  std::vector<DiscontinuitySegment> segments;
+  const TriangleCorners receiver = s.Corners(leaf);
+  const double minLength = 1e-4 * mesh.LongestEdge(leaf);
+  for (auto& [source, entry] : sources)
+  {
+    if (entry.first < minWeight * 1e-6)
+    {
+      continue; // cannot reach w_min: the geometric factor is capped at 1e6
+    }
+    std::sort(entry.second.begin(), entry.second.end());
+    entry.second.erase(std::unique(entry.second.begin(), entry.second.end()), entry.second.end());
+    const TriangleCorners polygon = { scene.Vertex(source, 0), scene.Vertex(source, 1),
+      scene.Vertex(source, 2) };
+    const Shaft shaft(receiver, polygon);
+    entry.second.erase(std::remove_if(entry.second.begin(), entry.second.end(),
+                         [&](std::uint32_t b) {
+                           return shaft.Excludes(
+                             { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
+                         }),
+      entry.second.end());
+    if (entry.second.empty())
+    {
+      continue;
+    }
+    const std::array<bool, 3> edges = { !topology.InteriorEmitterEdge(source, 0),
+      !topology.InteriorEmitterEdge(source, 1), !topology.InteriorEmitterEdge(source, 2) };
+    FindCriticalSegments(receiver, mesh[leaf].Normal, polygon, entry.first,
+      topology.Silhouette(entry.second), minLength, segments, edges);
+  }
+  found += segments.size();
+  segments.erase(std::remove_if(segments.begin(), segments.end(),
+                   [&](const DiscontinuitySegment& d) { return !(d.Weight >= minWeight); }),
+    segments.end());
+  std::sort(segments.begin(), segments.end(),
+    [](const DiscontinuitySegment& a, const DiscontinuitySegment& b) { return a.Weight > b.Weight; });
+  if (segments.size() > static_cast<std::size_t>(options.MaxPerLeaf))
+  {
+    segments.resize(static_cast<std::size_t>(options.MaxPerLeaf));
+  }
+  std::vector<std::array<Vec3, 2>> kept;
+  for (const DiscontinuitySegment& d : segments)
+  {
+    kept.push_back({ d.A, d.B });
+  }
+  return kept;
+}
+
+/// A sample of one leaf's triangulation: shared (a leaf corner or the
+/// midpoint of a whole leaf edge, index into the shared samples) or local.
+struct SampleRef
+{
+  bool Shared;
+  std::uint32_t Index;
+};
+
+struct LeafWork
+{
+  std::vector<std::array<Vec3, 2>> Segments;
+  PlanarTriangulation Mesh;
+  std::vector<Vec3> LocalPoints;
+  std::vector<RGB> LocalValues;
+  std::vector<std::array<SampleRef, 6>> TriangleSamples; ///< r0..r5 per triangle
+  std::vector<SampleRef> VertexSamples;
+};
+/// Distance from p to the segment ab, and whether p projects strictly inside it.
+double EdgeDistance(const Vec3& p, const Vec3& a, const Vec3& b, bool& inside, double margin)
+{
+  const Vec3 ab = b - a;
+  const double len2 = glm::dot(ab, ab);
+  const double t = len2 > 0 ? glm::dot(p - a, ab) / len2 : 0.0;
+  const double m = len2 > 0 ? margin / std::sqrt(len2) : 1.0;
+  inside = t > m && t < 1.0 - m;
+  return glm::length(p - (a + std::clamp(t, 0.0, 1.0) * ab));
+}
+
+/**
+ * Neighbouring leaves of different levels, or with discontinuity segments
+ * ending on their common edge, do not share their boundary vertices: the
+ * T-junctions leave pixel cracks when the meshes are rasterised. Every vertex
+ * that lies on a leaf's edge is inserted into that leaf's triangulation (a
+ * spatial hash of all boundary vertices, walked along each edge), so the
+ * hybrid mesh is conforming.
+ */
+std::size_t ConformBoundaries(
+  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, std::vector<LeafWork>& work)
+{
+  const ElementMesh& mesh = s.Mesh();
+  if (leaves.empty())
+  {
+    return 0;
+  }
+  double meanEdge = 0.0;
+  for (std::uint32_t leaf : leaves)
+  {
+    meanEdge += mesh.LongestEdge(leaf);
+  }
+  const double h = meanEdge / static_cast<double>(leaves.size());
+  if (!(h > 0))
+  {
+    return 0;
+  }
+  auto cellOf = [h](const Vec3& p) {
+    return std::array<std::int64_t, 3>{ static_cast<std::int64_t>(std::floor(p.x / h)),
+      static_cast<std::int64_t>(std::floor(p.y / h)), static_cast<std::int64_t>(std::floor(p.z / h)) };
+  };
+  auto keyOf = [](const std::array<std::int64_t, 3>& c) {
+    return static_cast<std::uint64_t>(c[0]) * 73856093u ^ static_cast<std::uint64_t>(c[1]) * 19349663u ^
+      static_cast<std::uint64_t>(c[2]) * 83492791u;
+  };
+  // Boundary vertices of every leaf's current triangulation.
+  std::vector<Vec3> points;
+  std::vector<std::uint32_t> owner;
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+  {
+    const TriangleCorners c = s.Corners(leaves[i]);
+    const double tol = 1e-7 * mesh.LongestEdge(leaves[i]);
+    for (std::size_t v = 0; v < work[i].Mesh.Points.size(); ++v)
+    {
+      const Vec3& p = work[i].Mesh.Points[v];
+      bool inside = false, onEdge = v < 3;
+      for (int k = 0; k < 3 && !onEdge; ++k)
+      {
+        onEdge = EdgeDistance(p, c[k], c[(k + 1) % 3], inside, 0.0) < tol;
+      }
+      if (onEdge)
+      {
+        points.push_back(p);
+        owner.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+  }
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+  for (std::uint32_t k = 0; k < points.size(); ++k)
+  {
+    grid[keyOf(cellOf(points[k]))].push_back(k);
+  }
+  std::vector<unsigned char> conformed(leaves.size(), 0);
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+    const TriangleCorners c = s.Corners(leaves[i]);
+    const double longest = mesh.LongestEdge(leaves[i]);
+    const double tol = 1e-7 * longest;
+    std::vector<Vec3> extra;
+    std::vector<std::uint64_t> visited;
+    for (int e = 0; e < 3; ++e)
+    {
+      const Vec3& a = c[e];
+      const Vec3& b = c[(e + 1) % 3];
+      const double length = glm::length(b - a);
+      const int steps = 1 + static_cast<int>(2.0 * length / h);
+      visited.clear();
+      for (int t = 0; t <= steps; ++t)
+      {
+        const auto centre = cellOf(a + (static_cast<double>(t) / steps) * (b - a));
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          for (int dy = -1; dy <= 1; ++dy)
+          {
+            for (int dz = -1; dz <= 1; ++dz)
+            {
+              const std::uint64_t key = keyOf({ centre[0] + dx, centre[1] + dy, centre[2] + dz });
+              if (std::find(visited.begin(), visited.end(), key) != visited.end())
+              {
+                continue;
+              }
+              visited.push_back(key);
+              const auto it = grid.find(key);
+              if (it == grid.end())
+              {
+                continue;
+              }
+              for (std::uint32_t k : it->second)
+              {
+                bool inside = false;
+                if (owner[k] != i && EdgeDistance(points[k], a, b, inside, 10.0 * tol) < tol && inside)
+                {
+                  extra.push_back(points[k]);
+                }
+              }
+            }
+          }
+        }
+      }
+    }
+    // Only points the leaf does not have yet.
+    std::vector<Vec3> missing;
+    for (const Vec3& p : extra)
+    {
+      bool known = false;
+      for (const Vec3& q : work[i].Mesh.Points)
+      {
+        known = known || glm::length(p - q) < tol;
+      }
+      for (const Vec3& q : missing)
+      {
+        known = known || glm::length(p - q) < tol;
+      }
+      if (!known)
+      {
+        missing.push_back(p);
+      }
+    }
+    if (!missing.empty())
+    {
+      work[i].Mesh = TriangulateWithConstraints(c, work[i].Segments, missing);
+      conformed[i] = 1;
+    }
+  });
+  return static_cast<std::size_t>(std::count(conformed.begin(), conformed.end(), 1));
+}
+} // namespace
+
+RGB AccuratePointIrradiance(
+  const HierarchicalRadiosity& solution, std::uint32_t leaf, const Vec3& x, const Vec3& n)
+{
+  return ChainIrradiance(GatherChain(solution, leaf), x, n);
+}
+
+DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
+  const DiscontinuityMeshOptions& options, const ProgressCallback& progress)
+{
+  const Stopwatch clock;
+  // The thread limit applies to this solve alone (a task arena of its own).
+  return RunWithThreads(options.Threads, [&]() -> DiscontinuityMesh {
+    DiscontinuityMesh out;
+    const ElementMesh& mesh = s.Mesh();
+    const Scene& scene = s.GetScene();
+    const std::vector<std::uint32_t> leaves = mesh.Leaves();
+    double brightest = 0.0;
+    for (const Material& m : scene.Materials)
+    {
+      brightest = std::max(brightest, MaxComponent(m.Emission));
+    }
+    const double minWeight = options.MinWeight * brightest;
+    const EdgeTopology topology(scene);
+    auto report = [&](const char* phase, double fraction) {
+      if (!progress)
+      {
+        return true;
+      }
+      ProgressStatus status;
+      status.Phase = phase;
+      status.Fraction = fraction;
+      return progress(status);
+    };
+
+    // Phase 1: discontinuities and triangulations, per leaf.
+    std::vector<LeafWork> work(leaves.size());
+    std::vector<std::size_t> found(leaves.size(), 0), kept(leaves.size(), 0);
+    // In blocks of leaves, so that progress and an abort are seen between
+    // them (on this thread) and not only after the whole phase.
+    constexpr std::size_t Block = 256;
+    for (std::size_t begin = 0; begin < leaves.size(); begin += Block)
+    {
+      if (!report("finding discontinuities", 0.3 * static_cast<double>(begin) / static_cast<double>(leaves.size())))
+      {
+        return out;
+      }
+      tbb::parallel_for(begin, std::min(leaves.size(), begin + Block), [&](std::size_t i) {
+        const std::uint32_t leaf = leaves[i];
+        const TriangleCorners corners = s.Corners(leaf);
+        std::vector<std::array<Vec3, 2>> segments;
+        if (options.Discontinuities)
+        {
+          segments = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
+          kept[i] = segments.size();
+        }
+        work[i].Mesh = segments.empty()
+          ? PlanarTriangulation{ { corners[0], corners[1], corners[2] }, { { 0u, 1u, 2u } } }
+          : TriangulateWithConstraints(corners, segments);
+        work[i].Segments = std::move(segments);
+      });
+    }
+    if (options.Conforming)
+    {
+      out.LeavesConformed = ConformBoundaries(s, leaves, work);
+    }
+    if (!report("meshing", 0.3))
+    {
+      return out;
+    }
+
+    // Phase 2: sample keys. Every sample on a leaf's boundary (corners, edge
+    // midpoints, vertices of neighbours inserted by the conforming step) is
+    // shared by position between the leaves that meet there: computed once, and
+    // neighbouring interpolants agree along their common edges.
+    const double quantum = 1e-9 * std::max(s.Analysis().Diagonal, 1e-300);
+    // The key is the position and the surface's normal: a point on a contact
+    // line belongs to both surfaces, with a different irradiance on each.
+    using SampleKey = std::array<std::int64_t, 6>;
+    struct PositionHash
+    {
+      std::size_t operator()(const SampleKey& k) const
+      {
+        std::size_t h = 0;
+        for (std::int64_t v : k)
+        {
+          h = h * 1000003u ^ static_cast<std::size_t>(v);
+        }
+        return h;
+      }
+    };
+    std::unordered_map<SampleKey, std::uint32_t, PositionHash> sharedIndex;
+    std::vector<Vec3> sharedPoints;
+    std::vector<std::uint32_t> sharedOwner; ///< the leaf whose links evaluate it
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+    {
+      LeafWork& w = work[i];
+      const TriangleCorners corners = s.Corners(leaves[i]);
+      const double tolerance = 1e-7 * mesh.LongestEdge(leaves[i]);
+      out.SegmentsFound += found[i];
+      out.SegmentsKept += kept[i];
+      out.LeavesMeshed += kept[i] > 0;
+      out.LeavesTriangulationFailed += w.Mesh.ConstraintsDropped;
+      const Vec3& normal = mesh[leaves[i]].Normal;
+      auto shared = [&](const Vec3& x) {
+        const SampleKey key = { std::llround(x.x / quantum), std::llround(x.y / quantum),
+          std::llround(x.z / quantum), std::llround(normal.x * 1e6), std::llround(normal.y * 1e6),
+          std::llround(normal.z * 1e6) };
+        auto it = sharedIndex.find(key);
+        if (it == sharedIndex.end())
+        {
+          it = sharedIndex.emplace(key, static_cast<std::uint32_t>(sharedPoints.size())).first;
+          sharedPoints.push_back(x);
+          sharedOwner.push_back(static_cast<std::uint32_t>(i));
+        }
+        return SampleRef{ true, it->second };
+      };
+      // The leaf edge a point lies on, or -1.
+      auto edgeOf = [&](const Vec3& x) {
+        for (int k = 0; k < 3; ++k)
+        {
+          bool inside = false;
+          if (EdgeDistance(x, corners[k], corners[(k + 1) % 3], inside, 0.0) < tolerance)
+          {
+            return k;
+          }
+        }
+        return -1;
+      };
+      std::vector<int> edge(w.Mesh.Points.size(), -1);
+      std::map<std::uint64_t, std::uint32_t> localMid;
+      w.VertexSamples.resize(w.Mesh.Points.size());
+      for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
+      {
+        const Vec3& x = w.Mesh.Points[v];
+        edge[v] = v < 3 ? 3 : edgeOf(x); // corners are on two edges: 3 marks them
+        if (edge[v] >= 0)
+        {
+          w.VertexSamples[v] = shared(x);
+        }
+        else
+        {
+          w.VertexSamples[v] = { false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
+          w.LocalPoints.push_back(x);
+        }
+      }
+      for (const auto& t : w.Mesh.Triangles)
+      {
+        std::array<SampleRef, 6> r{};
+        for (int k = 0; k < 3; ++k)
+        {
+          const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+          r[2 * k] = w.VertexSamples[a];
+          const Vec3 mid = 0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]);
+          if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
+          {
+            r[2 * k + 1] = shared(mid); // a piece of the leaf's boundary
+          }
+          else
+          {
+            auto it = localMid.find(EdgeKey(a, b));
+            if (it == localMid.end())
+            {
+              it = localMid.emplace(EdgeKey(a, b), static_cast<std::uint32_t>(w.LocalPoints.size())).first;
+              w.LocalPoints.push_back(mid);
+            }
+            r[2 * k + 1] = { false, it->second };
+          }
+        }
+        w.TriangleSamples.push_back(r);
+      }
+    }
+
+    // Phase 3: accurate point irradiance, shared samples grouped by owner leaf.
+    std::vector<std::vector<std::uint32_t>> owned(leaves.size());
+    for (std::uint32_t k = 0; k < sharedOwner.size(); ++k)
+    {
+      owned[sharedOwner[k]].push_back(k);
+    }
+    std::vector<RGB> sharedValues(sharedPoints.size());
+    tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+      if (owned[i].empty() && work[i].LocalPoints.empty())
+      {
+        return;
+      }
+      const std::vector<ChainSource> chain = GatherChain(s, leaves[i]);
+      const Vec3& n = mesh[leaves[i]].Normal;
+      const Vec3& c = mesh[leaves[i]].Centroid;
+      for (std::uint32_t k : owned[i])
+      {
+        sharedValues[k] = ChainIrradiance(chain, Inside(sharedPoints[k], c), n);
+      }
+      LeafWork& w = work[i];
+      w.LocalValues.resize(w.LocalPoints.size());
+      for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
+      {
+        w.LocalValues[k] = ChainIrradiance(chain, Inside(w.LocalPoints[k], c), n);
+      }
+    });
+    out.PointSamples = sharedPoints.size();
+    if (!report("interpolants", 0.9))
+    {
+      return out;
+    }
+
+    // Phase 4: interpolants and the output mesh.
+    auto value = [&](const LeafWork& w, const SampleRef& r) {
+      return r.Shared ? sharedValues[r.Index] : w.LocalValues[r.Index];
+    };
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+    {
+      const LeafWork& w = work[i];
+      const Element& el = mesh[leaves[i]];
+      out.PointSamples += w.LocalPoints.size();
+      const auto base = static_cast<std::uint32_t>(out.Points.size());
+      for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
+      {
+        out.Points.push_back(w.Mesh.Points[v]);
+        out.PointIrradiance.push_back(value(w, w.VertexSamples[v]));
+      }
+      for (std::size_t t = 0; t < w.Mesh.Triangles.size(); ++t)
+      {
+        const auto& tri = w.Mesh.Triangles[t];
+        Triangle cell;
+        cell.V = { base + tri[0], base + tri[1], base + tri[2] };
+        out.Triangles.push_back(cell);
+        std::array<RGB, 6> r;
+        for (int k = 0; k < 6; ++k)
+        {
+          r[k] = value(w, w.TriangleSamples[t][k]);
+        }
+        out.Interpolants.push_back(QuadraticInterpolant::FromSamples(r));
+        out.Leaf.push_back(leaves[i]);
+        out.SourceTriangle.push_back(el.Source);
+        out.Level.push_back(el.Level);
+        out.Normals.push_back(el.Normal);
+      }
+    }
+    out.Seconds = clock.Seconds();
+    report("interpolants", 1.0);
+    return out;
+  });
+}
+
+std::vector<RGB> EvaluateInterpolants(
+  const DiscontinuityMesh& mesh, const std::vector<Probe>& probes, double tolerance)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<RGB> values(probes.size(), RGB(nan));
+  const double cosLimit = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+  tbb::parallel_for(std::size_t(0), probes.size(), [&](std::size_t i) {
+    const Probe& probe = probes[i];
+    const Vec3 n = glm::normalize(probe.Normal);
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+    {
+      if (glm::dot(mesh.Normals[t], n) < cosLimit)
+      {
+        continue;
+      }
+      const Vec3& a = mesh.Points[mesh.Triangles[t].V[0]];
+      const double dist = std::fabs(glm::dot(probe.Position - a, mesh.Normals[t]));
+      double u, v, w;
+      if (dist <= tolerance && dist < best &&
+        ProjectOnTriangle(probe.Position, a, mesh.Points[mesh.Triangles[t].V[1]],
+          mesh.Points[mesh.Triangles[t].V[2]], u, v, w) &&
+        u >= -1e-6 && v >= -1e-6 && w >= -1e-6)
+      {
+        best = dist;
+        values[i] = mesh.Interpolants[t].Evaluate(v, w);
+      }
+    }
+  });
+  return values;
+}
+} // namespace radiosity

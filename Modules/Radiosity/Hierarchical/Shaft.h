@@ -1,0 +1,91 @@
+// Shaft culling between two triangles (Haines & Wallace 1991, "Shaft
+// Culling for Efficient Ray-Traced Radiosity"): the convex hull of the two
+// triangles, as the planes of its faces. Hanrahan, Salzman & Aupperle's links
+// record the blockers that their shaft meets; Hardt & Teller reuse them per
+// leaf, where the narrower shaft of the leaf leaves most of them out.
+#ifndef Radiosity_Shaft_h
+#define Radiosity_Shaft_h
+
+#include "Radiosity/Hierarchical/Backprojection.h"
+
+#include <algorithm>
+
+namespace radiosity
+{
+/// The shaft between two triangles: the face planes of the convex hull of
+/// their six corners (shaft culling, Haines & Wallace 1991). A blocker with
+/// every vertex outside one of these planes cannot hide any part of one
+/// triangle from any point of the other.
+class Shaft
+{
+public:
+  Shaft(const TriangleCorners& receiver, const TriangleCorners& source)
+  {
+    const Vec3 p[6] = { receiver[0], receiver[1], receiver[2], source[0], source[1], source[2] };
+    double scale = 0.0;
+    for (const Vec3& v : p)
+    {
+      scale = std::max(scale, glm::length(v - p[0]));
+    }
+    const double tolerance = 1e-9 * scale;
+    for (int i = 0; i < 6; ++i)
+    {
+      for (int j = i + 1; j < 6; ++j)
+      {
+        for (int k = j + 1; k < 6; ++k)
+        {
+          Vec3 n = glm::cross(p[j] - p[i], p[k] - p[i]);
+          const double len = glm::length(n);
+          if (!(len > 1e-12 * scale * scale))
+          {
+            continue;
+          }
+          n /= len;
+          int above = 0, below = 0;
+          for (const Vec3& v : p)
+          {
+            const double d = glm::dot(v - p[i], n);
+            above += d > tolerance;
+            below += d < -tolerance;
+          }
+          if (above > 0 && below > 0)
+          {
+            continue;
+          }
+          if (above > 0)
+          {
+            n = -n; // outward
+          }
+          if (this->Count < MaxPlanes)
+          {
+            this->Normal[this->Count] = n;
+            this->Offset[this->Count++] = glm::dot(p[i], n) + tolerance;
+          }
+        }
+      }
+    }
+  }
+
+  bool Excludes(const TriangleCorners& b) const
+  {
+    for (int f = 0; f < this->Count; ++f)
+    {
+      if (glm::dot(b[0], this->Normal[f]) > this->Offset[f] &&
+        glm::dot(b[1], this->Normal[f]) > this->Offset[f] &&
+        glm::dot(b[2], this->Normal[f]) > this->Offset[f])
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+private:
+  static constexpr int MaxPlanes = 20;
+  Vec3 Normal[MaxPlanes];
+  double Offset[MaxPlanes];
+  int Count = 0;
+};
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,538 @@
+#include "Radiosity/Meshless/MeshlessRadiosity.h"
+
+#include "Radiosity/Common/ElementMesh.h"
+#include "Radiosity/Common/ErrorMetrics.h"
+#include "Radiosity/Common/FormFactor.h"
+#include "Radiosity/Common/MemoryBudget.h"
+#include "Radiosity/Common/MeshProbeTracker.h"
+#include "Radiosity/Common/SceneAnalysis.h"
+#include "Radiosity/Common/Stopwatch.h"
+#include "Radiosity/Common/ThreadLimit.h"
+#include "Radiosity/Common/Visibility.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace radiosity
+{
+namespace
+{
+
+double RadicalInverse2(std::uint32_t i)
+{
+  i = (i << 16u) | (i >> 16u);
+  i = ((i & 0x55555555u) << 1u) | ((i & 0xAAAAAAAAu) >> 1u);
+  i = ((i & 0x33333333u) << 2u) | ((i & 0xCCCCCCCCu) >> 2u);
+  i = ((i & 0x0F0F0F0Fu) << 4u) | ((i & 0xF0F0F0F0u) >> 4u);
+  i = ((i & 0x00FF00FFu) << 8u) | ((i & 0xFF00FF00u) >> 8u);
+  return static_cast<double>(i) * 2.3283064365386963e-10;
+}
+
+/// A per-receiver pseudo-random rotation in [0, 1): splitmix64 of (seed, index).
+double Rotation(std::uint64_t seed, std::uint64_t index)
+{
+  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + index + 0x632BE59BD9B4E019ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+void Frame(const Vec3& n, Vec3& t, Vec3& b)
+{
+  const Vec3 a = std::fabs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  t = glm::normalize(glm::cross(a, n));
+  b = glm::cross(n, t);
+}
+} // namespace
+
+/// One term of the Neumann series: point values where computed, coefficients.
+struct MeshlessRadiosity::Bounce
+{
+  std::vector<RGB> Value;
+  std::vector<unsigned char> Computed;
+  std::unique_ptr<ShepardField> Field;
+  double Magnitude = 0.0; ///< sum of the coarsest level's values (largest channel)
+};
+
+MeshlessRadiosity::MeshlessRadiosity(const Scene& scene, const MeshlessOptions& options)
+  : SourceScene(scene)
+  , Settings(options)
+{
+  for (std::uint32_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    if (MaxComponent(scene.Materials[t].Emission) > 0)
+    {
+      this->Emitters.push_back(t);
+    }
+  }
+}
+
+MeshlessRadiosity::~MeshlessRadiosity() = default;
+
+RGB MeshlessRadiosity::DirectAt(std::uint32_t receiver) const
+{
+  const MeshlessPoint& p = this->Hierarchy->Points()[receiver];
+  const Vec3 origin = p.Position + this->Rays->Offset() * p.Normal;
+  const int n = std::max(1, this->Settings.EmitterSamples);
+  const int side = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<double>(n)))));
+  RGB e(0.0);
+  Vec3 from[64], to[64];
+  unsigned char visible[64];
+  for (std::uint32_t t : this->Emitters)
+  {
+    const Vec3 a = this->SourceScene.Vertex(t, 0), b = this->SourceScene.Vertex(t, 1),
+               c = this->SourceScene.Vertex(t, 2);
+    const Vec3 emitterNormal = this->SourceScene.Normal(t);
+    // A receiver on a surface coplanar with the emitter (the emitter itself,
+    // a neighbour) sees none of it: the contour integral around a point
+    // inside the polygon would count the whole hemisphere instead. A receiver
+    // on another surface that touches the emitter's plane (a floor at the foot
+    // of an emitting wall) takes the limit from the emitter's front.
+    const double height = glm::dot(p.Position - a, emitterNormal);
+    Vec3 x = p.Position;
+    if (height <= this->Rays->Offset())
+    {
+      if (glm::dot(p.Normal, emitterNormal) > 1.0 - 1e-6 || height < -this->Rays->Offset())
+      {
+        continue;
+      }
+      x += (this->Rays->Offset() - height) * emitterNormal;
+    }
+    const double f = PointToTriangleFormFactor(x, p.Normal, a, b, c);
+    if (!(f > 0))
+    {
+      continue;
+    }
+    // Stratified points strictly inside the emitter (the unit square mapped
+    // onto the triangle by the square-root map): a point on an edge shared
+    // with a neighbour's plane would be hidden by that neighbour.
+    int count = 0;
+    for (int i = 0; i < side && count < 64; ++i)
+    {
+      for (int j = 0; j < side && count < 64; ++j)
+      {
+        const double sq = std::sqrt((i + 0.5) / side), t2 = (j + 0.5) / side;
+        // The target sits just in front of the emitter: at grazing angles a
+        // segment ending on the plane itself would hit it in float precision.
+        from[count] = origin;
+        to[count++] = (1.0 - sq) * a + sq * (1.0 - t2) * b + sq * t2 * c +
+          this->Rays->Offset() * emitterNormal;
+      }
+    }
+    this->Shadows->TestSegments(from, to, static_cast<std::size_t>(count), visible);
+    int seen = 0;
+    for (int k = 0; k < count; ++k)
+    {
+      seen += visible[k];
+    }
+    e += f * (static_cast<double>(seen) / count) * this->SourceScene.Materials[t].Emission;
+  }
+  return e;
+}
+
+RGB MeshlessRadiosity::Gather(std::uint32_t receiver, const ShepardField& previous) const
+{
+  const MeshlessPoint& p = this->Hierarchy->Points()[receiver];
+  const Vec3 origin = p.Position + this->Rays->Offset() * p.Normal;
+  Vec3 tangent, bitangent;
+  Frame(p.Normal, tangent, bitangent);
+  const double turn = 2.0 * Pi * Rotation(this->Settings.Seed, receiver);
+  const int n = std::max(1, this->Settings.GatherRays);
+  const int levels = this->Hierarchy->NumberOfLevels();
+  thread_local std::vector<std::pair<std::uint32_t, double>> basis;
+  RGB sum(0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    // Hammersley point, cosine-distributed (Malley), rotated about the normal.
+    const double u1 = (i + 0.5) / n, u2 = RadicalInverse2(static_cast<std::uint32_t>(i));
+    const double r = std::sqrt(u1), phi = 2.0 * Pi * u2 + turn;
+    const Vec3 dir = r * std::cos(phi) * tangent + r * std::sin(phi) * bitangent +
+      std::sqrt(std::max(0.0, 1.0 - u1)) * p.Normal;
+    double t = 0, hu = 0, hv = 0;
+    unsigned tri = 0;
+    if (!this->Rays->Intersect(origin, dir, t, tri, hu, hv))
+    {
+      continue; // escapes
+    }
+    const Vec3 nh = this->SourceScene.Normal(tri);
+    if (glm::dot(nh, dir) >= 0)
+    {
+      continue; // the back of a one-sided surface sends nothing
+    }
+    const Vec3 x = origin + t * dir;
+    const std::uint32_t group = static_cast<std::uint32_t>(this->SourceScene.ObjectIds[tri]);
+    // Sender level: down to the first level whose supports look small.
+    RGB h(0.0);
+    for (int level = 0; level < levels; ++level)
+    {
+      basis.clear();
+      previous.Basis(level, group, x, nh, basis);
+      if (basis.empty())
+      {
+        continue;
+      }
+      double r2 = 0.0;
+      for (const auto& [j, w] : basis)
+      {
+        h += w * previous.Coefficients()[j];
+        const double rj = this->Hierarchy->Points()[j].Radius;
+        r2 += rj * rj;
+      }
+      const double solidAngle = Pi * r2 / static_cast<double>(basis.size()) / std::max(t * t, 1e-300);
+      if (solidAngle < this->Settings.SolidAngleThreshold)
+      {
+        break;
+      }
+    }
+    sum += this->SourceScene.Materials[tri].Reflectance * h;
+  }
+  // Cosine-weighted estimator of E = int L cos dw with L = B / pi.
+  return sum / static_cast<double>(n);
+}
+
+template <typename ValueAt>
+void MeshlessRadiosity::Refine(Bounce& out, const ValueAt& valueAt)
+{
+  const PointHierarchy& points = *this->Hierarchy;
+  const auto& all = points.Points();
+  const int levels = points.NumberOfLevels();
+  const double threshold = this->Settings.VariationThreshold * this->Scale;
+  out.Value.assign(all.size(), RGB(0.0));
+  out.Computed.assign(all.size(), 0);
+  out.Field = std::make_unique<ShepardField>(points);
+  std::vector<RGB>& alpha = out.Field->Coefficients();
+
+  // Point values of a set of receivers in parallel, then their coefficients
+  // level by level (a difference to the coarser levels, eq. 10).
+  auto compute = [&](std::vector<std::uint32_t>& set) {
+    std::sort(set.begin(), set.end()); // sorted by index is sorted by level
+    set.erase(std::unique(set.begin(), set.end()), set.end());
+    tbb::parallel_for(std::size_t(0), set.size(), [&](std::size_t k) {
+      out.Value[set[k]] = valueAt(set[k]);
+    });
+    std::size_t begin = 0;
+    while (begin < set.size())
+    {
+      const int level = all[set[begin]].Level;
+      std::size_t end = begin;
+      while (end < set.size() && all[set[end]].Level == level)
+      {
+        ++end;
+      }
+      tbb::parallel_for(begin, end, [&](std::size_t k) {
+        const std::uint32_t j = set[k];
+        const MeshlessPoint& p = all[j];
+        alpha[j] = level == 0
+          ? out.Value[j]
+          : out.Value[j] - out.Field->Evaluate(p.Position, p.Normal, p.Group, level - 1);
+      });
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        out.Computed[set[k]] = 1;
+        this->Touched[set[k]] = 1;
+      }
+      begin = end;
+    }
+    this->Stats.GatherOperations += set.size();
+  };
+
+  std::vector<std::uint32_t> wave;
+  for (std::size_t j = points.LevelBegin(0); j < points.LevelEnd(0); ++j)
+  {
+    wave.push_back(static_cast<std::uint32_t>(j));
+  }
+  compute(wave);
+  // Coarsest-level oracle: variation against the neighbours non-zero there.
+  std::vector<std::uint32_t> refine;
+  std::vector<std::uint32_t> near;
+  for (std::uint32_t j : wave)
+  {
+    near.clear();
+    points.Supporting(0, all[j].Group, all[j].Position, near);
+    double variation = 0.0;
+    for (std::uint32_t k : near)
+    {
+      if (glm::dot(all[k].Normal, all[j].Normal) > 0)
+      {
+        variation = std::max(variation, MaxComponent(glm::abs(out.Value[k] - out.Value[j])));
+      }
+    }
+    if (variation > threshold)
+    {
+      refine.push_back(j);
+    }
+  }
+  for (int level = 1; level < levels && !refine.empty(); ++level)
+  {
+    // Children: this level's functions centred in a refined parent's support.
+    std::vector<std::uint32_t> children;
+    for (std::uint32_t k : refine)
+    {
+      near.clear();
+      const MeshlessPoint& parent = all[k];
+      points.Supporting(level, parent.Group, parent.Position, near);
+      for (std::uint32_t c : near)
+      {
+        if (!out.Computed[c] && glm::length(all[c].Position - parent.Position) < parent.Radius &&
+          glm::dot(all[c].Normal, parent.Normal) > 0)
+        {
+          children.push_back(c);
+        }
+      }
+    }
+    // Their parents first: every coarser function non-zero at a child must
+    // have its coefficient before the child's difference is taken.
+    std::vector<std::uint32_t> missing;
+    for (std::uint32_t c : children)
+    {
+      for (int coarser = 1; coarser < level; ++coarser)
+      {
+        near.clear();
+        points.Supporting(coarser, all[c].Group, all[c].Position, near);
+        for (std::uint32_t q : near)
+        {
+          if (!out.Computed[q] && glm::dot(all[q].Normal, all[c].Normal) > 0)
+          {
+            missing.push_back(q);
+          }
+        }
+      }
+    }
+    if (!missing.empty())
+    {
+      compute(missing);
+    }
+    compute(children);
+    refine.clear();
+    for (std::uint32_t c : children)
+    {
+      if (MaxComponent(glm::abs(alpha[c])) > threshold)
+      {
+        refine.push_back(c);
+      }
+    }
+  }
+  out.Magnitude = 0.0;
+  for (std::size_t j = points.LevelBegin(0); j < points.LevelEnd(0); ++j)
+  {
+    out.Magnitude += MaxComponent(out.Value[j]);
+  }
+}
+
+void MeshlessRadiosity::DirectLight(Bounce& out)
+{
+  // The thresholds are relative to the direct light's scale, known only from
+  // the coarsest level: compute it first.
+  const PointHierarchy& points = *this->Hierarchy;
+  this->Scale = 0.0;
+  std::vector<RGB> coarse(points.LevelEnd(0) - points.LevelBegin(0));
+  tbb::parallel_for(std::size_t(0), coarse.size(), [&](std::size_t k) {
+    coarse[k] = this->DirectAt(static_cast<std::uint32_t>(points.LevelBegin(0) + k));
+  });
+  for (const RGB& c : coarse)
+  {
+    this->Scale = std::max(this->Scale, MaxComponent(c));
+  }
+  this->Refine(out, [&](std::uint32_t j) {
+    return j < points.LevelEnd(0) ? coarse[j - points.LevelBegin(0)] : this->DirectAt(j);
+  });
+}
+
+void MeshlessRadiosity::ComputeBounce(const ShepardField& previous, Bounce& out)
+{
+  this->Refine(out, [&](std::uint32_t j) { return this->Gather(j, previous); });
+}
+
+RGB MeshlessRadiosity::IrradianceAt(const Vec3& x, const Vec3& n, std::uint32_t triangle) const
+{
+  if (!this->Solution)
+  {
+    return RGB(0.0); // no emitter, or aborted before the points were placed: the zero solution
+  }
+  return this->Solution->Evaluate(
+    x, n, static_cast<std::uint32_t>(this->SourceScene.ObjectIds[triangle]));
+}
+
+SolutionMesh MeshlessRadiosity::Surface() const
+{
+  const Scene& scene = this->SourceScene;
+  const double diagonal = scene.Diagonal();
+  ElementMesh mesh(scene, 1e300, this->Settings.SurfaceElementSize * diagonal, 12);
+  const std::vector<std::uint32_t> leaves = mesh.Leaves();
+  if (!this->Solution)
+  {
+    return ExtractSolution(mesh); // the zero solution (no emitter, or aborted before placement)
+  }
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+    Element& el = mesh[leaves[i]];
+    const auto group = static_cast<std::uint32_t>(scene.ObjectIds[el.Source]);
+    // Corners just inside the element: a corner on a neighbour's plane would
+    // take that neighbour's basis functions at a grazing normal.
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3 x = mesh.Corner(leaves[i], k) + 1e-7 * (el.Centroid - mesh.Corner(leaves[i], k));
+      el.Irradiance.Corner[k] = this->Solution->Evaluate(x, el.Normal, group);
+    }
+    el.Irradiance.Centre = this->Solution->Evaluate(el.Centroid, el.Normal, group);
+  });
+  return ExtractSolution(mesh);
+}
+
+std::vector<RGB> MeshlessRadiosity::Evaluate(const std::vector<Probe>& probes) const
+{
+  return EvaluateOnNearestTriangles(this->SourceScene, probes,
+    [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->IrradianceAt(x, n, t); },
+    this->Rays.get()); // over every triangle; null before a solve (then built there)
+}
+
+namespace
+{
+// Bytes per point: the point, its coefficients in the solution, the direct
+// field and the two live bounces, its k-d tree entry and placement grid cell.
+constexpr double BytesPerMeshlessPoint = sizeof(MeshlessPoint) + 4 * 2 * sizeof(RGB) + 32.0 + 16.0;
+}
+
+SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
+{
+  SolverStatistics stats;
+  const Stopwatch clock;
+  // The thread limit applies to this solve alone (a task arena of its own).
+  return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
+    const Scene& scene = this->SourceScene;
+    double emitted = 0.0, area = 0.0;
+    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+    {
+      emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
+      area += scene.Area(t);
+    }
+    stats.EmittedPowerW = emitted;
+    if (!(emitted > 0.0))
+    {
+      stats.Stop = StopReason::NoEmitters;
+      return stats;
+    }
+    auto report = [&](const char* phase, long long iteration, double residual) {
+      return ReportProgress(progress, phase, iteration, residual, this->Settings.Tolerance);
+    };
+    if (!report("placing points", 0, 1.0))
+    {
+      stats.Stop = StopReason::Aborted;
+      return stats;
+    }
+    const double pointBound = MaxPoissonDiskPoints(scene, this->Settings.Placement);
+    CheckMemoryBudget(pointBound * BytesPerMeshlessPoint, ResolveMemoryBudget(this->Settings.MemoryBudgetBytes),
+      "meshless radiosity: up to " + FormatCount(pointBound) + " points",
+      "raise --point-radius (PointRadius) or lower --point-levels (PointLevels)");
+    this->Rays = std::make_unique<Visibility>(scene, Visibility::AllTriangles(scene));
+    // Only what can occlude casts shadows (SceneAnalysis): no rays, and no
+    // grazing-angle misses, inside a convex enclosure.
+    this->Shadows = std::make_unique<Visibility>(scene, AnalyzeScene(scene).CanOcclude);
+    try
+  {
+    this->Hierarchy = std::make_unique<PointHierarchy>(scene, this->Settings.Placement, this->Rays.get(),
+      [&]() { return report("placing points", 0, 1.0); });
+  }
+  catch (const PlacementAborted&)
+  {
+    stats.Stop = StopReason::Aborted;
+    return stats;
+  }
+    const PointHierarchy& points = *this->Hierarchy;
+    this->Touched.assign(points.Points().size(), 0);
+    this->Stats.SamplesGenerated = points.Points().size();
+    this->Stats.Levels = points.NumberOfLevels();
+    this->Stats.CoarsestSamples = points.NumberOfLevels() > 0 ? points.LevelEnd(0) : 0;
+    this->Stats.PlacementSeconds = clock.Seconds();
+    this->Solution = std::make_unique<ShepardField>(points);
+    if (points.Points().empty() || points.LevelEnd(0) == 0)
+    {
+      throw SceneError("meshless radiosity: no points could be placed on the surfaces");
+    }
+
+    if (!report("direct light", 0, 1.0))
+    {
+      stats.Stop = StopReason::Aborted;
+      return stats;
+    }
+    Bounce direct;
+    this->DirectLight(direct);
+    this->Direct = std::make_unique<ShepardField>(points);
+    this->Direct->Coefficients() = direct.Field->Coefficients();
+    this->Solution->Coefficients() = direct.Field->Coefficients();
+    this->Stats.DirectSeconds = clock.Seconds() - this->Stats.PlacementSeconds;
+    const double base = std::max(direct.Magnitude, 1e-300);
+    const double perPoint = area / static_cast<double>(points.LevelEnd(0));
+
+    auto row = [&](long long iteration, double remaining) {
+      ConvergenceRow r;
+      r.Iteration = iteration;
+      r.TimeSeconds = clock.Seconds();
+      r.UnshotPowerW = remaining * perPoint;
+      r.EnergyBalance = std::numeric_limits<double>::quiet_NaN();
+      if (!this->Settings.ErrorProbes.empty() &&
+        this->Settings.ErrorReference.size() == this->Settings.ErrorProbes.size())
+      {
+        const ErrorFigures e = RelativeErrors(this->Evaluate(this->Settings.ErrorProbes), this->Settings.ErrorReference);
+        r.RmsError = e.Rms;
+        r.MaxRelError = e.Max;
+      }
+      stats.History.Rows.push_back(r);
+    };
+    row(0, direct.Magnitude);
+
+    std::unique_ptr<Bounce> previous = std::make_unique<Bounce>(std::move(direct));
+    double previousRatio = -1.0;
+    stats.Stop = StopReason::IterationLimit;
+    for (int bounce = 1; bounce <= this->Settings.MaxBounces; ++bounce)
+    {
+      auto next = std::make_unique<Bounce>();
+      this->ComputeBounce(*previous->Field, *next);
+      std::vector<RGB>& b = this->Solution->Coefficients();
+      const std::vector<RGB>& add = next->Field->Coefficients();
+      const double ratio = previous->Magnitude > 0 ? next->Magnitude / previous->Magnitude : 0.0;
+      // Aitken: a steady ratio makes the rest of the series geometric.
+      const bool steady = ratio > 0.3 && ratio < 1.0 && previousRatio > 0 &&
+        std::fabs(ratio - previousRatio) < 0.01 * (1.0 - ratio);
+      const double gain = steady ? 1.0 / (1.0 - ratio) : 1.0;
+      for (std::size_t j = 0; j < b.size(); ++j)
+      {
+        b[j] += gain * add[j];
+      }
+      const double remaining = steady ? 0.0 : next->Magnitude * (ratio < 1 ? ratio / (1 - ratio) : 1.0);
+      row(bounce, remaining);
+      stats.Iterations = bounce;
+      const double relative = next->Magnitude / base;
+      if (!report("bounces", bounce, relative))
+      {
+        stats.Stop = StopReason::Aborted;
+        break;
+      }
+      if (steady || relative <= this->Settings.Tolerance)
+      {
+        stats.Stop = StopReason::Converged;
+        break;
+      }
+      if (this->Settings.MaxTimeSeconds > 0 && clock.Seconds() >= this->Settings.MaxTimeSeconds)
+      {
+        stats.Stop = StopReason::TimeLimit;
+        break;
+      }
+      previousRatio = ratio;
+      previous = std::move(next);
+    }
+    this->Stats.BounceSeconds = clock.Seconds() - this->Stats.PlacementSeconds - this->Stats.DirectSeconds;
+    this->Stats.SamplesGatheredTo = static_cast<std::size_t>(std::count(this->Touched.begin(), this->Touched.end(), 1));
+    this->Stats.VisibilityRays = this->Rays->RaysCast() + this->Shadows->RaysCast();
+    this->Stats.MemoryBytes = points.Points().size() * (sizeof(MeshlessPoint) + 3 * sizeof(RGB) + 2);
+    stats.Elements = points.Points().size();
+    stats.RaysCast = this->Stats.VisibilityRays;
+    stats.SolveSeconds = clock.Seconds();
+    stats.PreprocessSeconds = this->Stats.PlacementSeconds;
+    return stats;
+  });
+}
+} // namespace radiosity

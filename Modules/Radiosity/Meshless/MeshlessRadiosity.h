@@ -1,0 +1,135 @@
+// Meshless hierarchical radiosity (Lehtinen et al. 2007, section 6.3).
+//
+// The irradiance is a multilevel Shepard field over a hierarchical
+// Poisson-disk point set (MeshlessPoints.h, ShepardField.h). The discrete
+// radiosity equation b = T b + e is solved by its Neumann series, bounce by
+// bounce: e holds the approximation coefficients of the direct light, and
+// each COMPUTE-BOUNCE gathers the previous bounce onto the receiving basis
+// functions, coarse to fine:
+// - GATHER: a fixed Hammersley pattern of cosine-distributed hemisphere rays,
+//   rotated by a random angle about the normal at each receiver; at each hit
+//   the previous bounce's irradiance is reconstructed from the levels down to
+//   the first whose supporting bounding spheres subtend, on average, less than
+//   the solid angle epsilon_Omega seen from the receiver (the sender level,
+//   after Bekaert et al. 1998), times the reflectance there;
+// - RECEIVER-ORACLE: a coarsest-level receiver is refined (its children, the
+//   next level's functions whose centres lie in its support, are gathered to)
+//   when its value differs from its neighbours' by more than epsilon_E; on
+//   finer levels when its coefficient (a difference to the coarser levels,
+//   eq. 10) exceeds epsilon_E. A receiver's parents (the coarser functions
+//   non-zero at it) are computed first, recursively, so that its coefficient
+//   is the difference to their reconstruction.
+// The direct light e is represented the same way, its point values being the
+// exact irradiance of the polygonal emitters (Lambert's contour formula) times
+// the visible fraction of the emitter (Embree rays to emitter samples).
+// Both thresholds are relative to the largest coarse-level irradiance of the
+// direct light, so that the defaults do not depend on units. The series is
+// summed until a bounce carries less than Tolerance of the direct light, with
+// the geometric tail added at once (Aitken) once the bounce ratio is steady,
+// so that closed rooms of high reflectance converge in few bounces.
+#ifndef Radiosity_MeshlessRadiosity_h
+#define Radiosity_MeshlessRadiosity_h
+
+#include "Radiosity/Common/ProbeEvaluator.h"
+#include "Radiosity/Meshless/ShepardField.h"
+#include "Radiosity/Common/SolutionMesh.h"
+#include "Radiosity/Common/SolverTypes.h"
+
+#include <memory>
+#include <vector>
+
+namespace radiosity
+{
+class Visibility;
+
+struct MeshlessOptions
+{
+  PointPlacementOptions Placement;
+  int GatherRays = 256;                    ///< hemisphere rays per receiver (the paper: 512)
+  double SolidAngleThreshold = 3.14159265358979323846 / 10.0; ///< epsilon_Omega, steradians
+  double VariationThreshold = 0.01;        ///< epsilon_E, relative to the largest direct irradiance
+  int EmitterSamples = 16;                 ///< visibility rays per receiver and emitter triangle
+  int MaxBounces = 1000;
+  double Tolerance = 1e-3;                 ///< stop when a bounce carries less than this of the direct light
+  double MaxTimeSeconds = 0.0;             ///< 0: no limit
+  int Threads = 0;                         ///< 0: all cores
+  std::uint64_t Seed = 1;
+  /// Surface(): the input triangles split uniformly to this longest edge
+  /// (fraction of the scene diagonal) to carry the field as point data.
+  double SurfaceElementSize = 1.0 / 32.0;
+  /// Bytes the point hierarchy may use; 0: 75% of physical memory. Checked
+  /// before the points are placed, from the densest packing the radii allow.
+  double MemoryBudgetBytes = 0.0;
+  std::vector<Probe> ErrorProbes;          ///< reference irradiance: error after every bounce
+  std::vector<RGB> ErrorReference;
+};
+
+/// What the method did, in the columns of the paper's Table 1.
+struct MeshlessStatistics
+{
+  std::size_t SamplesGenerated = 0;
+  std::size_t SamplesGatheredTo = 0; ///< points whose coefficient was computed at least once
+  std::size_t GatherOperations = 0;  ///< receiver gathers over all bounces
+  std::size_t VisibilityRays = 0;
+  int Levels = 0;
+  std::size_t CoarsestSamples = 0;
+  double PlacementSeconds = 0.0;
+  double DirectSeconds = 0.0;
+  double BounceSeconds = 0.0;
+  std::size_t MemoryBytes = 0;       ///< points, coefficients and bookkeeping
+};
+
+class MeshlessRadiosity
+{
+public:
+  MeshlessRadiosity(const Scene& scene, const MeshlessOptions& options);
+  ~MeshlessRadiosity();
+
+  /// Places the points, computes the direct light and the bounces; once.
+  SolverStatistics Solve(const ProgressCallback& progress = {});
+
+  const Scene& GetScene() const { return this->SourceScene; }
+  const MeshlessOptions& Options() const { return this->Settings; }
+  const PointHierarchy& Points() const { return *this->Hierarchy; }
+  /// The irradiance field b (direct plus every bounce).
+  const ShepardField& Irradiance() const { return *this->Solution; }
+  /// The direct light alone, e.
+  const ShepardField& DirectIrradiance() const { return *this->Direct; }
+  const MeshlessStatistics& Statistics() const { return this->Stats; }
+  /// Whether point j's coefficient was computed in some bounce (sparsity).
+  bool WasGatheredTo(std::size_t j) const { return j < this->Touched.size() && this->Touched[j]; }
+
+  /// Irradiance at (x, n) on input triangle `triangle` (its object is the group).
+  RGB IrradianceAt(const Vec3& x, const Vec3& n, std::uint32_t triangle) const;
+  /// The field on the input surfaces: the triangles split uniformly to
+  /// SurfaceElementSize, each element's corners and centre evaluated from the
+  /// field (SPEC output arrays; the field itself is the solution, and
+  /// vtkShepardFieldProbe moves it onto any other mesh).
+  SolutionMesh Surface() const;
+  /// Irradiance at probes: each is assigned to the nearest surface's group
+  /// (normals within 90 degrees); NaN when no surface faces it.
+  std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
+
+private:
+  struct Bounce;
+  void DirectLight(Bounce& out);
+  void ComputeBounce(const ShepardField& previous, Bounce& out);
+  RGB Gather(std::uint32_t receiver, const ShepardField& previous) const;
+  RGB DirectAt(std::uint32_t receiver) const;
+  template <typename Value>
+  void Refine(Bounce& out, const Value& value);
+
+  const Scene& SourceScene;
+  MeshlessOptions Settings;
+  std::unique_ptr<Visibility> Rays;     ///< every triangle: gather rays, placement
+  std::unique_ptr<Visibility> Shadows;  ///< the triangles that can occlude: direct light
+  std::unique_ptr<PointHierarchy> Hierarchy;
+  std::unique_ptr<ShepardField> Direct, Solution;
+  std::vector<std::uint32_t> Emitters;
+  std::vector<unsigned char> Touched; ///< per point: gathered to at least once
+  double Scale = 0.0;                 ///< largest coarse direct irradiance (one channel)
+  MeshlessStatistics Stats;
+};
+} // namespace radiosity
+
+#endif

@@ -1,0 +1,277 @@
+// Hardt & Teller: quadratic interpolants, exact point irradiance through
+// blockers (backprojection), and the discontinuity mesh on the exact
+// penumbra scene against the analytic answer and a uniform mesh.
+#include "Radiosity/Reference/AnalyticReference.h"
+#include "Radiosity/Hierarchical/Backprojection.h"
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h"
+#include "Radiosity/Common/FormFactor.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+#include "Radiosity/Hierarchical/QuadraticInterpolant.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+
+using namespace radiosity;
+
+TEST(QuadraticInterpolant, ReproducesSamplesAndQuadratics)
+{
+  // An arbitrary quadratic per channel is reproduced everywhere.
+  auto f = [](double s, double t) {
+    return RGB(1 + 2 * s - 3 * t + 4 * s * s - 5 * s * t + 6 * t * t, 7 - s * s, 0.5 * s * t + t);
+  };
+  const double at[6][2] = { { 0, 0 }, { 0.5, 0 }, { 1, 0 }, { 0.5, 0.5 }, { 0, 1 }, { 0, 0.5 } };
+  std::array<RGB, 6> r;
+  for (int k = 0; k < 6; ++k)
+  {
+    r[k] = f(at[k][0], at[k][1]);
+  }
+  const QuadraticInterpolant q = QuadraticInterpolant::FromSamples(r);
+  for (int k = 0; k < 6; ++k)
+  {
+    EXPECT_NEAR(glm::length(q.Evaluate(at[k][0], at[k][1]) - r[k]), 0.0, 1e-12) << "sample " << k;
+  }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < 100; ++i)
+  {
+    double s = u(rng), t = u(rng);
+    if (s + t > 1)
+    {
+      s = 1 - s;
+      t = 1 - t;
+    }
+    EXPECT_NEAR(glm::length(q.Evaluate(s, t) - f(s, t)), 0.0, 1e-12);
+  }
+  // The area mean of x^2 over the reference triangle is 1/6 / (1/2) ... check
+  // against a fine midpoint sum.
+  RGB sum(0.0);
+  const int n = 400;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; i + j < n; ++j)
+    {
+      sum += q.Evaluate((i + 1.0 / 3) / n, (j + 1.0 / 3) / n);
+      if (i + j < n - 1)
+      {
+        sum += q.Evaluate((i + 2.0 / 3) / n, (j + 2.0 / 3) / n);
+      }
+    }
+  }
+  EXPECT_NEAR(glm::length(q.Mean() - sum / double(n * n)), 0.0, 1e-4);
+}
+
+TEST(Backprojection, AgreesWithTheAnalyticPenumbra)
+{
+  const TriangleCorners light[2] = { { Vec3(-0.25, -0.25, 1), Vec3(-0.25, 0.25, 1), Vec3(0.25, 0.25, 1) },
+    { Vec3(-0.25, -0.25, 1), Vec3(0.25, 0.25, 1), Vec3(0.25, -0.25, 1) } };
+  const Vec3 b0(-0.05, -0.2, 0.5), b1(0.35, -0.2, 0.5), b2(0.35, 0.2, 0.5), b3(-0.05, 0.2, 0.5);
+  const TriangleCorners blockers[2] = { { b0, b1, b2 }, { b0, b2, b3 } };
+  const Scene scene = MakeShadowScene(1, 1.0);
+  const std::vector<Vec3> square = { b0, b1, b2, b3 };
+  const Vec3 up(0, 0, 1);
+  for (double x = -0.6; x <= 1.1; x += 0.01)
+  {
+    for (double y : { 0.0, 0.17, 0.4 })
+    {
+      const Vec3 p(x, y, 0.0);
+      double f = 0.0;
+      bool exact = false;
+      for (const TriangleCorners& l : light)
+      {
+        f += VisibleFormFactor(p, up, l, blockers, 2, &exact);
+        EXPECT_TRUE(exact);
+      }
+      const double reference = DirectIrradiance(scene, p, up, square).x;
+      EXPECT_NEAR(f, reference, 1e-9 + 1e-7 * reference) << "at " << x << ", " << y;
+    }
+  }
+}
+
+TEST(Backprojection, BlockersThatCannotShadowChangeNothing)
+{
+  const TriangleCorners light = { Vec3(-0.5, -0.5, 1), Vec3(-0.5, 0.5, 1), Vec3(0.5, 0.5, 1) };
+  const Vec3 p(0.1, -0.1, 0.0), n(0, 0, 1);
+  const double free = PointToPolygonFormFactor(p, n, light.data(), 3);
+  const TriangleCorners away[3] = {
+    { Vec3(-1, -1, 2), Vec3(1, -1, 2), Vec3(0, 1, 2) },       // behind the light
+    { Vec3(-1, -1, -1), Vec3(1, -1, -1), Vec3(0, 1, -1) },    // below the receiver
+    { Vec3(5, 5, 0.5), Vec3(6, 5, 0.5), Vec3(5, 6, 0.5) },    // outside the pyramid
+  };
+  EXPECT_NEAR(VisibleFormFactor(p, n, light, away, 3), free, 1e-14);
+  // A blocker covering the whole pyramid hides everything; two halves as well.
+  const TriangleCorners cover[2] = { { Vec3(-3, -3, 0.5), Vec3(3, -3, 0.5), Vec3(3, 3, 0.5) },
+    { Vec3(-3, -3, 0.5), Vec3(3, 3, 0.5), Vec3(-3, 3, 0.5) } };
+  EXPECT_NEAR(VisibleFormFactor(p, n, light, cover, 2), 0.0, 1e-12);
+  // Overlapping blockers are not subtracted twice.
+  const TriangleCorners overlap[2] = { { Vec3(-3, -3, 0.5), Vec3(3, -3, 0.5), Vec3(3, 3, 0.5) },
+    { Vec3(-3, -3, 0.6), Vec3(3, -3, 0.6), Vec3(3, 3, 0.6) } };
+  const double one = VisibleFormFactor(p, n, light, overlap, 1);
+  EXPECT_NEAR(VisibleFormFactor(p, n, light, overlap, 2), one, 1e-12);
+  EXPECT_GT(one, 0.0);
+  EXPECT_LT(one, free);
+}
+
+TEST(DiscontinuityMesh, ExactPenumbraWithFewTriangles)
+{
+  const double emission = 1.0;
+  const Scene scene = MakeShadowScene(4, emission);
+  HierarchicalOptions options;
+  HierarchicalRadiosity solver(scene, options);
+  const SolverStatistics stats = solver.Solve();
+  ASSERT_EQ(stats.Stop, StopReason::Converged);
+  const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions());
+  ASSERT_FALSE(mesh.Triangles.empty());
+  EXPECT_GT(mesh.LeavesMeshed, 0u);
+  EXPECT_GT(mesh.SegmentsKept, 0u);
+
+  // Irradiance along a line across both penumbrae and the umbra (y = 0).
+  const Vec3 b0(-0.05, -0.2, 0.5), b1(0.35, -0.2, 0.5), b2(0.35, 0.2, 0.5), b3(-0.05, 0.2, 0.5);
+  const std::vector<Vec3> square = { b0, b1, b2, b3 };
+  std::vector<Probe> line;
+  std::vector<double> exact;
+  double peak = 0.0;
+  for (int i = 0; i <= 340; ++i)
+  {
+    const Vec3 p(-0.6 + 1.58 * i / 340.0, 0.013, 0.0);
+    line.push_back({ p, Vec3(0, 0, 1) });
+    exact.push_back(DirectIrradiance(scene, p, Vec3(0, 0, 1), square).x);
+    peak = std::max(peak, exact.back());
+  }
+  const std::vector<RGB> values = EvaluateInterpolants(mesh, line, 1e-9);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < line.size(); ++i)
+  {
+    ASSERT_TRUE(std::isfinite(values[i].x)) << "probe " << i << " not on the mesh";
+    worst = std::max(worst, std::fabs(values[i].x - exact[i]) / peak);
+  }
+  EXPECT_LT(worst, 0.02);
+  std::size_t floorTriangles = 0;
+  for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+  {
+    floorTriangles += scene.ObjectNames[scene.ObjectIds[mesh.SourceTriangle[t]]] == "floor";
+  }
+
+  // A uniform mesh of the 2 x 2 floor with exact vertex values, linear in
+  // each triangle (what Gouraud shading of a perfect uniform solution shows):
+  // the coarsest one that reaches the same error along the line.
+  std::size_t uniformTriangles = 0;
+  double uniformError = 0.0;
+  for (int n = 8; n <= 1024; n *= 2)
+  {
+    const double h = 2.0 / n;
+    double err = 0.0;
+    for (std::size_t i = 0; i < line.size(); ++i)
+    {
+      const Vec3& p = line[i].Position;
+      const double gx = (p.x + 1) / h, gy = (p.y + 1) / h;
+      const double ix = std::floor(gx), iy = std::floor(gy);
+      const double fx = gx - ix, fy = gy - iy;
+      auto at = [&](double a, double b) {
+        return DirectIrradiance(scene, Vec3(-1 + a * h, -1 + b * h, 0), Vec3(0, 0, 1), square).x;
+      };
+      // Cells split along their diagonal, as AppendQuad splits them.
+      double v;
+      if (fx >= fy)
+      {
+        v = (1 - fx) * at(ix, iy) + (fx - fy) * at(ix + 1, iy) + fy * at(ix + 1, iy + 1);
+      }
+      else
+      {
+        v = (1 - fy) * at(ix, iy) + (fy - fx) * at(ix, iy + 1) + fx * at(ix + 1, iy + 1);
+      }
+      err = std::max(err, std::fabs(v - exact[i]) / peak);
+    }
+    uniformTriangles = 2u * n * n;
+    uniformError = err;
+    if (err <= worst)
+    {
+      break;
+    }
+  }
+  std::cout << "discontinuity mesh: max error " << worst << " of the peak with " << floorTriangles
+            << " floor triangles (" << mesh.Triangles.size() << " in all, " << mesh.SegmentsKept
+            << " segments kept of " << mesh.SegmentsFound << "); uniform mesh with exact vertex values: "
+            << uniformError << " with " << uniformTriangles << " triangles\n";
+  EXPECT_LE(uniformError, worst * 1.0001);
+  EXPECT_LT(4 * floorTriangles, uniformTriangles);
+}
+
+TEST(DiscontinuityMesh, WithoutDiscontinuitiesOneTrianglePerLeaf)
+{
+  const Scene scene = MakeShadowScene(4, 1.0);
+  HierarchicalRadiosity solver(scene, HierarchicalOptions());
+  solver.Solve();
+  DiscontinuityMeshOptions options;
+  options.Discontinuities = false;
+  options.Conforming = false;
+  const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, options);
+  EXPECT_EQ(mesh.Triangles.size(), solver.Mesh().NumberOfLeaves());
+  EXPECT_EQ(mesh.LeavesMeshed, 0u);
+  // A weight threshold above every discontinuity leaves the mesh alone too.
+  DiscontinuityMeshOptions strict;
+  strict.MinWeight = 1e9;
+  strict.Conforming = false;
+  EXPECT_EQ(BuildDiscontinuityMesh(solver, strict).Triangles.size(), mesh.Triangles.size());
+}
+
+TEST(DiscontinuityMesh, ConformingMeshHasNoTJunctions)
+{
+  // Every vertex lying inside another triangle's edge is a T-junction, where
+  // rasterisation leaves cracks; the conforming mesh has none, the paper's
+  // hybrid mesh (leaves of different levels, segments ending on leaf edges) has.
+  const Scene scene = MakeShadowScene(4, 1.0);
+  HierarchicalRadiosity solver(scene, HierarchicalOptions());
+  solver.Solve();
+  // Only vertices of triangles facing the same way count: the blocker's two
+  // faces lie back to back in one plane, and their meshes never meet on screen.
+  auto junctions = [](const DiscontinuityMesh& m) {
+    std::vector<std::vector<std::size_t>> users(m.Points.size());
+    for (std::size_t t = 0; t < m.Triangles.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        users[m.Triangles[t].V[k]].push_back(t);
+      }
+    }
+    std::size_t count = 0;
+    for (std::size_t t = 0; t < m.Triangles.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Vec3& a = m.Points[m.Triangles[t].V[k]];
+        const Vec3& b = m.Points[m.Triangles[t].V[(k + 1) % 3]];
+        const double len = glm::length(b - a);
+        for (std::size_t i = 0; i < m.Points.size(); ++i)
+        {
+          const Vec3& p = m.Points[i];
+          const double s = glm::dot(p - a, b - a) / (len * len);
+          if (!(s > 1e-6 && s < 1 - 1e-6 && glm::length(p - (a + s * (b - a))) < 1e-9 * len))
+          {
+            continue;
+          }
+          for (std::size_t u : users[i])
+          {
+            if (glm::dot(m.Normals[u], m.Normals[t]) > 0.99)
+            {
+              ++count;
+              break;
+            }
+          }
+        }
+      }
+    }
+    return count;
+  };
+  DiscontinuityMeshOptions hybrid;
+  hybrid.Conforming = false;
+  const DiscontinuityMesh paper = BuildDiscontinuityMesh(solver, hybrid);
+  const DiscontinuityMesh conforming = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions());
+  EXPECT_GT(junctions(paper), 0u);
+  EXPECT_EQ(junctions(conforming), 0u);
+  EXPECT_GT(conforming.LeavesConformed, 0u);
+  EXPECT_EQ(conforming.LeavesMeshed, paper.LeavesMeshed);
+}
