@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Builds and runs every test (unit, image regression, command line) under Xvfb.
+# Builds and runs every test (unit, image regression, command line) under Xvfb;
+# fails when npm is there but the test data cannot be fetched (scripts/build.sh).
 set -euo pipefail
+export RADIOSITY_REQUIRE_DATA="${RADIOSITY_REQUIRE_DATA:-1}"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$root/scripts/build.sh"
 build="${RADIOSITY_BUILD_DIR:-$root/build}"
