@@ -5,10 +5,43 @@ file(MAKE_DIRECTORY "${WORK}")
 
 include("${CMAKE_CURRENT_LIST_DIR}/CliTestSupport.cmake")
 
+# Error bounds, each beside the figure it measured (per-probe relative error
+# at 07b42a4, 2-core development machine; the solvers are deterministic, the
+# path tracer seeded).
+set(ROOM_RMS 0.0064)             # progressive room against the path tracer
+set(ROOM_RMS_BOUND 0.015)
+set(ROOM_MAX 0.0109)
+set(ROOM_MAX_BOUND 0.025)
+set(SHADOW_RMS 0.1194)           # progressive shadow scene against the closed form
+set(SHADOW_RMS_BOUND 0.18)
+set(SHADOW_PT_RMS 0.1137)        # the same against the path tracer, 4,096 paths
+set(SHADOW_PT_DIFFERENCE_BOUND 0.015) # measured difference 0.0057
+set(CONTACT_RMS 0.00381)         # progressive contact scene, three probes
+set(CONTACT_RMS_BOUND 0.008)
+set(H_RMS 0.0015)                # hierarchical + discontinuity mesh, shadow scene
+set(H_RMS_BOUND 0.003)
+set(H_LEAF_RMS 0.287)            # its constant leaves
+set(H_LEAF_RMS_BOUND 0.45)
+set(H_LEAF_RMS_FACTOR 20)        # leaves / interpolants: measured 190
+set(HL_RMS 0.281)                # --no-discontinuity-meshing
+set(HL_RMS_BOUND 0.45)
+set(HROOM_RMS 0.0124)            # hierarchical room against the path tracer
+set(HROOM_RMS_BOUND 0.03)
+set(ML_RMS 0.00213)              # meshless contact scene
+set(ML_RMS_BOUND 0.005)
+set(FC_RMS 9.5e-7)               # face cluster closed room of reflectance 0.99
+set(FC_RMS_BOUND 2.5e-6)
+set(FC_ABS_BOUND 2.5e-4)         # |E - 100|: measured 9.5e-5
+set(EDGE4_RMS 0.000875)          # face cluster by a contact edge, 4 halvings
+set(EDGE4_RMS_BOUND 0.0025)
+set(EDGE0_RMS 0.0476)            # the paper's leaves
+set(EDGE0_RMS_BOUND 0.1)
+set(EDGE_GAIN 20)                # no halving / 4 halvings: measured 54
+
 expect_exit(0 "${PROGRAM}" solve "${DATA}/room.obj" --tolerance 1e-2
   --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/values.csv"
   --output "${WORK}/room.vtp" --image "${WORK}/room.png" --exr "${WORK}/room.exr"
-  --report "${WORK}/report.json" --size 128)
+  --report "${WORK}/report.json" --size 128 --reference pathtraced --reference-samples 16384)
 foreach (f room.vtp room.png room.exr report.json values.csv)
   if (NOT EXISTS "${WORK}/${f}")
     message(FATAL_ERROR "missing output ${f}")
@@ -23,15 +56,27 @@ list(GET rows 0 header)
 if (NOT header STREQUAL "x,y,z,E_r,E_g,E_b")
   message(FATAL_ERROR "values.csv header: ${header}")
 endif ()
-# Floor centre below the light: irradiance well above zero and below the
-# light's exitance; the sensor in mid-air facing up sees the ceiling only.
-list(GET rows 1 centre)
-string(REPLACE "," ";" centre "${centre}")
-list(GET centre 3 er)
-if (er LESS 1 OR er GREATER 30)
-  message(FATAL_ERROR "floor-centre irradiance out of range: ${er}")
-endif ()
+# Floor centre below the light (0.6 m square of exitance 30 at height 1.99):
+# at least the direct light, 30 F with the closed form of a point below the
+# centre of a parallel rectangle, 4 corner rectangles of X = Y = 0.3 / 1.99
+# (Howell's catalogue: a differential element on the normal through a
+# corner of a parallel rectangle): 0.8426; the rest is light from the walls.
+read_probe_values("${WORK}/values.csv" room)
+list(GET room_0 3 er)
+set(X "0.3 / 1.99")
+float_eval(direct "30 * 4 / (2 * 3.14159265358979) * 2 * (${X}) / sqrt(1 + (${X})^2) * atan((${X}) / sqrt(1 + (${X})^2))")
+expect_within("floor-centre irradiance (direct ${direct}, measured 1.3947)" "${er}" "${direct}" "2 * ${direct}")
+# Every probe (the sensor in mid-air included) against the path tracer
+# (16,384 paths, largest relative standard error 3.9e-3).
 file(READ "${WORK}/report.json" report)
+string(JSON kind GET "${report}" error reference)
+string(JSON rms GET "${report}" error probe_output_rms_relative_error)
+string(JSON max GET "${report}" error probe_output_max_relative_error)
+if (NOT kind MATCHES "^path traced: 16384 paths per probe")
+  message(FATAL_ERROR "room reference: ${kind}")
+endif ()
+expect_within("room: RMS error against the path tracer (measured ${ROOM_RMS})" "${rms}" 0 ${ROOM_RMS_BOUND})
+expect_within("room: max error against the path tracer (measured ${ROOM_MAX})" "${max}" 0 ${ROOM_MAX_BOUND})
 string(JSON method GET "${report}" method)
 string(JSON stop GET "${report}" solution stop)
 if (NOT method STREQUAL "progressive" OR NOT stop STREQUAL "converged")
@@ -63,8 +108,7 @@ if (NOT stop STREQUAL "no emitters")
 endif ()
 
 # Error against run time: the exact penumbra scene against its analytic
-# reference; then the values written by that run, read back as a reference
-# file, give zero error (the same deterministic solution).
+# reference (backprojection of the convex blocker: exact).
 expect_exit(0 "${PROGRAM}" solve shadow --probes "${DATA}/shadow_probes.csv"
   --reference analytic --probe-output "${WORK}/shadow_values.csv" --report "${WORK}/shadow.json"
   --history "${WORK}/shadow_history.csv")
@@ -72,30 +116,62 @@ file(READ "${WORK}/shadow.json" shadow)
 string(JSON kind GET "${shadow}" error reference)
 string(JSON rms GET "${shadow}" error rms_relative_error)
 string(JSON tracked GET "${shadow}" error probes_on_a_surface)
-if (NOT kind STREQUAL "analytic: direct with convex blocker" OR NOT tracked EQUAL 31 OR rms GREATER 0.3)
-  message(FATAL_ERROR "shadow reference: ${kind}, rms ${rms}, tracked ${tracked}")
+string(JSON probes GET "${shadow}" error probes)
+if (NOT kind STREQUAL "analytic: direct with convex blocker" OR NOT tracked EQUAL 31 OR NOT probes EQUAL 31)
+  message(FATAL_ERROR "shadow reference: ${kind}, ${probes} probes, ${tracked} on a surface")
 endif ()
+# The progressive method's constant elements smear both penumbrae.
+expect_within("shadow: progressive RMS error (measured ${SHADOW_RMS})" "${rms}" 0 ${SHADOW_RMS_BOUND})
+string(JSON shadowRms GET "${shadow}" error probe_output_rms_relative_error)
 file(STRINGS "${WORK}/shadow_history.csv" history LIMIT_COUNT 2)
 list(GET history 1 first)
 if (first MATCHES "nan")
   message(FATAL_ERROR "the history has no error figures: ${first}")
 endif ()
-expect_exit(0 "${PROGRAM}" solve shadow --probes "${DATA}/shadow_probes.csv"
-  --reference "${WORK}/shadow_values.csv" --report "${WORK}/shadow_again.json")
-file(READ "${WORK}/shadow_again.json" again)
-string(JSON rms GET "${again}" error probe_output_rms_relative_error)
-if (rms GREATER 1e-12)
-  message(FATAL_ERROR "the run's own values as reference: rms ${rms}")
-endif ()
+# A reference file (--reference FILE, the --probe-output format): the contact
+# scene's closed form written here, a floor point (d, 0.5, 0) below an
+# emitting wall x = 0, 0 <= y, z <= 1 of exitance 10 (SceneGenerators.cxx):
+# two rectangles 0.5 wide, 1 high, perpendicular to the floor with a corner
+# at the foot of the point's normal plane (Howell's catalogue),
+# F = (atan(W/d) - d/sqrt(d^2+H^2) atan(W/sqrt(d^2+H^2))) / (2 pi) each.
+# The error against that file is the error against --reference analytic.
+file(WRITE "${WORK}/contact_probes.csv" "x,y,z,nx,ny,nz\n0.05,0.5,0,0,0,1\n0.3,0.5,0,0,0,1\n1.0,0.5,0,0,0,1\n")
+set(contactReference "x,y,z,E_r,E_g,E_b\n")
+foreach (d 0.05 0.3 1.0)
+  set(r "sqrt(${d}^2 + 1)")
+  float_eval(e "10 * 2 * (atan(0.5 / ${d}) - ${d} / ${r} * atan(0.5 / ${r})) / (2 * 3.14159265358979)")
+  string(APPEND contactReference "${d},0.5,0,${e},${e},${e}\n")
+  list(APPEND contactClosedForm ${e})
+endforeach ()
+file(WRITE "${WORK}/contact_reference.csv" "${contactReference}")
+foreach (reference analytic "${WORK}/contact_reference.csv")
+  expect_exit(0 "${PROGRAM}" solve contact --probes "${WORK}/contact_probes.csv"
+    --reference "${reference}" --probe-output "${WORK}/contact_values.csv" --report "${WORK}/contact.json")
+  file(READ "${WORK}/contact.json" contact)
+  string(JSON rms GET "${contact}" error probe_output_rms_relative_error)
+  list(APPEND contactRms ${rms})
+endforeach ()
+list(GET contactRms 0 analyticRms)
+list(GET contactRms 1 fileRms)
+expect_within("contact: RMS error against the analytic reference (measured ${CONTACT_RMS})" "${analyticRms}"
+  0 ${CONTACT_RMS_BOUND})
+expect_within("contact: RMS error against the closed form in a file (against analytic: ${analyticRms})"
+  "${fileRms}" "${analyticRms} - 1e-9" "${analyticRms} + 1e-9")
 # The path-traced reference: at the probes, and per pixel of the --exr view.
 expect_exit(0 "${PROGRAM}" solve shadow --probes "${DATA}/shadow_probes.csv"
   --reference pathtraced --reference-samples 4096 --exr "${WORK}/shadow.exr"
   --reference-exr "${WORK}/shadow_reference.exr" --size 32 --report "${WORK}/shadow_pt.json")
 file(READ "${WORK}/shadow_pt.json" pt)
 string(JSON kind GET "${pt}" error reference)
+string(JSON rms GET "${pt}" error probe_output_rms_relative_error)
 if (NOT kind MATCHES "^path traced: 4096 paths per probe" OR NOT EXISTS "${WORK}/shadow_reference.exr")
   message(FATAL_ERROR "path-traced reference: ${kind}")
 endif ()
+# The same solution's error against the path tracer is its error against the
+# closed form, up to the path tracer's noise (relative SE up to 4.7e-2 in the
+# penumbrae).
+expect_within("shadow: RMS error against the path tracer (measured ${SHADOW_PT_RMS}, against analytic ${shadowRms})"
+  "${rms}" "${shadowRms} - ${SHADOW_PT_DIFFERENCE_BOUND}" "${shadowRms} + ${SHADOW_PT_DIFFERENCE_BOUND}")
 expect_exit(2 "${PROGRAM}" solve shadow --reference-exr "${WORK}/bad.exr")
 
 # Hierarchical radiosity (Hardt & Teller): discontinuity-meshed by default,
@@ -138,9 +214,9 @@ if (NOT method STREQUAL "hierarchical" OR NOT meshing GREATER 0 OR NOT linkToler
     "${triangles} triangles, ${kept} segments")
 endif ()
 # The interpolants resolve the penumbra that the constant leaves cannot.
-if (rms GREATER 0.05 OR NOT rms LESS leafRms)
-  message(FATAL_ERROR "hierarchical error: interpolants ${rms}, leaves ${leafRms}")
-endif ()
+expect_within("hierarchical: interpolants' RMS error (measured ${H_RMS})" "${rms}" 0 ${H_RMS_BOUND})
+expect_within("hierarchical: leaves' RMS error (measured ${H_LEAF_RMS})" "${leafRms}"
+  "${H_LEAF_RMS_FACTOR} * ${rms}" ${H_LEAF_RMS_BOUND})
 set(meshedRms "${rms}")
 file(STRINGS "${WORK}/h_history.csv" history LIMIT_COUNT 2)
 list(GET history 1 first)
@@ -160,27 +236,39 @@ list(LENGTH rows n)
 file(READ "${WORK}/hl.json" hl)
 string(JSON meshing GET "${hl}" parameters discontinuity_meshing)
 string(JSON rms GET "${hl}" error rms_relative_error)
-if (NOT n EQUAL 32 OR meshing OR NOT rms GREATER meshedRms)
-  message(FATAL_ERROR "--no-discontinuity-meshing: ${n} lines, meshing ${meshing}, rms ${rms} "
-    "(interpolants of the meshed run: ${meshedRms})")
+if (NOT n EQUAL 32 OR meshing)
+  message(FATAL_ERROR "--no-discontinuity-meshing: ${n} lines, meshing ${meshing}")
 endif ()
-# A room from a file, the sensor in mid-air included (gathered from the leaves).
+expect_within("--no-discontinuity-meshing: RMS error (measured ${HL_RMS}, interpolants of the meshed run ${meshedRms})"
+  "${rms}" "${H_LEAF_RMS_FACTOR} * ${meshedRms}" ${HL_RMS_BOUND})
+# The README's defaults: link tolerance 0.05, minimum element 1/64 of the
+# diagonal, 4 refinement rounds, k = 10, w_min = 0.05, gathering tolerance 1e-3.
+foreach (pair "link_tolerance;0.05" "min_element_size;0.015625" "max_refinement_rounds;4"
+    "discontinuities_per_leaf;10" "min_discontinuity_weight;0.05" "tolerance;0.001")
+  list(GET pair 0 name)
+  list(GET pair 1 documented)
+  string(JSON value GET "${hl}" parameters ${name})
+  expect_within("hierarchical default ${name}" "${value}" ${documented} ${documented})
+endforeach ()
+# A room from a file, the sensor in mid-air included (gathered from the
+# leaves), against the path tracer.
 expect_exit(0 "${PROGRAM}" solve "${DATA}/room.obj" --method hierarchical --max-time 20
-  --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/hroom_values.csv")
+  --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/hroom_values.csv"
+  --reference pathtraced --reference-samples 16384 --report "${WORK}/hroom.json")
 file(STRINGS "${WORK}/hroom_values.csv" rows)
 list(LENGTH rows n)
-list(GET rows 1 centre)
-string(REPLACE "," ";" centre "${centre}")
-list(GET centre 3 er)
-if (NOT n EQUAL 5 OR rows MATCHES "nan" OR er LESS 1 OR er GREATER 30)
+if (NOT n EQUAL 5 OR rows MATCHES "nan")
   message(FATAL_ERROR "hierarchical room probes: ${rows}")
 endif ()
+file(READ "${WORK}/hroom.json" hroom)
+string(JSON rms GET "${hroom}" error probe_output_rms_relative_error)
+expect_within("hierarchical room: RMS error against the path tracer (measured ${HROOM_RMS})" "${rms}"
+  0 ${HROOM_RMS_BOUND})
 expect_exit(2 "${PROGRAM}" solve shadow --method hierarchical --link-tolerance 0
   --output "${WORK}/bad.vtp")
 
 # Meshless: the contact scene against its closed form, probes from the Shepard
 # field, the Table 1 columns in the report.
-file(WRITE "${WORK}/contact_probes.csv" "x,y,z,nx,ny,nz\n0.05,0.5,0,0,0,1\n0.3,0.5,0,0,0,1\n1.0,0.5,0,0,0,1\n")
 expect_exit(0 "${PROGRAM}" solve contact --method meshless --point-levels 4
   --probes "${WORK}/contact_probes.csv" --reference analytic --probe-output "${WORK}/ml_values.csv"
   --output "${WORK}/ml.vtp" --report "${WORK}/ml.json" --image "${WORK}/ml.png")
@@ -195,9 +283,10 @@ string(JSON generated GET "${ml}" meshless samples_generated)
 string(JSON gathered GET "${ml}" meshless samples_gathered_to)
 string(JSON rms GET "${ml}" error rms_relative_error)
 if (NOT n EQUAL 4 OR rows MATCHES "nan" OR NOT method STREQUAL "meshless" OR NOT generated GREATER gathered
-    OR NOT gathered GREATER 0 OR NOT rms LESS 0.02)
-  message(FATAL_ERROR "meshless: ${n} rows, method ${method}, samples ${generated}/${gathered}, rms ${rms}")
+    OR NOT gathered GREATER 0)
+  message(FATAL_ERROR "meshless: ${n} rows, method ${method}, samples ${generated}/${gathered}")
 endif ()
+expect_within("meshless: RMS error (measured ${ML_RMS})" "${rms}" 0 ${ML_RMS_BOUND})
 expect_exit(2 "${PROGRAM}" solve contact --method meshless --point-levels 0 --output "${WORK}/bad.vtp")
 
 # Face cluster radiosity: a closed room of reflectance 0.99 against its closed
@@ -214,9 +303,34 @@ string(JSON transfers GET "${fc}" facecluster transfers)
 string(JSON rms GET "${fc}" error probe_output_rms_relative_error)
 file(READ "${WORK}/fc.vtp" vtp)
 if (NOT method STREQUAL "facecluster" OR NOT leaves GREATER 0 OR NOT transfers GREATER 0
-    OR NOT rms LESS 0.01 OR NOT vtp MATCHES "IrradianceVector" OR NOT EXISTS "${WORK}/fc.png")
-  message(FATAL_ERROR "facecluster: method ${method}, ${leaves} leaves, ${transfers} transfers, rms ${rms}")
+    OR NOT vtp MATCHES "Name=\"IrradianceVector\" [^>]*NumberOfComponents=\"9\"" OR NOT EXISTS "${WORK}/fc.png")
+  message(FATAL_ERROR "facecluster: method ${method}, ${leaves} leaves, ${transfers} transfers, "
+    "no 9-component IrradianceVector or no image")
 endif ()
+expect_within("facecluster closed room: RMS error (measured ${FC_RMS})" "${rms}" 0 ${FC_RMS_BOUND})
+# The closed form itself: every surface of a closed room of uniform
+# reflectance 0.99 and exitance 1 has irradiance H = 1 + 0.99 H = 100.
+read_probe_values("${WORK}/fc_values.csv" fcv)
+foreach (i RANGE 2)
+  foreach (channel 3 4 5)
+    list(GET fcv_${i} ${channel} e)
+    expect_within("facecluster closed room: probe ${i} (measured 100.000095)" "${e}"
+      "100 - ${FC_ABS_BOUND}" "100 + ${FC_ABS_BOUND}")
+  endforeach ()
+endforeach ()
+# The README's defaults.
+foreach (pair "irradiance_basis;linear" "radiosity_basis;constant")
+  list(GET pair 0 name)
+  list(GET pair 1 documented)
+  string(JSON value GET "${fc}" parameters ${name})
+  if (NOT value STREQUAL documented)
+    message(FATAL_ERROR "facecluster default ${name}: ${value}, documented ${documented}")
+  endif ()
+endforeach ()
+string(JSON value GET "${fc}" parameters transfer_tolerance)
+expect_within("facecluster default transfer_tolerance" "${value}" 0.99999e-5 1.00001e-5)
+string(JSON value GET "${fc}" parameters max_bisections)
+expect_within("facecluster default max_bisections" "${value}" 0 0)
 expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --irradiance-basis septic
   --output "${WORK}/bad.vtp")
 expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --irradiance-basis linear
@@ -236,9 +350,10 @@ foreach (halvings 0 4)
   file(READ "${WORK}/edge_${halvings}.json" edge)
   string(JSON edge_rms_${halvings} GET "${edge}" error probe_output_rms_relative_error)
 endforeach ()
-if (NOT edge_rms_4 LESS 0.02 OR NOT edge_rms_4 LESS edge_rms_0)
-  message(FATAL_ERROR "facecluster by a contact edge: rms ${edge_rms_4} halved, ${edge_rms_0} not")
-endif ()
+expect_within("facecluster by a contact edge, 4 halvings: RMS error (measured ${EDGE4_RMS})" "${edge_rms_4}"
+  0 ${EDGE4_RMS_BOUND})
+expect_within("facecluster by a contact edge, no halving: RMS error (measured ${EDGE0_RMS}; halved ${edge_rms_4})"
+  "${edge_rms_0}" "${EDGE_GAIN} * ${edge_rms_4}" ${EDGE0_RMS_BOUND})
 
 expect_exit(2 "${PROGRAM}" solve shadow --probes "${DATA}/room_probes.csv"
   --reference "${WORK}/shadow_values.csv" --output "${WORK}/bad.vtp")
