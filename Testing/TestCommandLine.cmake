@@ -77,6 +77,14 @@ if (NOT kind MATCHES "^path traced: 16384 paths per probe")
 endif ()
 expect_within("room: RMS error against the path tracer (measured ${ROOM_RMS})" "${rms}" 0 ${ROOM_RMS_BOUND})
 expect_within("room: max error against the path tracer (measured ${ROOM_MAX})" "${max}" 0 ${ROOM_MAX_BOUND})
+# --max-memory 0 (the default) is 75% of physical memory (README).
+file(STRINGS "/proc/meminfo" memTotal REGEX "^MemTotal:")
+if (memTotal MATCHES "([0-9]+) kB")
+  string(JSON budget GET "${report}" parameters memory_budget_bytes)
+  float_eval(expected "0.75 * ${CMAKE_MATCH_1} * 1024")
+  expect_within("default memory budget (75% of MemTotal: ${expected})" "${budget}"
+    "0.999 * ${expected}" "1.001 * ${expected}")
+endif ()
 string(JSON method GET "${report}" method)
 string(JSON stop GET "${report}" solution stop)
 if (NOT method STREQUAL "progressive" OR NOT stop STREQUAL "converged")
@@ -357,6 +365,8 @@ expect_within("facecluster by a contact edge, no halving: RMS error (measured ${
 
 expect_exit(2 "${PROGRAM}" solve shadow --probes "${DATA}/room_probes.csv"
   --reference "${WORK}/shadow_values.csv" --output "${WORK}/bad.vtp")
+# --reference needs --probes (README).
+expect_exit(2 "${PROGRAM}" solve shadow --reference analytic --output "${WORK}/bad.vtp")
 expect_exit(2 "${PROGRAM}" solve cornell --probes "${DATA}/room_probes.csv"
   --reference analytic --output "${WORK}/bad.vtp")
 if (NOT last_stderr MATCHES "no closed form")
