@@ -75,7 +75,7 @@ HierarchicalPoint RunHierarchical(const Scene& scene, const std::vector<Probe>& 
   const ConvergenceRow& last = point.Stats.History.Rows.back();
   point.Leaf.Rms = last.RmsError;
   point.Leaf.Max = last.MaxRelError;
-  point.Leaf.Counted = point.Stats.ErrorProbesTracked;
+  point.Leaf.Counted = probes.size(); // every probe (an untracked one is an infinite error)
   DiscontinuityMeshOptions meshOptions; // k = 10, w_min = 0.05 (SPEC defaults)
   const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, meshOptions);
   point.MeshSeconds = mesh.Seconds;
@@ -133,9 +133,10 @@ int RunBench(const std::string& outputDir, bool quick)
   md << "# Error against run time\n\nMachine: " << CpuModel() << ", "
      << std::thread::hardware_concurrency() << " hardware threads. Mode: "
      << (quick ? "quick" : "full") << ".\n\n"
-     << "Errors are relative irradiance errors at the scene's probes against the analytic "
-        "reference, or the path-traced one where there is no closed form (RMS and maximum over "
-        "probes).\n\n"
+     << "Errors are irradiance errors at the scene's probes against the analytic reference, or "
+        "the path-traced one where there is no closed form, relative to the peak reference "
+        "irradiance (luminance; RMS and maximum over every probe, so umbrae count, and a probe "
+        "without a value is an infinite error).\n\n"
         "Hierarchical radiosity is swept over the relative link tolerance (`--link-tolerance`; "
         "minimum element 1/64 of the diagonal, gathering tolerance 1e-3, 4 refinement rounds). "
         "`hierarchical` is the solver's own constant leaves; `hierarchical+DM` is the same "
@@ -298,8 +299,8 @@ int RunBench(const std::string& outputDir, bool quick)
       chart->AddInputData(meshCurve, "hierarchical + discontinuity mesh, interpolants");
     }
     chart->RemoveAllColumns();
-    chart->AddColumn("rms_error", "RMS relative error");
-    chart->AddColumn("max_rel_error", "max relative error");
+    chart->AddColumn("rms_error", "RMS error / peak irradiance");
+    chart->AddColumn("max_rel_error", "max error / peak irradiance");
     // Log-log as the harness asks, unless the runs are too close in time for
     // a log axis to show them apart.
     double fastest = 1e300, slowest = 0.0;

@@ -275,4 +275,17 @@ nlohmann::json ErrorHead(const std::string& referenceKind, std::size_t probes, s
   e["probes_on_a_surface"] = onSurface;
   return e;
 }
+
+void AddProbeOutputErrors(nlohmann::json& e, const ErrorFigures& all)
+{
+  // The probe output (every probe): the error relative to the peak reference
+  // irradiance, then each probe's error relative to its own reference.
+  e["probe_output_rms_relative_error"] = Finite(all.Rms);
+  e["probe_output_max_relative_error"] = Finite(all.Max);
+  e["probe_output_rms_per_probe_relative_error"] = Finite(all.RmsRelative);
+  e["probe_output_max_per_probe_relative_error"] = Finite(all.MaxRelative);
+  e["probe_output_probes_counted"] = all.Counted;
+  e["probe_output_probes_not_finite"] = all.NotFinite;
+  e["peak_reference_irradiance"] = Finite(all.Peak);
+}
 } // namespace solve

@@ -10,6 +10,7 @@
 #include "vtkTable.h"
 
 #include "Radiosity/Common/ConvergenceHistory.h"
+#include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Hierarchical/DiscontinuityMesher.h"
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/Scene.h"
@@ -104,6 +105,9 @@ void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,
   Clock::time_point start, const SolverStatistics& stats);
 /// The head of the report's error section: the reference and the probes.
 nlohmann::json ErrorHead(const std::string& referenceKind, std::size_t probes, std::size_t onSurface);
+/// The error figures of the probe output (every probe, ErrorMetrics.h): peak-
+/// and per-probe relative RMS and maximum, probes counted and not finite.
+void AddProbeOutputErrors(nlohmann::json& e, const ErrorFigures& all);
 
 /// `solve --method hierarchical` (called by the solve command once the
 /// probes, the reference and the scene are read and checked).

@@ -338,6 +338,8 @@ int RunSolve(const SolveArguments& args)
     }
     else
     {
+      // The solver's last history row: every probe, relative to the peak
+      // reference (a probe the solver does not follow is an infinite error, null).
       const ConvergenceRow& last = stats.History.Rows.back();
       nlohmann::json e = ErrorHead(referenceKind, probes.size(), stats.ErrorProbesTracked);
       e["rms_relative_error"] = std::isfinite(last.RmsError) ? nlohmann::json(last.RmsError) : nlohmann::json();
@@ -345,9 +347,7 @@ int RunSolve(const SolveArguments& args)
       if (!probeValues.empty())
       {
         // Every probe, off-surface ones (gathered) included.
-        const ErrorFigures all = RelativeErrors(probeValues, reference);
-        e["probe_output_rms_relative_error"] = all.Rms;
-        e["probe_output_max_relative_error"] = all.Max;
+        AddProbeOutputErrors(e, RelativeErrors(probeValues, reference));
       }
       report["error"] = e;
     }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <cmath>
 #include <vector>
 
@@ -63,7 +65,8 @@ TEST(FormFactor, CoaxialDiscManySides)
     const Vec3 tri[3] = { Vec3(0, 0, h), poly[k], poly[(k + 1) % sides] };
     f += PointToPolygonFormFactor(Vec3(0.0), Vec3(0, 0, 1), tri, 3);
   }
-  EXPECT_NEAR(f, closedform::PointToCoaxialDisc(r, h), 2e-5);
+  std::cout << "disc: " << f - closedform::PointToCoaxialDisc(r, h) << "\n";
+  EXPECT_NEAR(f, closedform::PointToCoaxialDisc(r, h), 5e-6); // measured 1.66e-6 (the inscribed polygon)
 }
 
 TEST(FormFactor, PointToRectangleCorner)
@@ -95,7 +98,8 @@ TEST(FormFactor, ParallelRectanglesClosedForm)
   const std::vector<Vec3> emitter = { Vec3(0, 0, c), Vec3(0, b, c), Vec3(a, b, c), Vec3(a, 0, c) };
   const double f = IntegrateOverRectangle(Vec3(0.0), Vec3(a, 0, 0), Vec3(0, b, 0), Vec3(0, 0, 1),
     emitter, 16);
-  EXPECT_NEAR(f, closedform::ParallelRectangles(a, b, c), 1e-6);
+  std::cout << "parallel: " << f - closedform::ParallelRectangles(a, b, c) << "\n";
+  EXPECT_NEAR(f, closedform::ParallelRectangles(a, b, c), 1e-11); // measured 3.4e-12
 }
 
 TEST(FormFactor, PerpendicularRectanglesSharingAnEdge)
@@ -107,7 +111,8 @@ TEST(FormFactor, PerpendicularRectanglesSharingAnEdge)
   const std::vector<Vec3> emitter = { Vec3(0, 0, 0), Vec3(0, l, 0), Vec3(0, l, h), Vec3(0, 0, h) };
   const double f = IntegrateOverRectangle(Vec3(0.0), Vec3(w, 0, 0), Vec3(0, l, 0), Vec3(0, 0, 1),
     emitter, 32);
-  EXPECT_NEAR(f, closedform::PerpendicularRectangles(l, w, h), 2e-5);
+  std::cout << "perpendicular: " << f - closedform::PerpendicularRectangles(l, w, h) << "\n";
+  EXPECT_NEAR(f, closedform::PerpendicularRectangles(l, w, h), 8e-7); // measured 2.9e-7
 }
 
 TEST(FormFactor, DiscApproximationConvergesFarAway)
@@ -117,7 +122,8 @@ TEST(FormFactor, DiscApproximationConvergesFarAway)
   const double area = 0.005;
   const double exact = PointToPolygonFormFactor(Vec3(0.0), Vec3(0, 0, 1), tri, 3);
   const double disc = DiscFormFactor(Vec3(0.0), Vec3(0, 0, 1), c, Vec3(0, 0, -1), area);
-  EXPECT_NEAR(disc, exact, 1e-3 * exact);
+  std::cout << "disc approximation: " << disc / exact - 1 << "\n";
+  EXPECT_NEAR(disc, exact, 2e-5 * exact); // measured 6.3e-6
 }
 
 TEST(FormFactor, PolygonsOfManyVertices)

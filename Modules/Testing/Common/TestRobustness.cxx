@@ -142,7 +142,7 @@ TEST(MemoryBudget, SampledFacingPairsWithinATenthOfAPercent)
   const double sampled = FacingTrianglePairs(cube);
   std::cout << "closed cube of " << m << " triangles: facing pairs sampled " << sampled << ", exact " << exact
             << " (" << (sampled / exact - 1) * 100 << "%)\n";
-  EXPECT_NEAR(sampled / exact, 1.0, 1e-3);
+  EXPECT_NEAR(sampled / exact, 1.0, 1.5e-4); // measured 5.0e-5
 }
 
 TEST(MemoryBudget, HierarchicalSphereOf20kTrianglesIsRefusedAtOnce)
@@ -353,7 +353,7 @@ TEST(Robustness, AbortDuringMeshlessPointPlacementWithinASecond)
   const double late = abort.SecondsSinceStop();
   std::cout << "meshless placement stopped " << late << " s after the abort\n";
   EXPECT_EQ(stats.Stop, StopReason::Aborted);
-  EXPECT_LT(late, 1.0);
+  EXPECT_LT(late, 1.0); // wall clock: measured 1.9 ms; 1 s is the promise, the margin a loaded machine
   ExpectZero(solver.Surface(), "meshless aborted during placement");
 }
 
@@ -370,7 +370,7 @@ TEST(Robustness, AbortDuringHierarchicalLinkingWithinASecond)
   std::cout << "hierarchical linking stopped " << late << " s after the abort\n";
   EXPECT_EQ(stats.Stop, StopReason::Aborted);
   EXPECT_EQ(stats.Iterations, 0) << "the abort came during linking, before any sweep";
-  EXPECT_LT(late, 1.0);
+  EXPECT_LT(late, 1.0); // wall clock: measured 0.1 ms; 1 s is the promise, the margin a loaded machine
 }
 
 TEST(Robustness, AbortDuringTheFirstMeshingPhaseWithinASecond)
@@ -392,5 +392,5 @@ TEST(Robustness, AbortDuringTheFirstMeshingPhaseWithinASecond)
   std::cout << "meshing stopped in phase '" << phase << "' " << late << " s after the abort\n";
   EXPECT_EQ(phase, "finding discontinuities");
   EXPECT_TRUE(mesh.Interpolants.empty());
-  EXPECT_LT(late, 1.0);
+  EXPECT_LT(late, 1.0); // wall clock: measured 0.14 ms; 1 s is the promise, the margin a loaded machine
 }

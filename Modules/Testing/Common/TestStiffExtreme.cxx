@@ -18,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <cmath>
 
 using namespace radiosity;
@@ -69,8 +71,8 @@ ConvergenceRow SolveAndProbe(
 
 /// Solves with `method`; the returned row carries the final error at the
 /// probes, read from the method's own representation of the solution.
-ConvergenceRow SolveAgainst(Method method, const Scene& scene, const std::vector<Probe>& probes,
-  SolutionMesh* solution = nullptr, double tolerance = 1e-4)
+ConvergenceRow SolveAgainstOnce(Method method, const Scene& scene, const std::vector<Probe>& probes,
+  SolutionMesh* solution, double tolerance)
 {
   AnalyticReference ref;
   std::string why;
@@ -145,6 +147,31 @@ ConvergenceRow SolveAgainst(Method method, const Scene& scene, const std::vector
   return row;
 }
 
+ConvergenceRow SolveAgainst(Method method, const Scene& scene, const std::vector<Probe>& probes,
+  SolutionMesh* solution = nullptr, double tolerance = 1e-4)
+{
+  const ConvergenceRow row = SolveAgainstOnce(method, scene, probes, solution, tolerance);
+  std::cout << "method " << static_cast<int>(method) << ": RMS " << row.RmsError << ", max "
+            << row.MaxRelError << " of the peak, energy balance " << row.EnergyBalance << "\n";
+  return row;
+}
+
+/// The bound of `method` among the four (each about 3 times what it measures).
+double ForMethod(Method method, double progressive, double hierarchical, double meshless, double faceCluster)
+{
+  switch (method)
+  {
+    case Method::Progressive:
+      return progressive;
+    case Method::Hierarchical:
+      return hierarchical;
+    case Method::Meshless:
+      return meshless;
+    default:
+      return faceCluster;
+  }
+}
+
 class StiffExtreme : public ::testing::TestWithParam<Method>
 {
 };
@@ -170,6 +197,9 @@ TEST_P(StiffExtreme, EmissionOverSixteenOrdersOfMagnitude)
   SolutionMesh solution;
   const ConvergenceRow last = SolveAgainst(GetParam(), sphere, probes, &solution);
   ExpectFinite(solution);
+  // Measured max 0.0122 (progressive), 0.0106 (hierarchical), 0.0101
+  // (meshless), 0.0098 (face cluster) of the peak: the 320 facets' departure
+  // from the sphere, common to all.
   EXPECT_LT(last.MaxRelError, 0.02);
 }
 
@@ -182,8 +212,10 @@ TEST_P(StiffExtreme, ProbesOneMillimetreFromAContactEdge)
     probes.push_back(Probe{ Vec3(d, 0.5, 0.0), Vec3(0, 0, 1) });
   }
   const ConvergenceRow last = SolveAgainst(GetParam(), contact, probes);
-  // The irradiance there is near E/2 and varies logarithmically.
-  EXPECT_LT(last.MaxRelError, 0.02);
+  // The irradiance there is near E/2 and varies logarithmically. Measured
+  // max 1.7e-5, 2.7e-6, 0.0038, 0.0012 of the peak (progressive,
+  // hierarchical, meshless, face cluster).
+  EXPECT_LT(last.MaxRelError, ForMethod(GetParam(), 5e-5, 8e-6, 0.011, 0.0035));
 }
 
 TEST_P(StiffExtreme, SliverTrianglesOfAspectRatio1e4)
@@ -238,7 +270,9 @@ TEST_P(StiffExtreme, SliverTrianglesOfAspectRatio1e4)
   SolutionMesh solution;
   const ConvergenceRow last = SolveAgainst(GetParam(), s, probes, &solution);
   ExpectFinite(solution);
-  EXPECT_LT(last.MaxRelError, 0.03);
+  // Measured max 3.3e-4, 7.0e-4, 0.0029, 0.0047 of the peak (progressive,
+  // hierarchical, meshless, face cluster).
+  EXPECT_LT(last.MaxRelError, ForMethod(GetParam(), 1e-3, 2.1e-3, 0.0087, 0.014));
 }
 
 TEST_P(StiffExtreme, ZeroAreaDuplicateAndOverlappingTriangles)
@@ -280,7 +314,9 @@ TEST_P(StiffExtreme, ZeroAreaDuplicateAndOverlappingTriangles)
   }
   else
   {
-    EXPECT_LT(std::fabs(last.EnergyBalance), 1e-3);
+    // Measured 3.3e-4 (progressive, the overlapping receivers' shadow rays)
+    // and 8.9e-17 (hierarchical: rounding).
+    EXPECT_LT(std::fabs(last.EnergyBalance), GetParam() == Method::Progressive ? 1e-3 : 1e-12);
   }
 }
 

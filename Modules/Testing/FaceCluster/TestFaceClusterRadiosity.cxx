@@ -48,9 +48,9 @@ TEST(FaceClusterRadiosity, ClosedRoomsWithinOnePercent)
     std::cout << "closed room rho " << rho << ": " << stats.Iterations << " iterations, "
               << solver.Statistics().LeafElements << " leaves, " << solver.Statistics().Transfers
               << " transfers, worst " << worst << "\n";
-    EXPECT_LT(worst, 0.01) << "rho " << rho;
+    EXPECT_LT(worst, 0.0023) << "rho " << rho; // measured 7.7e-4 (0.5), 2.0e-4 (0.9), 7.0e-4 (0.99)
     // The vertex output: n . E at every point (the faces have points of
-    // their own), within 2% including the corners.
+    // their own), including the corners.
     const std::vector<std::array<double, 9>> vertices = solver.VertexIrradianceVectors();
     ASSERT_EQ(vertices.size(), scene.Points.size());
     double vertexWorst = 0.0;
@@ -64,7 +64,8 @@ TEST(FaceClusterRadiosity, ClosedRoomsWithinOnePercent)
         vertexWorst = std::max(vertexWorst, std::abs(h * (1.0 - rho) - 1.0));
       }
     }
-    EXPECT_LT(vertexWorst, 0.02) << "rho " << rho;
+    std::cout << "  vertex worst " << vertexWorst << "\n";
+    EXPECT_LT(vertexWorst, 0.0043) << "rho " << rho; // measured 1.4e-3 (0.5), 1.9e-4 (0.9), 7.2e-4 (0.99)
   }
 }
 
@@ -89,7 +90,7 @@ TEST(FaceClusterRadiosity, SphereWithNonUniformEmission)
   std::cout << "sphere: " << stats.Iterations << " iterations, " << solver.Statistics().LeafElements
             << " leaves, " << solver.Statistics().Transfers << " transfers, worst " << worst << " in "
             << stats.SolveSeconds << " s\n";
-  EXPECT_LT(worst, 0.01);
+  EXPECT_LT(worst, 0.01); // measured 0.0097 (the facets' own departure is up to 1.7%)
 }
 
 TEST(FaceClusterRadiosity, ConstantBasesArePlainFaceClusterRadiosity)
@@ -144,6 +145,7 @@ TEST(FaceClusterRadiosity, ConstantBasesArePlainFaceClusterRadiosity)
     errors[basis == BasisKind::Linear] = RelativeErrors(onFloor.Evaluate(probes), reference.Irradiance).Rms;
   }
   std::cout << "floor by a wall: constant bases " << errors[0] << " RMS, linear irradiance " << errors[1] << "\n";
-  EXPECT_LT(errors[0], 0.5);
-  EXPECT_LT(errors[1], 0.5 * errors[0]);
+  EXPECT_LT(errors[0], 0.18);              // measured 0.062 of the peak
+  EXPECT_LT(errors[1], 0.019);             // measured 0.0064
+  EXPECT_LT(errors[1], 0.3 * errors[0]);   // measured 0.10 times
 }

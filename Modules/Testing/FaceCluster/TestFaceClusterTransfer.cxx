@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
 using namespace radiosity;
 
 namespace
@@ -50,6 +54,84 @@ Transfer Between(const Pair& pair, std::uint32_t r, std::uint32_t e, const Polyn
     1.0, 1.0, *pair.Visibility, rule);
 }
 }
+
+namespace transfertest
+{
+/// Lambert's vector form factor of triangle `c` seen from x (independent of
+/// FormFactor.cxx): (1 / 2 pi) sum over the edges of the angle they subtend
+/// times the unit normal of the plane through x and the edge, pointing
+/// towards the triangle.
+Vec3 LambertVector(const Vec3& x, const Vec3 c[3])
+{
+  Vec3 sum(0.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    const Vec3 a = glm::normalize(c[i] - x), b = glm::normalize(c[(i + 1) % 3] - x);
+    const double angle = std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
+    sum += angle * glm::normalize(glm::cross(a, b));
+  }
+  sum /= 2.0 * 3.14159265358979323846;
+  const Vec3 towards = (c[0] + c[1] + c[2]) / 3.0 - x;
+  return glm::dot(sum, towards) < 0 ? -sum : sum;
+}
+
+/// The weighted least-squares plane alpha + beta x + gamma y through the
+/// vector form factor at the points, per component, at (0.5, 0.5).
+Vec3 LeastSquaresPlaneAtCentre(
+  const std::vector<Vec3>& points, const std::vector<double>& weights, const Vec3 c[3])
+{
+  double m[3][3] = {}, r[3][3] = {};
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    const double phi[3] = { 1.0, points[p].x - 0.5, points[p].y - 0.5 };
+    const Vec3 f = LambertVector(points[p], c);
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        m[i][j] += weights[p] * phi[i] * phi[j];
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        r[k][i] += weights[p] * phi[i] * f[k];
+      }
+    }
+  }
+  // Cramer's rule for the first unknown (the plane at the centre).
+  auto det = [](const double a[3][3]) {
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+      a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  };
+  Vec3 out(0.0);
+  for (int k = 0; k < 3; ++k)
+  {
+    double a[3][3];
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        a[i][j] = j == 0 ? r[k][i] : m[i][j];
+      }
+    }
+    out[k] = det(a) / det(m);
+  }
+  return out;
+}
+
+/// The mean of the vector form factor over the unit square z = 0 (midpoint rule, n x n).
+Vec3 AreaMeanOverUnitSquare(const Vec3 c[3], int n)
+{
+  Vec3 sum(0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      sum += LambertVector(Vec3((i + 0.5) / n, (j + 0.5) / n, 0.0), c);
+    }
+  }
+  return sum / double(n * n);
+}
+} // namespace transfertest
 
 TEST(FaceClusterTransfer, SurfaceRulesLieOnTheSurface)
 {
@@ -102,7 +184,9 @@ TEST(FaceClusterTransfer, ConstantCouplingIsTheFormFactor)
     ASSERT_EQ(t.K.size(), 1u);
     // n . K for unit radiosity: the area-averaged form factor receiver -> emitter.
     const double exact = closedform::ParallelRectangles(1.0, 1.0, c);
-    EXPECT_NEAR(t.K[0].z, exact, 0.01 * exact) << "distance " << c;
+    std::cout << "distance " << c << ": coupling / closed form - 1 = " << t.K[0].z / exact - 1 << "\n";
+    // Measured 6.2e-7 (c = 1), 2.0e-9 (c = 2), 1.0e-11 (c = 4) relative.
+    EXPECT_NEAR(t.K[0].z, exact, 1.8e-6 * exact) << "distance " << c;
     EXPECT_NEAR(t.K[0].x, 0.0, 1e-9);
   }
 }
@@ -116,20 +200,27 @@ TEST(FaceClusterTransfer, TriangleEmitterUsesTheExactVectorFormFactor)
   const FaceCluster receiver = h.Cluster(pair.Receiver);
   const SurfaceRule rr = MakeSurfaceRule(h, pair.Receiver, receiver, linear, 3);
   const Transfer t = Between(pair, pair.Receiver, triangle, linear, 3);
-  // The constant coefficient is the least-squares fit of the exact vector
-  // form factor at the receiver's nodes.
+  // The coupling is the weighted least-squares plane through the exact
+  // vector form factor at the receiver's nodes; its constant coefficient is
+  // that plane at the box centre, the receiver square's centre (0.5, 0.5).
+  // Both are computed here without the code under test: Lambert's formula
+  // written out below, and the 3 x 3 normal equations in x and y.
   const Vec3 corners[3] = { pair.Geometry.Vertex(triangle, 0), pair.Geometry.Vertex(triangle, 1),
     pair.Geometry.Vertex(triangle, 2) };
-  Vec3 expected(0.0);
-  for (std::size_t p = 0; p < rr.Size(); ++p)
-  {
-    expected += rr.Dual[p * 3] * PointToPolygonVectorFormFactor(rr.Points[p], corners, 3);
-  }
-  EXPECT_NEAR(glm::length(t.K[0] - expected), 0.0, 1e-12);
+  const Vec3 plane = transfertest::LeastSquaresPlaneAtCentre(rr.Points, rr.Weights, corners);
+  const Vec3 mean = transfertest::AreaMeanOverUnitSquare(corners, 400);
+  std::cout << "triangle emitter: |K0 - independent fit| " << glm::length(t.K[0] - plane)
+            << ", |K0 - area mean| / |area mean| " << glm::length(t.K[0] - mean) / glm::length(mean) << "\n";
+  // Measured 5.9e-17: the same fit up to rounding (bound at rounding level).
+  EXPECT_NEAR(glm::length(t.K[0] - plane), 0.0, 1e-15);
+  // And close to the receiver's mean vector irradiance (the fit's constant
+  // term on a symmetric rule): measured 5.8% away, the nodes' quadrature
+  // error at 0.1 m from the emitter.
+  EXPECT_LT(glm::length(t.K[0] - mean) / glm::length(mean), 0.15);
   EXPECT_GT(t.K[0].z, 0.1);
   // The vector form factor's normal component is the point form factor.
   const Vec3 x(0.3, 0.4, 0.0);
-  EXPECT_NEAR(PointToPolygonVectorFormFactor(x, corners, 3).z,
+  EXPECT_NEAR(transfertest::LambertVector(x, corners).z,
     PointToTriangleFormFactor(x, Vec3(0, 0, 1), corners[0], corners[1], corners[2]), 1e-12);
 }
 
@@ -142,6 +233,7 @@ TEST(FaceClusterTransfer, ErrorFallsWithDistance)
     return t.Error / t.K[0].z; // relative to the power received (area 1, rho 0.5)
   };
   const double near = relativeError(0.5), far = relativeError(8.0);
-  EXPECT_GT(near, 4.0 * far);
-  EXPECT_LT(far, 0.05);
+  std::cout << "transfer error near " << near << ", far " << far << "\n";
+  EXPECT_GT(near, 22.0 * far); // measured near 0.338, far 0.00515: 66 times
+  EXPECT_LT(far, 0.015);       // measured 0.00515
 }

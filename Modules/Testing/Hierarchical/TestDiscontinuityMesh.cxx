@@ -148,7 +148,7 @@ TEST(DiscontinuityMesh, ExactPenumbraWithFewTriangles)
     ASSERT_TRUE(std::isfinite(values[i].x)) << "probe " << i << " not on the mesh";
     worst = std::max(worst, std::fabs(values[i].x - exact[i]) / peak);
   }
-  EXPECT_LT(worst, 0.02);
+  EXPECT_LT(worst, 0.0042); // measured 0.00141 of the peak
   std::size_t floorTriangles = 0;
   for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
   {
@@ -197,7 +197,12 @@ TEST(DiscontinuityMesh, ExactPenumbraWithFewTriangles)
             << " segments kept of " << mesh.SegmentsFound << "); uniform mesh with exact vertex values: "
             << uniformError << " with " << uniformTriangles << " triangles\n";
   EXPECT_LE(uniformError, worst * 1.0001);
-  EXPECT_LT(4 * floorTriangles, uniformTriangles);
+  // Measured: 854 floor triangles against 524,288 uniform ones (614 times as
+  // many). The uniform counts step by 4 (2 n^2, n doubling), so the uniform
+  // bound is the step below the measured one.
+  EXPECT_LE(floorTriangles, 2560u);
+  EXPECT_GE(uniformTriangles, 131072u);
+  EXPECT_GT(uniformTriangles, 200 * floorTriangles);
 }
 
 TEST(DiscontinuityMesh, WithoutDiscontinuitiesOneTrianglePerLeaf)

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 using namespace radiosity;
 
@@ -30,8 +31,10 @@ TEST(HierarchicalRadiosity, ClosedCubeAllReflectances)
     {
       worst = std::max(worst, std::fabs(b.x - exact) / exact);
     }
-    EXPECT_LT(worst, 0.01) << "rho " << rho << " after " << stats.Iterations << " sweeps";
-    EXPECT_LT(stats.Iterations, 200) << "rho " << rho;
+    // Exact by design (the per-leaf row-sum normalisation): measured 1.1e-15
+    // (rho 0.5) to 4.4e-13 (rho 0.999), rounding amplified by 1 / (1 - rho).
+    EXPECT_LT(worst, 1e-12) << "rho " << rho << " after " << stats.Iterations << " sweeps";
+    EXPECT_LE(stats.Iterations, 15) << "rho " << rho; // measured 5 sweeps for every rho
     std::cout << "rho " << rho << ": " << stats.Iterations << " sweeps, " << stats.Links
               << " links, worst " << worst << "\n";
   }
@@ -56,18 +59,41 @@ TEST(HierarchicalRadiosity, SphereInterior)
   const SolverStatistics stats = solver.Solve();
   EXPECT_EQ(stats.Stop, StopReason::Converged);
   EXPECT_EQ(stats.ErrorProbesTracked, probes.size());
-  EXPECT_LT(stats.History.Rows.back().MaxRelError, 0.01);
+  std::cout << "sphere: RMS " << stats.History.Rows.back().RmsError << ", max "
+            << stats.History.Rows.back().MaxRelError << " of the peak\n";
+  EXPECT_LT(stats.History.Rows.back().RmsError, 0.0075); // measured 0.0025 of the peak
+  EXPECT_LT(stats.History.Rows.back().MaxRelError, 0.01); // measured 0.0078
   EXPECT_EQ(stats.PartialLinks, 0u); // a convex enclosure has no occluders
 }
 
 TEST(HierarchicalRadiosity, ShadowSceneRecordsBlockers)
 {
   const Scene scene = MakeShadowScene(4, 1.0);
+  // Black scene: one bounce, the floor's irradiance is the direct light with
+  // its exact penumbra (the analytic reference), on a line under the blocker.
+  std::vector<Probe> probes;
+  for (int i = 0; i <= 36; ++i)
+  {
+    probes.push_back({ Vec3(-0.9 + 0.05 * i, 0.05, 0.0), Vec3(0, 0, 1) });
+  }
+  AnalyticReference ref;
+  std::string why;
+  ASSERT_TRUE(ComputeAnalyticReference(scene, probes, ref, why)) << why;
   HierarchicalOptions options;
+  options.ErrorProbes = probes;
+  options.ErrorReference = ref.Irradiance;
   HierarchicalRadiosity solver(scene, options);
   const SolverStatistics stats = solver.Solve();
   EXPECT_EQ(stats.Stop, StopReason::Converged);
   EXPECT_GT(stats.PartialLinks, 0u);
+  EXPECT_EQ(stats.ErrorProbesTracked, probes.size());
+  const ConvergenceRow& last = stats.History.Rows.back();
+  std::cout << "shadow scene, constant leaves against the exact penumbra: RMS " << last.RmsError
+            << ", max " << last.MaxRelError << " of the peak\n";
+  // Constant leaves across a penumbra: measured RMS 0.103, max 0.303 of the
+  // peak (deterministic; the bounds are 1.5x).
+  EXPECT_LT(last.RmsError, 0.155);
+  EXPECT_LT(last.MaxRelError, 0.45);
   // Every partial link's blockers are the blocker square's triangles.
   std::size_t blockerTriangles = 0;
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
@@ -88,22 +114,6 @@ TEST(HierarchicalRadiosity, ShadowSceneRecordsBlockers)
       EXPECT_EQ(scene.ObjectNames[scene.ObjectIds[b]].rfind("blocker", 0), 0u);
     }
   }
-  // Black scene: one bounce, the floor's mean irradiance is the direct light.
-  std::vector<Probe> probes;
-  for (double x = -0.9; x <= 0.9; x += 0.3)
-  {
-    probes.push_back({ Vec3(x, 0.05, 0.0), Vec3(0, 0, 1) });
-  }
-  AnalyticReference ref;
-  std::string why;
-  ASSERT_TRUE(ComputeAnalyticReference(scene, probes, ref, why)) << why;
-  double total = 0.0;
-  for (const RGB& r : ref.Irradiance)
-  {
-    EXPECT_TRUE(std::isfinite(r.x));
-    total += r.x;
-  }
-  EXPECT_GT(total, 0.0);
 }
 
 TEST(HierarchicalRadiosity, ScaleInvariance)

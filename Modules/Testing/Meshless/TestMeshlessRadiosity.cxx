@@ -57,7 +57,9 @@ TEST(MeshlessRadiosity, ClosedRoomsWithinOnePercent)
     MeshlessOptions options;
     options.Placement.Levels = 3;
     const ErrorFigures e = SolveAgainstAnalytic(cube, Centroids(cube, 3), options);
-    EXPECT_LT(e.Max, 0.01) << "rho " << rho;
+    // Exact up to rounding: measured 4.4e-16 (rho 0.5), 1.7e-14 (0.9), 1.0e-12 (0.99).
+    EXPECT_LT(e.Max, 3e-12) << "rho " << rho;
+    EXPECT_EQ(e.Counted, Centroids(cube, 3).size());
     std::cout << "closed room rho " << rho << ": max error " << e.Max << "\n";
   }
 }
@@ -72,7 +74,7 @@ TEST(MeshlessRadiosity, SphereWithNonUniformEmission)
   options.Placement.Levels = 3;
   MeshlessStatistics table;
   const ErrorFigures e = SolveAgainstAnalytic(sphere, Centroids(sphere, 29), options, &table);
-  EXPECT_LT(e.Max, 0.01);
+  EXPECT_LT(e.Max, 0.01); // measured 0.0067 of the peak
   EXPECT_GT(table.SamplesGenerated, table.CoarsestSamples);
   EXPECT_GT(table.SamplesGatheredTo, 0u);
   std::cout << "sphere: max error " << e.Max << ", " << table.SamplesGenerated << " samples, "
@@ -100,5 +102,10 @@ TEST(MeshlessRadiosity, CornellBoxAgainstThePathTracer)
             << " s; " << t.SamplesGenerated << " samples, " << t.SamplesGatheredTo
             << " gathered to, " << t.VisibilityRays << " rays, " << t.Levels << " levels, "
             << t.CoarsestSamples << " coarsest\n";
-  EXPECT_LT(e.Rms, 0.15);
+  // Against a path tracer of 16384 paths per probe (its noise is part of
+  // the figure): measured RMS 0.0203, max 0.0887 of the peak.
+  EXPECT_EQ(e.Counted, probes.size());
+  EXPECT_EQ(e.NotFinite, 0u);
+  EXPECT_LT(e.Rms, 0.06);
+  EXPECT_LT(e.Max, 0.26);
 }

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <cmath>
 #include <random>
 
@@ -72,6 +74,8 @@ TEST(PointHierarchy, PoissonDiskLevelsOnASquare)
     if (level > 1)
     {
       const double growth = static_cast<double>(count) / static_cast<double>(previous);
+      std::cout << "level " << level << ": growth " << growth << "\n";
+      // Halving the disk radius packs about 4 times the points: measured 3.83, 3.94.
       EXPECT_GT(growth, 2.5) << "level " << level;
       EXPECT_LT(growth, 5.0) << "level " << level;
     }
@@ -200,10 +204,11 @@ TEST(ShepardField, CoefficientsVanishOnSmoothData)
   }
   f.Fit(smooth);
   const double smoothLevel1 = mean(1, f.Coefficients()), smoothFinest = mean(3, f.Coefficients());
-  EXPECT_LT(5.0 * smoothFinest, smoothLevel1);
+  EXPECT_LT(5.0 * smoothFinest, smoothLevel1); // measured 15 times (0.0117 against 0.00076)
   f.Fit(step);
   const double stepFinest = mean(3, f.Coefficients());
-  EXPECT_GT(stepFinest, 2.0 * smoothFinest); // details stay where the data jump
+  std::cout << "smooth level 1 " << smoothLevel1 << ", finest " << smoothFinest << "; step finest " << stepFinest << "\n";
+  EXPECT_GT(stepFinest, 13.0 * smoothFinest); // details stay where the data jump: measured 40 times
 }
 
 TEST(ShepardField, GroupsDoNotLeak)

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <cmath>
 
 using namespace radiosity;
@@ -45,7 +47,9 @@ TEST_P(ClosedCube, UniformRadiosityIsEOverOneMinusRho)
   EXPECT_EQ(stats.Stop, StopReason::Converged) << ToString(stats.Stop);
   const SolutionMesh s = ExtractSolution(solver.Mesh());
   const double exact = 1.0 / (1.0 - rho);
-  EXPECT_LT(MaxRelativeError(s, exact), 0.01) << "rho = " << rho << ", iterations "
+  std::cout << "closed cube rho " << rho << ": max error " << MaxRelativeError(s, exact) << "\n";
+  // Measured 5.7e-6 (rho 0.5), 1.6e-5 (0.9), 1.7e-6 (0.99), 7.6e-7 (0.999).
+  EXPECT_LT(MaxRelativeError(s, exact), 5e-5) << "rho = " << rho << ", iterations "
                                               << stats.Iterations;
   // A convex enclosure: nothing can occlude, so no ray is cast.
   EXPECT_EQ(stats.Occluders, 0u);
@@ -71,7 +75,9 @@ TEST(ProgressiveRadiosity, OvershootingShortensHighReflectanceRooms)
   ProgressiveRadiosity slow(cube, options);
   const SolverStatistics plain = slow.Solve();
   EXPECT_EQ(plain.Stop, StopReason::IterationLimit);
-  EXPECT_GT(plain.UnshotPowerW, 10 * accelerated.UnshotPowerW);
+  std::cout << "unshot without / with overshooting: " << plain.UnshotPowerW / accelerated.UnshotPowerW
+            << " after " << accelerated.Iterations << " shots\n";
+  EXPECT_GT(plain.UnshotPowerW, 220 * accelerated.UnshotPowerW); // measured 670 times
 }
 
 TEST(ProgressiveRadiosity, EnergyBalanceOnOpenScene)
@@ -87,7 +93,8 @@ TEST(ProgressiveRadiosity, EnergyBalanceOnOpenScene)
   EXPECT_NEAR(emitted, 10.0, 1e-9);
   const double balance =
     (emitted - stats.AbsorbedPowerW - stats.EscapedPowerW - 0.0) / emitted;
-  EXPECT_LT(std::fabs(balance), 1e-3) << "absorbed " << stats.AbsorbedPowerW << " escaped "
+  std::cout << "balance " << balance << "\n";
+  EXPECT_LT(std::fabs(balance), 3e-4) << "absorbed " // measured 1.0e-4 << stats.AbsorbedPowerW << " escaped "
                                       << stats.EscapedPowerW;
   // The receiver absorbs (1 - rho) of what reaches it from the uniform
   // emitter (which reflects nothing back): E A F12 (1 - rho), F12 in closed form.
@@ -104,7 +111,8 @@ TEST(ProgressiveRadiosity, EnergyBalanceOnOpenScene)
     }
   }
   const double f12 = closedform::ParallelRectangles(1.0, 1.0, 0.5);
-  EXPECT_NEAR(receiverAbsorbed, 10.0 * f12 * 0.2, 2e-3 * 10.0 * f12 * 0.2);
+  std::cout << "receiver absorbed " << receiverAbsorbed / (10.0 * f12 * 0.2) - 1 << " off\n";
+  EXPECT_NEAR(receiverAbsorbed, 10.0 * f12 * 0.2, 1.9e-6 * 10.0 * f12 * 0.2); // measured 6.3e-7
 }
 
 TEST(ProgressiveRadiosity, ScaleInvariance)
@@ -139,6 +147,9 @@ TEST(ProgressiveRadiosity, ScaleInvariance)
   // Embree's single-precision rays round differently at the two scales, so a
   // few grazing visibility rays may flip: 1e-5 of the mean radiosity. A self-
   // intersection offset that did not scale would show errors of order 1.
+  // Measured 1.3e-6; the bound stays at 1e-5 because which rays flip depends
+  // on the platform's float rounding (Embree's SIMD width).
+  std::cout << "scales: " << results[1] / results[0] - 1 << "\n";
   EXPECT_NEAR(results[0], results[1], 1e-5 * results[0]);
 }
 

@@ -1,6 +1,7 @@
 // The analytic references: which scenes have one, and their values against
 // independent computations (closed forms, and brute-force integration).
 #include "Radiosity/Reference/AnalyticReference.h"
+#include "Radiosity/Reference/DenseReference.h"
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Progressive/ProgressiveRadiosity.h"
 #include "Radiosity/Scenes/SceneGenerators.h"
@@ -8,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 using namespace radiosity;
 
@@ -46,30 +49,66 @@ double BruteForceShadow(const Vec3& p, double emission, int k)
 
 TEST(AnalyticReference, ClosedUniformEnclosure)
 {
+  // E = 2, rho = 0.9 everywhere: H = E / (1 - rho) = 20 (textbook), and the
+  // dense matrix solve of the same cube (another algorithm: (I - rho F) B = E
+  // by LU with contour-integral form factors) at the probe.
   const Scene cube = MakeClosedCube(1.0, 2, 0.9, 2.0);
+  const std::vector<Probe> probes = { Probe{ Vec3(0.5, 0.5, 0), Vec3(0, 0, 1) },
+    Probe{ Vec3(0.1, 1.0, 0.8), Vec3(0, -1, 0) } };
   AnalyticReference ref;
   std::string why;
-  ASSERT_TRUE(ComputeAnalyticReference(cube, { Probe{ Vec3(0.5, 0.5, 0), Vec3(0, 0, 1) } }, ref, why));
+  ASSERT_TRUE(ComputeAnalyticReference(cube, probes, ref, why));
   EXPECT_EQ(ref.Kind, "closed uniform enclosure");
-  EXPECT_NEAR(ref.Irradiance[0].r, 20.0, 1e-12);
+  DenseReferenceOptions options;
+  options.ElementSize = 0.2;
+  const std::vector<RGB> dense = DenseIrradianceAt(cube, SolveDense(cube, options), probes);
+  for (std::size_t i = 0; i < probes.size(); ++i)
+  {
+    EXPECT_NEAR(ref.Irradiance[i].r, 20.0, 1e-12);
+    std::cout << "closed cube probe " << i << ": analytic - dense " << ref.Irradiance[i].r - dense[i].r << "\n";
+    // Measured 1.4e-14 (rounding in the LU solve of 2 x 6 x 16 elements).
+    EXPECT_NEAR(ref.Irradiance[i].r, dense[i].r, 1e-13);
+  }
 }
 
 TEST(AnalyticReference, SphereInterior)
 {
-  const Scene sphere = MakeSphereInterior(1.0, 2, 0.8, RGB(5.0, 2.0, 1.0));
+  // Emission on part of the sphere only (MakeSphereInterior's cap): against
+  // the dense matrix solve of the same 1280 facets, which departs from the
+  // smooth sphere the reference describes by the facets' own form factors.
+  const Scene sphere = MakeSphereInterior(1.0, 3, 0.8, RGB(5.0, 2.0, 1.0));
+  std::vector<Probe> probes;
+  for (std::size_t t = 0; t < sphere.Triangles.size(); t += 97)
+  {
+    probes.push_back(Probe{ sphere.Centroid(t), sphere.Normal(t) });
+  }
   AnalyticReference ref;
   std::string why;
-  ASSERT_TRUE(ComputeAnalyticReference(sphere, { Probe{ Vec3(0, 0, -1), Vec3(0, 0, 1) } }, ref, why)) << why;
+  ASSERT_TRUE(ComputeAnalyticReference(sphere, probes, ref, why)) << why;
   EXPECT_EQ(ref.Kind, "sphere interior");
-  double emitting = 0, area = 0;
+  std::size_t emitting = 0;
   for (std::size_t t = 0; t < sphere.Triangles.size(); ++t)
   {
-    emitting += sphere.Materials[t].Emission.r > 0 ? sphere.Area(t) : 0.0;
-    area += sphere.Area(t);
+    emitting += sphere.Materials[t].Emission.r > 0;
   }
-  EXPECT_NEAR(ref.Irradiance[0].r, 5.0 * emitting / area / 0.2, 1e-9);
-  EXPECT_GT(emitting, 0.0);
-  EXPECT_LT(emitting, area);
+  ASSERT_GT(emitting, 0u);
+  ASSERT_LT(emitting, sphere.Triangles.size());
+  DenseReferenceOptions options;
+  options.ElementSize = 0.05; // one element per facet
+  const DenseSolution solution = SolveDense(sphere, options);
+  EXPECT_EQ(solution.Radiosity.size(), sphere.Triangles.size());
+  const std::vector<RGB> dense = DenseIrradianceAt(sphere, solution, probes);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < probes.size(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::fabs(ref.Irradiance[i][c] - dense[i][c]) / dense[i][c]);
+    }
+  }
+  std::cout << "sphere: " << probes.size() << " probes, worst relative difference to the dense solve "
+            << worst << "\n";
+  EXPECT_LT(worst, 0.006); // measured 0.0022
 }
 
 TEST(AnalyticReference, ExactPenumbraAgainstBruteForce)
@@ -92,7 +131,11 @@ TEST(AnalyticReference, ExactPenumbraAgainstBruteForce)
       PointToPolygonFormFactor(probes[i].Position, Vec3(0, 0, 1),
         std::vector<Vec3>{ Vec3(-0.25, -0.25, 1), Vec3(-0.25, 0.25, 1), Vec3(0.25, 0.25, 1),
           Vec3(0.25, -0.25, 1) }.data(), 4);
-    EXPECT_NEAR(ref.Irradiance[i].r, brute, 5e-3 * unoccluded) << "x = " << probes[i].Position.x;
+    // The probes sit at multiples of 0.1, so the blocker's edges seen from
+    // them cut the emitter on the brute-force grid's lines: every cell is
+    // wholly seen or wholly hidden and the brute force is exact up to
+    // rounding. Measured 2.5e-14 of the unoccluded value at worst.
+    EXPECT_NEAR(ref.Irradiance[i].r, brute, 1e-13 * unoccluded) << "x = " << probes[i].Position.x;
     umbra = umbra || ref.Irradiance[i].r < 1e-12;
     lit = lit || std::fabs(ref.Irradiance[i].r - unoccluded) < 1e-12 * unoccluded;
     penumbra = penumbra || (ref.Irradiance[i].r > 0.1 * unoccluded && ref.Irradiance[i].r < 0.9 * unoccluded);
@@ -130,8 +173,11 @@ TEST(AnalyticReference, ProgressiveErrorHistoryOnTheSphere)
   const ConvergenceRow& first = stats.History.Rows.front();
   const ConvergenceRow& last = stats.History.Rows.back();
   EXPECT_FALSE(std::isnan(last.RmsError));
-  EXPECT_GT(first.MaxRelError, 0.5); // nothing received yet
+  EXPECT_GT(first.MaxRelError, 0.5); // nothing received yet: measured 1
   // The tessellated sphere (320 faces) is not the sphere: a few percent remain.
   EXPECT_EQ(stats.ErrorProbesTracked, probes.size());
-  EXPECT_LT(last.MaxRelError, 0.05);
+  std::cout << "history: first max " << first.MaxRelError << ", last RMS " << last.RmsError
+            << " max " << last.MaxRelError << "\n";
+  EXPECT_LT(last.RmsError, 0.03);      // measured 0.0099 of the peak
+  EXPECT_LT(last.MaxRelError, 0.045);  // measured 0.0150
 }

@@ -55,6 +55,6 @@ TEST(DenseReference, ProgressiveAgreesOnTheCornellBox)
   const ConvergenceRow& last = stats.History.Rows.back();
   std::cout << "progressive vs dense (" << reference.Radiosity.size()
             << " elements): rms " << last.RmsError << ", max " << last.MaxRelError << "\n";
-  EXPECT_LT(last.RmsError, 0.03);
-  EXPECT_LT(last.MaxRelError, 0.06);
+  EXPECT_LT(last.RmsError, 0.029);    // measured 0.0097 of the peak
+  EXPECT_LT(last.MaxRelError, 0.052); // measured 0.0174
 }
