@@ -61,7 +61,8 @@ TEST(QuadraticInterpolant, ReproducesSamplesAndQuadratics)
       }
     }
   }
-  EXPECT_NEAR(glm::length(q.Mean() - sum / double(n * n)), 0.0, 1e-4);
+  std::cout << "interpolant mean against the sum: " << glm::length(q.Mean() - sum / double(n * n)) << "\n";
+  EXPECT_NEAR(glm::length(q.Mean() - sum / double(n * n)), 0.0, 1.3e-5); // measured 4.4e-6 (the sum's own error)
 }
 
 TEST(Backprojection, AgreesWithTheAnalyticPenumbra)
