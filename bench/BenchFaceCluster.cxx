@@ -81,8 +81,8 @@ int main(int argc, char* argv[])
   }
 
   md << "\n## Error against run time\n\nLinear irradiance and constant radiosity bases, a sweep "
-        "over the transfer tolerance (relative to the emitted power); probes and references as in "
-        "`error-vs-time/`. Face cluster radiosity refines no further than the input triangles, so "
+        "over the transfer tolerance (relative to the emitted power); probes, references and errors "
+        "(relative to the peak reference irradiance, over every probe) as in `error-vs-time/`. Face cluster radiosity refines no further than the input triangles, so "
         "the coarse test scenes (the Cornell box has 32) are represented per input triangle.\n\n"
         "| scene | reference | transfer tolerance | time (s) | leaf elements | transfers | iterations | "
         "RMS error | max error |\n|---|---|---|---|---|---|---|---|---|\n";

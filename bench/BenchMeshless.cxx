@@ -82,7 +82,8 @@ int main(int argc, char* argv[])
   }
 
   md << "\n## Error against run time\n\nA sweep over the number of levels (coarsest radius 0.1 of the "
-        "diagonal, halved per level); probes and references as in `error-vs-time/`.\n\n"
+        "diagonal, halved per level); probes, references and errors as in `error-vs-time/` (relative "
+        "to the peak reference irradiance, over every probe).\n\n"
         "| scene | reference | levels | time (s) | samples | gathered to | bounces | RMS error | max error |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
   std::ofstream csv(dir + "/meshless-error-vs-time.csv");
