@@ -2,10 +2,8 @@
 #include "vtkRadiosityRequestGuard.h"
 
 #include "vtkCellData.h"
-#include "vtkFaceClusterHierarchy.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
-#include "vtkInformationObjectBaseKey.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -19,7 +17,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkFaceClusterHierarchyFilter);
-vtkInformationKeyMacro(vtkFaceClusterHierarchyFilter, FACE_CLUSTER_HIERARCHY, ObjectBase);
 
 vtkFaceClusterHierarchyFilter::vtkFaceClusterHierarchyFilter() = default;
 vtkFaceClusterHierarchyFilter::~vtkFaceClusterHierarchyFilter() = default;
@@ -58,7 +55,6 @@ int vtkFaceClusterHierarchyFilter::ExecuteRequest(vtkInformationVector** inputVe
   this->Reused = false;
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->GetInformation()->Remove(FACE_CLUSTER_HIERARCHY());
 
   radiosity::Scene scene;
   std::string error;
@@ -148,9 +144,6 @@ int vtkFaceClusterHierarchyFilter::ExecuteRequest(vtkInformationVector** inputVe
     }
     output->GetCellData()->AddArray(ids);
   }
-  vtkNew<vtkFaceClusterHierarchy> carrier;
-  carrier->SetHierarchy(this->Hierarchy);
-  output->GetInformation()->Set(FACE_CLUSTER_HIERARCHY(), carrier);
   this->UpdateProgress(1.0);
   return 1;
 }

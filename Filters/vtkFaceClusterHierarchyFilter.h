@@ -16,10 +16,11 @@
  * than the level keeps its own id; -1 for a cell that is not a triangle of
  * the scene, such as a line or a zero-area triangle; a polygon gets the
  * cluster of its first triangle). For multiblock input, the scene's
- * triangles as polydata with the same arrays. The hierarchy itself is in
- * the output's information under FACE_CLUSTER_HIERARCHY(), and is shared: a
- * second execution (or a solve) on the same geometry, materials and
- * ShapeWeight reuses it rather than building it again (GetReused()).
+ * triangles as polydata with the same arrays. The hierarchy itself
+ * (GetHierarchy()) is shared while this filter holds it: a second execution,
+ * or a downstream vtkRadiosityFilter with Method FaceCluster, on the same
+ * geometry, materials and ShapeWeight reuses it rather than building it
+ * again (GetReused(); radiosity::FaceClusterHierarchy::Shared).
  *
  * Bad input gets an error naming the array, cell or value and an empty
  * output. Progress is reported while clustering; AbortExecute stops it.
@@ -33,7 +34,6 @@
 #include <memory> // for std::shared_ptr
 #include <string> // for std::string
 
-class vtkInformationObjectBaseKey;
 
 namespace radiosity
 {
@@ -60,8 +60,6 @@ public:
   vtkGetMacro(ShapeWeight, double);
   ///@}
 
-  /// The key of the output's information that holds a vtkFaceClusterHierarchy.
-  static vtkInformationObjectBaseKey* FACE_CLUSTER_HIERARCHY();
 
   /// The hierarchy of the last execution (null after a failure).
   std::shared_ptr<const radiosity::FaceClusterHierarchy> GetHierarchy() const

@@ -3,13 +3,8 @@
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkFaceClusterHierarchy.h"
-#include "vtkFaceClusterHierarchyFilter.h"
-#include "vtkHierarchicalRadiositySolution.h"
 #include "vtkInformation.h"
-#include "vtkInformationObjectBaseKey.h"
 #include "vtkInformationVector.h"
-#include "vtkMeshlessRadiositySolution.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -18,71 +13,19 @@
 #include "vtkRadiosityRequestGuard.h"
 #include "vtkVersion.h"
 
-#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
-#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
-#include "Radiosity/Meshless/MeshlessRadiosity.h"
-#include "Radiosity/Progressive/ProgressiveRadiosity.h"
+#include "Radiosity/FaceCluster/FaceClusterMethod.h"
+#include "Radiosity/Hierarchical/HierarchicalMethod.h"
+#include "Radiosity/Meshless/MeshlessMethod.h"
+#include "Radiosity/Progressive/ProgressiveMethod.h"
 #include "Radiosity/Common/SolutionMesh.h"
 
 #include <algorithm>
 #include <chrono>
 
 vtkStandardNewMacro(vtkRadiosityFilter);
-vtkInformationKeyMacro(vtkRadiosityFilter, HIERARCHICAL_SOLUTION, ObjectBase);
-vtkInformationKeyMacro(vtkRadiosityFilter, MESHLESS_SOLUTION, ObjectBase);
-
-vtkRadiosityFilter* vtkRadiosityFilter::FindUpstream(vtkAlgorithm* producer)
-{
-  for (int hop = 0; producer && hop < 4; ++hop)
-  {
-    if (auto* solver = vtkRadiosityFilter::SafeDownCast(producer))
-    {
-      return solver;
-    }
-    if (!producer->IsA("vtkPVPostFilter") || producer->GetNumberOfInputConnections(0) < 1)
-    {
-      return nullptr;
-    }
-    producer = producer->GetInputAlgorithm(0, 0);
-  }
-  return nullptr;
-}
 
 namespace
 {
-/// A solver together with the scene it references, so that the solver
-/// handed out (an aliasing shared_ptr) keeps the scene alive.
-template <typename Solver, typename Options>
-struct SolverHolder
-{
-  std::shared_ptr<const radiosity::Scene> SceneRef;
-  Solver Instance;
-  SolverHolder(std::shared_ptr<const radiosity::Scene> scene, const Options& options)
-    : SceneRef(std::move(scene))
-    , Instance(*this->SceneRef, options)
-  {
-  }
-};
-using HierarchicalHolder = SolverHolder<radiosity::HierarchicalRadiosity, radiosity::HierarchicalOptions>;
-using MeshlessHolder = SolverHolder<radiosity::MeshlessRadiosity, radiosity::MeshlessOptions>;
-
-/// The face cluster solver with its scene.
-struct FaceClusterHolder
-{
-  std::shared_ptr<const radiosity::Scene> SceneRef;
-  radiosity::FaceClusterRadiosity Instance;
-  FaceClusterHolder(std::shared_ptr<const radiosity::Scene> scene,
-    const radiosity::FaceClusterSettings& settings,
-    std::shared_ptr<const radiosity::FaceClusterHierarchy> hierarchy)
-    : SceneRef(std::move(scene))
-    , Instance(*this->SceneRef, settings,
-        // Built on the shared scene itself: no copy of it.
-        hierarchy ? std::move(hierarchy)
-                  : radiosity::FaceClusterHierarchy::Shared(this->SceneRef, settings.Clustering))
-  {
-  }
-};
-
 constexpr radiosity::BasisKind BasisKinds[5] = { radiosity::BasisKind::Constant,
   radiosity::BasisKind::Linear, radiosity::BasisKind::Bilinear, radiosity::BasisKind::Quadratic,
   radiosity::BasisKind::Cubic };
@@ -91,6 +34,8 @@ constexpr radiosity::BasisKind BasisKinds[5] = { radiosity::BasisKind::Constant,
 vtkRadiosityFilter::vtkRadiosityFilter()
   : LastScene(std::make_shared<radiosity::Scene>())
 {
+  // Port 0: the surface solution; port 1: the method's own product.
+  this->SetNumberOfOutputPorts(2);
 }
 vtkRadiosityFilter::~vtkRadiosityFilter() = default;
 
@@ -145,6 +90,98 @@ int vtkRadiosityFilter::RequestData(
     [this](const std::string& message) { return this->Fail(message); });
 }
 
+template <typename Options>
+void vtkRadiosityFilter::FillCommonOptions(Options& options) const
+{
+  options.Tolerance = this->Tolerance;
+  options.MaxTimeSeconds = this->MaxTime;
+  options.Threads = this->NumberOfThreads;
+  options.MemoryBudgetBytes = this->MaxMemory * 1e9; // 0: the core's default (75% of physical memory)
+}
+
+template <typename Options>
+void vtkRadiosityFilter::FillErrorReference(Options& options) const
+{
+  options.ErrorProbes = this->ErrorProbes;
+  options.ErrorReference = this->ErrorReference;
+}
+
+std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
+  const std::shared_ptr<const radiosity::Scene>& scene) const
+{
+  switch (this->Method)
+  {
+    case Hierarchical:
+    {
+      radiosity::HierarchicalOptions options;
+      this->FillCommonOptions(options);
+      this->FillErrorReference(options);
+      options.MaxIterations = this->MaxIterations;
+      options.RelativeLinkTolerance = this->LinkTolerance;
+      options.MinElementSize = this->MinElementSize;
+      options.MaxRefinementRounds = this->MaxRefinementRounds;
+      radiosity::DiscontinuityMeshOptions meshing;
+      meshing.Discontinuities = this->DiscontinuityMeshing;
+      meshing.MaxPerLeaf = this->MaxDiscontinuitiesPerLeaf;
+      meshing.MinWeight = this->MinDiscontinuityWeight;
+      meshing.Conforming = this->ConformingBoundaries;
+      meshing.Threads = this->NumberOfThreads;
+      return std::make_shared<radiosity::HierarchicalMethod>(scene, options, meshing);
+    }
+    case Meshless:
+    {
+      radiosity::MeshlessOptions options;
+      this->FillCommonOptions(options);
+      this->FillErrorReference(options);
+      options.MaxBounces = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
+      options.Placement.InitialRadius = this->PointRadius;
+      options.Placement.Levels = this->PointLevels;
+      options.GatherRays = this->GatherRays;
+      options.VariationThreshold = this->VariationThreshold;
+      options.SolidAngleThreshold = this->SolidAngleThreshold;
+      return std::make_shared<radiosity::MeshlessMethod>(scene, options);
+    }
+    case FaceCluster:
+    {
+      radiosity::FaceClusterSettings settings;
+      this->FillCommonOptions(settings);
+      settings.IrradianceBasis = BasisKinds[this->IrradianceBasis];
+      settings.RadiosityBasis = BasisKinds[std::min(this->RadiosityBasis, this->IrradianceBasis)];
+      settings.TransferTolerance = this->TransferTolerance;
+      settings.MaxBisections = this->MaxBisections;
+      settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
+      // The hierarchy shared by every user of this scene (FaceClusterHierarchy::
+      // Shared): one that vtkFaceClusterHierarchyFilter built upstream for
+      // the same geometry, materials and options is reused, not rebuilt.
+      return std::make_shared<radiosity::FaceClusterMethod>(scene, settings);
+    }
+    case Auto:
+    case Progressive:
+    default:
+    {
+      radiosity::ProgressiveOptions options;
+      this->FillCommonOptions(options);
+      this->FillErrorReference(options);
+      options.MaxIterations = this->MaxIterations;
+      options.Overshooting = this->Overshooting;
+      options.ShooterElementSize = this->ShooterElementSize;
+      options.InitialElementSize = this->InitialElementSize;
+      options.MaxSubdivisionLevels = this->MaxSubdivisionLevels;
+      options.SubdivisionThreshold = this->SubdivisionThreshold;
+      options.FormFactorTolerance = this->FormFactorTolerance;
+      options.VisibilitySamples = this->VisibilitySamples;
+      options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
+      return std::make_shared<radiosity::ProgressiveMethod>(scene, options);
+    }
+  }
+}
+
+void vtkRadiosityFilter::Warn(const std::string& warning)
+{
+  this->Warnings.push_back(warning);
+  vtkWarningMacro(<< warning);
+}
+
 int vtkRadiosityFilter::ExecuteRequest(
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -152,36 +189,31 @@ int vtkRadiosityFilter::ExecuteRequest(
   const auto start = Clock::now();
   this->LastError.clear();
   this->Warnings.clear();
+  this->Solver.reset();
   this->Solution.reset();
-  this->HierarchicalSolution.reset();
-  this->MeshlessSolution.reset();
-  this->FaceClusterSolution.reset();
   this->Statistics = radiosity::SolverStatistics();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  // The data object's information outlives executions: drop a solution of
-  // an earlier hierarchical run before anything can fail.
-  output->GetInformation()->Remove(HIERARCHICAL_SOLUTION());
-  output->GetInformation()->Remove(MESHLESS_SOLUTION());
+  vtkPolyData* productOutput = vtkPolyData::GetData(outputVector, 1);
+  productOutput->Initialize();
 
   radiosity::Scene scene;
   std::string error;
-  if (!vtkRadiositySceneConverter::ToScene(input, scene, error, this->Warnings))
+  std::vector<std::string> conversionWarnings;
+  if (!vtkRadiositySceneConverter::ToScene(input, scene, error, conversionWarnings))
   {
     return this->Fail("bad input: " + error);
   }
-  for (const std::string& w : this->Warnings)
+  for (const std::string& w : conversionWarnings)
   {
-    vtkWarningMacro(<< w);
+    this->Warn(w);
   }
   radiosity::ValidateScene(scene); // a SceneError is bad input (vtkRadiosityGuardedRequest)
   this->Cleanup = radiosity::DropDegenerateTriangles(scene);
   if (this->Cleanup.DegenerateTrianglesDropped > 0)
   {
-    const std::string w = "dropped " + std::to_string(this->Cleanup.DegenerateTrianglesDropped) +
-      " degenerate (zero-area) triangles";
-    this->Warnings.push_back(w);
-    vtkWarningMacro(<< w);
+    this->Warn("dropped " + std::to_string(this->Cleanup.DegenerateTrianglesDropped) +
+      " degenerate (zero-area) triangles");
   }
   if (scene.Triangles.empty())
   {
@@ -189,25 +221,23 @@ int vtkRadiosityFilter::ExecuteRequest(
   }
   if (!scene.HasEmitters())
   {
-    const std::string w = "the scene has no emitter: the solution is zero";
-    this->Warnings.push_back(w);
-    vtkWarningMacro(<< w);
+    this->Warn("the scene has no emitter: the solution is zero");
   }
   auto sharedScene = std::make_shared<const radiosity::Scene>(std::move(scene));
   this->LastScene = sharedScene;
-  const double budget = this->MaxMemory * 1e9; // 0: the core's default (75% of physical memory)
 
   auto last = Clock::now();
   // The solvers' fractions are estimates from the residual, which can dip;
-  // a progress bar (ParaView's) must not run backwards.
-  double shown = 0.0;
-  auto progress = [this, &last, &shown](const radiosity::ProgressStatus& status)
+  // a progress bar (ParaView's) must not run backwards. The product (the
+  // discontinuity mesh) takes the last tenth of the bar.
+  double shown = 0.0, offset = 0.0, scale = 1.0;
+  auto progress = [this, &last, &shown, &offset, &scale](const radiosity::ProgressStatus& status)
   {
     const auto now = Clock::now();
     if (std::chrono::duration<double>(now - last).count() > 0.05)
     {
       last = now;
-      shown = std::max(shown, status.Fraction);
+      shown = std::max(shown, offset + scale * status.Fraction);
       this->UpdateProgress(shown);
     }
     if (this->StatusCallback && !this->StatusCallback(status))
@@ -221,158 +251,67 @@ int vtkRadiosityFilter::ExecuteRequest(
 #endif
   };
 
-  if (this->Method == Hierarchical)
-  {
-    radiosity::HierarchicalOptions options;
-    options.Tolerance = this->Tolerance;
-    options.MaxIterations = this->MaxIterations;
-    options.MaxTimeSeconds = this->MaxTime;
-    options.Threads = this->NumberOfThreads;
-    options.RelativeLinkTolerance = this->LinkTolerance;
-    options.MinElementSize = this->MinElementSize;
-    options.MaxRefinementRounds = this->MaxRefinementRounds;
-    options.ErrorProbes = this->ErrorProbes;
-    options.ErrorReference = this->ErrorReference;
-    options.MemoryBudgetBytes = budget;
-    auto holder = std::make_shared<HierarchicalHolder>(sharedScene, options);
-    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-    last = Clock::now();
-    this->Statistics = holder->Instance.Solve(progress);
-    this->HierarchicalSolution =
-      std::shared_ptr<const radiosity::HierarchicalRadiosity>(holder, &holder->Instance);
-    this->Solution =
-      std::make_unique<radiosity::SolutionMesh>(radiosity::ExtractSolution(holder->Instance.Mesh()));
-  }
-  else if (this->Method == Meshless)
-  {
-    radiosity::MeshlessOptions options;
-    options.Tolerance = this->Tolerance;
-    options.MaxBounces = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
-    options.MaxTimeSeconds = this->MaxTime;
-    options.Threads = this->NumberOfThreads;
-    options.Placement.InitialRadius = this->PointRadius;
-    options.Placement.Levels = this->PointLevels;
-    options.GatherRays = this->GatherRays;
-    options.VariationThreshold = this->VariationThreshold;
-    options.SolidAngleThreshold = this->SolidAngleThreshold;
-    options.ErrorProbes = this->ErrorProbes;
-    options.ErrorReference = this->ErrorReference;
-    options.MemoryBudgetBytes = budget;
-    auto holder = std::make_shared<MeshlessHolder>(sharedScene, options);
-    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-    last = Clock::now();
-    this->Statistics = holder->Instance.Solve(progress);
-    this->MeshlessSolution =
-      std::shared_ptr<const radiosity::MeshlessRadiosity>(holder, &holder->Instance);
-    this->Solution = std::make_unique<radiosity::SolutionMesh>(holder->Instance.Surface());
-  }
-  else if (this->Method == FaceCluster)
-  {
-    radiosity::FaceClusterSettings settings;
-    settings.IrradianceBasis = BasisKinds[this->IrradianceBasis];
-    settings.RadiosityBasis = BasisKinds[std::min(this->RadiosityBasis, this->IrradianceBasis)];
-    settings.TransferTolerance = this->TransferTolerance;
-    settings.MaxBisections = this->MaxBisections;
-    settings.Tolerance = this->Tolerance;
-    settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
-    settings.MaxTimeSeconds = this->MaxTime;
-    settings.Threads = this->NumberOfThreads;
-    settings.MemoryBudgetBytes = budget;
-    // A hierarchy from vtkFaceClusterHierarchyFilter upstream, when it was
-    // built for this very scene; otherwise the shared one (built once).
-    std::shared_ptr<const radiosity::FaceClusterHierarchy> hierarchy;
-    if (auto* carrier = vtkFaceClusterHierarchy::SafeDownCast(
-          input->GetInformation()->Get(vtkFaceClusterHierarchyFilter::FACE_CLUSTER_HIERARCHY())))
-    {
-      hierarchy = carrier->GetHierarchy();
-      if (hierarchy &&
-        hierarchy->Fingerprint() != radiosity::FaceClusterHierarchy::FingerprintOf(*sharedScene, settings.Clustering))
-      {
-        hierarchy.reset();
-      }
-    }
-    auto holder = std::make_shared<FaceClusterHolder>(sharedScene, settings, hierarchy);
-    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-    last = Clock::now();
-    this->Statistics = holder->Instance.Solve(progress);
-    this->FaceClusterSolution =
-      std::shared_ptr<const radiosity::FaceClusterRadiosity>(holder, &holder->Instance);
-    this->Solution = std::make_unique<radiosity::SolutionMesh>(holder->Instance.Surface());
-  }
-  else
-  {
-    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-    this->SolveProgressive(progress);
-  }
-  this->UpdateProgress(1.0);
+  // One path for every method: build its solver, solve, output the surface
+  // (port 0) and the method's own product (port 1).
+  this->Solver = this->MakeSolver(sharedScene);
+  this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  last = Clock::now();
+  scale = 0.9;
+  this->Statistics = this->Solver->Solve(progress);
+  this->Solution = std::make_unique<radiosity::SolutionMesh>(this->Solver->Surface());
   if (this->Statistics.LinksWithBlockersCut > 0)
   {
-    const std::string w = std::to_string(this->Statistics.LinksWithBlockersCut) +
+    this->Warn(std::to_string(this->Statistics.LinksWithBlockersCut) +
       " links had more candidate blockers than the 64 kept per link: their visibility comes from "
-      "the blockers the rays between the nodes meet (approximate there)";
-    this->Warnings.push_back(w);
-    vtkWarningMacro(<< w);
+      "the blockers the rays between the nodes meet (approximate there)");
   }
-  if (this->Statistics.Stop == radiosity::StopReason::Aborted)
+  const bool aborted = this->Statistics.Stop == radiosity::StopReason::Aborted;
+  if (aborted)
   {
     vtkWarningMacro(<< "aborted after " << this->Statistics.Iterations << " iterations");
   }
   output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(*this->Solution, *this->LastScene));
   output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
-  if (this->FaceClusterSolution && output->GetNumberOfPoints() == static_cast<vtkIdType>(this->Solution->Points.size()))
+  if (output->GetNumberOfPoints() == static_cast<vtkIdType>(this->Solution->Points.size()))
   {
-    // The irradiance vectors at the points, for vtkVectorIrradianceMapper.
-    const auto vectors = this->FaceClusterSolution->VertexIrradianceVectors();
-    auto array = vtkRadiositySceneConverter::NewDoubleArray(
-      "IrradianceVector", 9, static_cast<vtkIdType>(vectors.size()));
-    for (std::size_t p = 0; p < vectors.size(); ++p)
+    for (const radiosity::ProductArray& a : this->Solver->SurfacePointArrays())
     {
-      array->SetTypedTuple(static_cast<vtkIdType>(p), vectors[p].data());
+      if (static_cast<vtkIdType>(a.Tuples()) == output->GetNumberOfPoints())
+      {
+        output->GetPointData()->AddArray(vtkRadiositySceneConverter::FromProductArray(a));
+      }
     }
-    output->GetPointData()->AddArray(array);
   }
-  // An aborted solve is not a solution to mesh downstream (VTK empties the
-  // output; GetHierarchicalSolution() still gives the partial one).
-  if (this->HierarchicalSolution && this->Statistics.Stop != radiosity::StopReason::Aborted)
+  // An aborted solve is not a solution to mesh downstream: the product
+  // stays empty (GetSolver() still gives the partial solution).
+  if (!aborted)
   {
-    vtkNew<vtkHierarchicalRadiositySolution> carrier;
-    carrier->SetSolution(this->HierarchicalSolution);
-    output->GetInformation()->Set(HIERARCHICAL_SOLUTION(), carrier);
+    offset = 0.9;
+    scale = 0.1;
+    const radiosity::SolverProduct product = this->Solver->Product(progress);
+    for (const std::string& w : product.Warnings)
+    {
+      this->Warn(w);
+    }
+    productOutput->ShallowCopy(vtkRadiositySceneConverter::FromProduct(product));
+    for (const char* name : { "ConvergenceHistory", "ObjectNames" })
+    {
+      if (vtkAbstractArray* a = output->GetFieldData()->GetAbstractArray(name))
+      {
+        productOutput->GetFieldData()->AddArray(a);
+      }
+    }
+    if (product.Triangles.empty() && !product.Points.empty())
+    {
+      // A product of points (the Shepard field) travels with the surface
+      // too, in its field data (the same arrays, no copy), so that a
+      // representation of port 0 (ParaView's Meshless Field Splats) reads
+      // it from its own input.
+      vtkRadiositySceneConverter::AttachPointProduct(productOutput, output);
+    }
   }
-  if (this->MeshlessSolution && this->Statistics.Stop != radiosity::StopReason::Aborted)
-  {
-    vtkNew<vtkMeshlessRadiositySolution> carrier;
-    carrier->SetSolution(this->MeshlessSolution);
-    output->GetInformation()->Set(MESHLESS_SOLUTION(), carrier);
-  }
+  this->UpdateProgress(1.0);
   return 1;
-}
-
-void vtkRadiosityFilter::SolveProgressive(const radiosity::ProgressCallback& progress)
-{
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  radiosity::ProgressiveOptions options;
-  options.Tolerance = this->Tolerance;
-  options.MaxIterations = this->MaxIterations;
-  options.MaxTimeSeconds = this->MaxTime;
-  options.Threads = this->NumberOfThreads;
-  options.Overshooting = this->Overshooting;
-  options.ShooterElementSize = this->ShooterElementSize;
-  options.InitialElementSize = this->InitialElementSize;
-  options.MaxSubdivisionLevels = this->MaxSubdivisionLevels;
-  options.SubdivisionThreshold = this->SubdivisionThreshold;
-  options.FormFactorTolerance = this->FormFactorTolerance;
-  options.VisibilitySamples = this->VisibilitySamples;
-  options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
-  options.ErrorProbes = this->ErrorProbes;
-  options.ErrorReference = this->ErrorReference;
-  options.MemoryBudgetBytes = this->MaxMemory * 1e9;
-  radiosity::ProgressiveRadiosity solver(*this->LastScene, options);
-  this->PreprocessSeconds += std::chrono::duration<double>(Clock::now() - start).count();
-
-  this->Statistics = solver.Solve(progress);
-  this->Solution = std::make_unique<radiosity::SolutionMesh>(radiosity::ExtractSolution(solver.Mesh()));
 }
 
 void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -404,9 +343,39 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TransferTolerance: " << this->TransferTolerance << "\n";
   os << indent << "MaxBisections: " << this->MaxBisections << "\n";
   os << indent << "MaxMemory: " << this->MaxMemory << " GB\n";
-  os << indent << "FaceClusterSolution: " << (this->FaceClusterSolution ? "yes" : "none") << "\n";
-  os << indent << "HierarchicalSolution: " << (this->HierarchicalSolution ? "yes" : "none") << "\n";
+  os << indent << "DiscontinuityMeshing: " << (this->DiscontinuityMeshing ? "On" : "Off") << "\n";
+  os << indent << "MaxDiscontinuitiesPerLeaf: " << this->MaxDiscontinuitiesPerLeaf << "\n";
+  os << indent << "MinDiscontinuityWeight: " << this->MinDiscontinuityWeight << "\n";
+  os << indent << "ConformingBoundaries: " << (this->ConformingBoundaries ? "On" : "Off") << "\n";
+  os << indent << "Solver: " << (this->Solver ? this->Solver->MethodName() : "(none)") << "\n";
   os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";
   os << indent << "StatusCallback: " << (this->StatusCallback ? "set" : "(none)") << "\n";
   os << indent << "LastError: " << this->LastError << "\n";
+}
+
+namespace
+{
+/// The method-specific solver inside `solver` when it is of method `Method`
+/// (sharing its ownership), else null.
+template <typename Method, typename Instance>
+std::shared_ptr<const Instance> InstanceOf(const std::shared_ptr<radiosity::RadiositySolver>& solver)
+{
+  auto method = std::dynamic_pointer_cast<const Method>(solver);
+  return method ? std::shared_ptr<const Instance>(method, &method->Instance()) : nullptr;
+}
+}
+
+std::shared_ptr<const radiosity::FaceClusterRadiosity> vtkRadiosityFilter::GetFaceClusterSolution() const
+{
+  return InstanceOf<radiosity::FaceClusterMethod, radiosity::FaceClusterRadiosity>(this->Solver);
+}
+
+std::shared_ptr<const radiosity::MeshlessRadiosity> vtkRadiosityFilter::GetMeshlessSolution() const
+{
+  return InstanceOf<radiosity::MeshlessMethod, radiosity::MeshlessRadiosity>(this->Solver);
+}
+
+std::shared_ptr<const radiosity::HierarchicalRadiosity> vtkRadiosityFilter::GetHierarchicalSolution() const
+{
+  return InstanceOf<radiosity::HierarchicalMethod, radiosity::HierarchicalRadiosity>(this->Solver);
 }

@@ -12,10 +12,14 @@
  * radiosity with BF refinement and the blockers of every partially visible
  * link, the solver of Hardt & Teller); Auto picks progressive.
  *
- * With Method Hierarchical the output's information carries the solver under
- * HIERARCHICAL_SOLUTION() (a vtkHierarchicalRadiositySolution), from which
- * vtkDiscontinuityMeshFilter builds the discontinuity mesh and its quadratic
- * interpolants; other methods remove that key.
+ * Port 1 is the method's own product as polydata (field data `ProductKind`
+ * names it): for Hierarchical the discontinuity mesh with its quadratic
+ * interpolants ("DiscontinuityMesh"), for Meshless the Shepard field's
+ * points ("ShepardField", also in port 0's field data, see
+ * vtkRadiositySceneConverter::AttachPointProduct), for FaceCluster the
+ * input triangles with their leaf cluster and vector irradiance
+ * ("LeafClusters"); empty for Progressive. Downstream filters, mappers and
+ * representations read it like any input.
  *
  * Bad input gives an error naming the array, cell or point and an empty
  * output (GetLastError() keeps the message). Progress events during the solve;
@@ -43,8 +47,8 @@ struct SceneAnalysis;
 class HierarchicalRadiosity;
 class MeshlessRadiosity;
 class FaceClusterRadiosity;
+class RadiositySolver;
 }
-class vtkInformationObjectBaseKey;
 
 class RADIOSITYFILTERS_EXPORT vtkRadiosityFilter : public vtkPolyDataAlgorithm
 {
@@ -162,12 +166,6 @@ public:
   /// Why the last execution failed ("" when it did not).
   const std::string& GetLastError() const { return this->LastError; }
 
-  /**
-   * The vtkRadiosityFilter that `producer` is, or that feeds it through
-   * ParaView's pass-through vtkPVPostFilter (which copies the data without
-   * the information keys that carry the solutions); null otherwise.
-   */
-  static vtkRadiosityFilter* FindUpstream(vtkAlgorithm* producer);
   /// What the last execution ignored or defaulted.
   const std::vector<std::string>& GetWarnings() const { return this->Warnings; }
   /// Statistics of the last solve (history, counts, times).
@@ -287,38 +285,42 @@ public:
   vtkGetMacro(MaxMemory, double);
   ///@}
 
-  /// The last face cluster solution; null otherwise.
-  std::shared_ptr<const radiosity::FaceClusterRadiosity> GetFaceClusterSolution() const
-  {
-    return this->FaceClusterSolution;
-  }
-
-  /// The last meshless solution (point hierarchy and fields); null otherwise.
-  std::shared_ptr<const radiosity::MeshlessRadiosity> GetMeshlessSolution() const
-  {
-    return this->MeshlessSolution;
-  }
+  ///@{
+  /**
+   * Method Hierarchical: the product on port 1 is Hardt & Teller's
+   * discontinuity mesh with its quadratic irradiance interpolants
+   * (cell array `QuadraticInterpolant`, for vtkQuadraticInterpolantMapper).
+   * DiscontinuityMeshing off gives one interpolant per quadtree leaf;
+   * MaxDiscontinuitiesPerLeaf is k, the strongest EV/VE discontinuities kept
+   * per leaf (10); MinDiscontinuityWeight is w_min as a fraction of the
+   * brightest emitter's exitance (0.05); ConformingBoundaries inserts every
+   * vertex on a leaf's edge into it, so the mesh has no T-junction (On).
+   */
+  vtkSetMacro(DiscontinuityMeshing, bool);
+  vtkGetMacro(DiscontinuityMeshing, bool);
+  vtkBooleanMacro(DiscontinuityMeshing, bool);
+  vtkSetClampMacro(MaxDiscontinuitiesPerLeaf, int, 0, 1000);
+  vtkGetMacro(MaxDiscontinuitiesPerLeaf, int);
+  vtkSetClampMacro(MinDiscontinuityWeight, double, 0.0, 1e6);
+  vtkGetMacro(MinDiscontinuityWeight, double);
+  vtkSetMacro(ConformingBoundaries, bool);
+  vtkGetMacro(ConformingBoundaries, bool);
+  vtkBooleanMacro(ConformingBoundaries, bool);
+  ///@}
 
   /**
-   * Key of the output's information under which Method Meshless stores a
-   * vtkMeshlessRadiositySolution (read by vtkMeshlessFieldFilter).
+   * The last solve's solver behind the common core interface (it keeps its
+   * scene alive, and after an abort holds the partial solution); null before
+   * a solve.
    */
-  static vtkInformationObjectBaseKey* MESHLESS_SOLUTION();
+  std::shared_ptr<const radiosity::RadiositySolver> GetSolver() const { return this->Solver; }
 
-  /**
-   * The last hierarchical solution (quadtrees, links, blockers; it keeps its
-   * scene alive); null before a solve and for other methods.
-   */
-  std::shared_ptr<const radiosity::HierarchicalRadiosity> GetHierarchicalSolution() const
-  {
-    return this->HierarchicalSolution;
-  }
-
-  /**
-   * Key of the output's information (output->GetInformation()) under which
-   * Method Hierarchical stores a vtkHierarchicalRadiositySolution.
-   */
-  static vtkInformationObjectBaseKey* HIERARCHICAL_SOLUTION();
+  ///@{
+  /// The last solve's method-specific solver; null for another method.
+  std::shared_ptr<const radiosity::FaceClusterRadiosity> GetFaceClusterSolution() const;
+  std::shared_ptr<const radiosity::MeshlessRadiosity> GetMeshlessSolution() const;
+  std::shared_ptr<const radiosity::HierarchicalRadiosity> GetHierarchicalSolution() const;
+  ///@}
 
   /// Called with the solver's phase, iteration and residual besides the
   /// progress events (for terminal progress bars); returning false aborts.
@@ -357,6 +359,10 @@ protected:
   double TransferTolerance = 1e-5;
   int MaxBisections = 0;
   double MaxMemory = 0.0;
+  bool DiscontinuityMeshing = true;
+  int MaxDiscontinuitiesPerLeaf = 10;
+  double MinDiscontinuityWeight = 0.05;
+  bool ConformingBoundaries = true;
 
 private:
   vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;
@@ -366,16 +372,22 @@ private:
   int Fail(const std::string& message);
   /// RequestData inside vtkRadiosityGuardedRequest.
   int ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
-  void SolveProgressive(const radiosity::ProgressCallback& progress);
+  /// The one branch per method: its solver, built from the scene and the
+  /// properties it reads.
+  std::shared_ptr<radiosity::RadiositySolver> MakeSolver(
+    const std::shared_ptr<const radiosity::Scene>& scene) const;
+  template <typename Options>
+  void FillCommonOptions(Options& options) const;
+  template <typename Options>
+  void FillErrorReference(Options& options) const;
+  void Warn(const std::string& warning);
 
   std::string LastError;
   std::vector<std::string> Warnings;
   radiosity::SolverStatistics Statistics;
   /// Shared with the hierarchical solution, which references it.
   std::shared_ptr<const radiosity::Scene> LastScene;
-  std::shared_ptr<const radiosity::HierarchicalRadiosity> HierarchicalSolution;
-  std::shared_ptr<const radiosity::MeshlessRadiosity> MeshlessSolution;
-  std::shared_ptr<const radiosity::FaceClusterRadiosity> FaceClusterSolution;
+  std::shared_ptr<radiosity::RadiositySolver> Solver;
   radiosity::SceneCleanupReport Cleanup;
   std::unique_ptr<radiosity::SolutionMesh> Solution;
   double PreprocessSeconds = 0.0;

@@ -19,6 +19,7 @@
 #include "vtkPolyData.h"
 #include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnsignedShortArray.h"
 
 #include <sstream>
@@ -443,4 +444,163 @@ vtkSmartPointer<vtkDoubleArray> vtkRadiositySceneConverter::FromHistory(
     a->SetTypedTuple(static_cast<vtkIdType>(i), row);
   }
   return a;
+}
+
+namespace
+{
+/// A new array sharing `a`'s values (no copy) under another name.
+vtkSmartPointer<vtkDataArray> SharedAs(vtkDataArray* a, const std::string& name)
+{
+  vtkSmartPointer<vtkDataArray> shared;
+  shared.TakeReference(a->NewInstance());
+  shared->ShallowCopy(a);
+  shared->SetName(name.c_str());
+  return shared;
+}
+
+vtkSmartPointer<vtkCellArray> VertexCells(vtkIdType n)
+{
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(n + 1);
+  connectivity->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    offsets->SetValue(i, i);
+    connectivity->SetValue(i, i);
+  }
+  offsets->SetValue(n, n);
+  auto verts = vtkSmartPointer<vtkCellArray>::New();
+  verts->SetData(offsets, connectivity);
+  return verts;
+}
+}
+
+vtkSmartPointer<vtkDataArray> vtkRadiositySceneConverter::FromProductArray(
+  const radiosity::ProductArray& array)
+{
+  using Type = radiosity::ProductArray::ValueType;
+  vtkSmartPointer<vtkDataArray> out;
+  switch (array.Type)
+  {
+    case Type::Int:
+      out = vtkSmartPointer<vtkIntArray>::New();
+      break;
+    case Type::IdType:
+      out = vtkSmartPointer<vtkIdTypeArray>::New();
+      break;
+    case Type::UnsignedChar:
+      out = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      break;
+    case Type::Double:
+    default:
+      out = vtkSmartPointer<vtkDoubleArray>::New();
+      break;
+  }
+  out->SetName(array.Name.c_str());
+  out->SetNumberOfComponents(array.Components);
+  const auto tuples = static_cast<vtkIdType>(array.Tuples());
+  out->SetNumberOfTuples(tuples);
+  if (auto* doubles = vtkDoubleArray::SafeDownCast(out))
+  {
+    std::copy(array.Values.begin(), array.Values.end(), doubles->GetPointer(0));
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < tuples * array.Components; ++i)
+    {
+      out->SetComponent(i / array.Components, static_cast<int>(i % array.Components),
+        array.Values[static_cast<std::size_t>(i)]);
+    }
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkPolyData> vtkRadiositySceneConverter::FromProduct(
+  const radiosity::SolverProduct& product)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  if (product.Kind.empty() || !product.Complete)
+  {
+    return pd;
+  }
+  pd->SetPoints(ToPoints(product.Points));
+  if (!product.Triangles.empty())
+  {
+    pd->SetPolys(ToTriangles(product.Triangles));
+  }
+  else
+  {
+    pd->SetVerts(VertexCells(static_cast<vtkIdType>(product.Points.size())));
+  }
+  for (const radiosity::ProductArray& a : product.PointArrays)
+  {
+    pd->GetPointData()->AddArray(FromProductArray(a));
+  }
+  for (const radiosity::ProductArray& a : product.CellArrays)
+  {
+    pd->GetCellData()->AddArray(FromProductArray(a));
+  }
+  // What the viewer colours by: the radiosity where the product has it (the
+  // discontinuity mesh), else the irradiance (the Shepard field).
+  for (const char* name : { "Radiosity", "Irradiance" })
+  {
+    if (pd->GetPointData()->GetArray(name))
+    {
+      pd->GetPointData()->SetActiveScalars(name);
+      break;
+    }
+  }
+  vtkNew<vtkStringArray> kind;
+  kind->SetName("ProductKind");
+  kind->InsertNextValue(product.Kind);
+  pd->GetFieldData()->AddArray(kind);
+  return pd;
+}
+
+void vtkRadiositySceneConverter::AttachPointProduct(vtkPolyData* product, vtkPolyData* surface)
+{
+  auto* kinds = vtkStringArray::SafeDownCast(product->GetFieldData()->GetAbstractArray("ProductKind"));
+  if (!kinds || kinds->GetNumberOfValues() < 1 || !product->GetPoints())
+  {
+    return;
+  }
+  const std::string kind = kinds->GetValue(0);
+  vtkFieldData* fd = surface->GetFieldData();
+  fd->AddArray(SharedAs(product->GetPoints()->GetData(), kind + ".Points"));
+  vtkPointData* pd = product->GetPointData();
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    if (vtkDataArray* a = pd->GetArray(i))
+    {
+      fd->AddArray(SharedAs(a, kind + "." + a->GetName()));
+    }
+  }
+}
+
+vtkSmartPointer<vtkPolyData> vtkRadiositySceneConverter::AttachedPointProduct(
+  vtkPolyData* surface, const std::string& kind)
+{
+  vtkFieldData* fd = surface ? surface->GetFieldData() : nullptr;
+  vtkDataArray* coordinates = fd ? fd->GetArray((kind + ".Points").c_str()) : nullptr;
+  if (!coordinates || coordinates->GetNumberOfComponents() != 3)
+  {
+    return nullptr;
+  }
+  auto product = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetData(SharedAs(coordinates, "Points"));
+  product->SetPoints(points);
+  const vtkIdType n = coordinates->GetNumberOfTuples();
+  product->SetVerts(VertexCells(n));
+  const std::string prefix = kind + ".";
+  for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* a = fd->GetArray(i);
+    const std::string name = a && a->GetName() ? a->GetName() : "";
+    if (a && a != coordinates && name.compare(0, prefix.size(), prefix) == 0 && a->GetNumberOfTuples() == n)
+    {
+      product->GetPointData()->AddArray(SharedAs(a, name.substr(prefix.size())));
+    }
+  }
+  return product;
 }

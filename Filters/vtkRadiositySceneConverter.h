@@ -19,11 +19,13 @@
 #include "Radiosity/Common/ConvergenceHistory.h" // for radiosity::ConvergenceHistory
 #include "Radiosity/Common/Scene.h"              // for radiosity::Scene
 #include "Radiosity/Common/SolutionMesh.h"       // for radiosity::SolutionMesh
+#include "Radiosity/Common/RadiositySolver.h"    // for radiosity::SolverProduct
 
 #include <string> // for std::string
 #include <vector> // for std::vector
 
 class vtkDataObject;
+class vtkDataArray;
 class vtkDoubleArray;
 class vtkPolyData;
 
@@ -50,6 +52,29 @@ public:
   /// A solution as polydata with the SPEC output arrays (points and cells).
   static vtkSmartPointer<vtkPolyData> FromSolution(
     const radiosity::SolutionMesh& solution, const radiosity::Scene& scene);
+
+  /**
+   * A method's product (radiosity::RadiositySolver::Product) as polydata:
+   * its points, its triangles (or one vertex cell per point when it has
+   * none) and its named arrays; an empty polydata for an empty product. The
+   * field data string array `ProductKind` names the kind.
+   */
+  static vtkSmartPointer<vtkPolyData> FromProduct(const radiosity::SolverProduct& product);
+
+  /**
+   * Puts a product of points (no cells but vertices: the Shepard field)
+   * into the field data of `surface`, sharing the arrays (no copy):
+   * `<Kind>.Points` and `<Kind>.<array>` for every point array, so that a
+   * consumer of the surface alone (a ParaView representation) has it too.
+   */
+  static void AttachPointProduct(vtkPolyData* product, vtkPolyData* surface);
+
+  /// The product of points of kind `kind` that AttachPointProduct put into
+  /// `surface`'s field data; null when it has none.
+  static vtkSmartPointer<vtkPolyData> AttachedPointProduct(vtkPolyData* surface, const std::string& kind);
+
+  /// A product's or a surface's named array as the VTK array its type says.
+  static vtkSmartPointer<vtkDataArray> FromProductArray(const radiosity::ProductArray& array);
 
   /// A double array named `name` with `components` components and `tuples` tuples.
   static vtkSmartPointer<vtkDoubleArray> NewDoubleArray(

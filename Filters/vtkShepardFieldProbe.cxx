@@ -83,7 +83,7 @@ int vtkShepardFieldProbe::ExecuteRequest(vtkInformationVector** inputVector, vtk
   vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
   if (!input || !field)
   {
-    return this->Fail("a dataset (input 0) and a field (input 1, vtkMeshlessFieldFilter's output) are needed");
+    return this->Fail("a dataset (input 0) and a field (input 1: the Shepard field, port 1 of vtkRadiosityFilter with Method Meshless) are needed");
   }
   vtkPointData* fd = field->GetPointData();
   vtkDataArray* level = Array(fd, "Level", 1);
@@ -97,7 +97,8 @@ int vtkShepardFieldProbe::ExecuteRequest(vtkInformationVector** inputVector, vtk
   {
     if (!a)
     {
-      return this->Fail(std::string("the field has no point array ") + name);
+      return this->Fail(std::string("the field has no point array ") + name +
+        " (expected port 1 of vtkRadiosityFilter with Method Meshless)");
     }
   }
   // Levels, each with a locator over its points.

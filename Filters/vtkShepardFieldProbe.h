@@ -4,7 +4,7 @@
  *
  * Input 0: the dataset to probe (any vtkDataSet; a solution can be moved onto
  * a finer or a different mesh with no remeshing). Input 1 (SetSourceConnection):
- * a field as vtkMeshlessFieldFilter writes it (vertices with `Level`, `Radius`,
+ * a field as port 1 of vtkRadiosityFilter (Method Meshless) writes it (vertices with `Level`, `Radius`,
  * `Normal`, `Group`, `Coefficient`).
  *
  * At each point (x, n) the irradiance is Lehtinen et al.'s eq. 9: per level

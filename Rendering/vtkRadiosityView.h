@@ -20,7 +20,7 @@
  *   replacement writes it to the fragment colour.
  *
  * - Splats: when a meshless Shepard field is given (SetShepardField, the
- *   output of vtkMeshlessFieldFilter), the drawn array is `Radiosity` and
+ *   port 1 of vtkRadiosityFilter with Method Meshless), the drawn array is `Radiosity` and
  *   InterpolantRendering is on, a vtkShepardSplatMapper evaluates the field
  *   per pixel on the input's polygons (Lehtinen et al. 2007, section 6.2).
  *   It takes precedence over the interpolant path.
@@ -117,7 +117,7 @@ public:
   ///@{
   /**
    * A meshless multilevel Shepard field of the input's solution (the output
-   * of vtkMeshlessFieldFilter), drawn per pixel on the input's polygons by
+   * of vtkRadiosityFilter with Method Meshless), drawn per pixel on the input's polygons by
    * vtkShepardSplatMapper; nullptr (the default) for none.
    */
   void SetShepardField(vtkPolyData* field);

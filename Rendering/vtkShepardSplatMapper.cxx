@@ -54,7 +54,7 @@ vtkDataArray* FieldArray(vtkPolyData* field, const char* name, int components, s
   if (!array)
   {
     os << (pd->GetAbstractArray(name) ? "Field point array '" : "Field has no point array '") << name
-       << (pd->GetAbstractArray(name) ? "' is not numeric." : "' (vtkMeshlessFieldFilter's output expected).");
+       << (pd->GetAbstractArray(name) ? "' is not numeric." : "' (port 1 of vtkRadiosityFilter with Method Meshless expected).");
   }
   else if (array->GetNumberOfComponents() != components)
   {
@@ -149,7 +149,7 @@ bool vtkShepardSplatMapper::ValidateField(vtkPolyData* field, std::string* messa
   std::string& why = reason.Text;
   if (!field)
   {
-    why = "No field: connect vtkMeshlessFieldFilter's output with SetFieldConnection.";
+    why = "No field: connect port 1 of vtkRadiosityFilter (Method Meshless) with SetFieldConnection.";
     return false;
   }
   if (field->GetNumberOfPoints() == 0)

@@ -10,7 +10,7 @@
  *   cell arrays of SPEC.md `Reflectance` (3; 0.5 grey without), `Emission`
  *   (3, W/m^2; none without) and `ObjectId` (1; the reconstruction group);
  * - port 1 (SetFieldConnection), the field: the output of
- *   vtkMeshlessFieldFilter, one point per basis function with the point
+ *   port 1 of vtkRadiosityFilter (Method Meshless), one point per basis function with the point
  *   arrays `Level` (0 = coarsest), `Radius` (support radius r_j), `Normal`
  *   (n_j), `Group` and `Coefficient` (RGB alpha_j, W/m^2). A missing or
  *   malformed array is refused with an error naming it.
@@ -53,14 +53,13 @@
  * is drawn opaque. Hardware picking draws the surface as any polydata mapper.
  *
  * @code
- * vtkNew<vtkMeshlessFieldFilter> field;
- * field->SetInputConnection(radiosity->GetOutputPort()); // Method Meshless
+ * radiosity->SetMethodToMeshless();
  * vtkNew<vtkShepardSplatMapper> mapper;
  * mapper->SetInputConnection(surface->GetOutputPort());
- * mapper->SetFieldConnection(field->GetOutputPort());
+ * mapper->SetFieldConnection(radiosity->GetOutputPort(1)); // the Shepard field
  * @endcode
  *
- * @sa vtkMeshlessFieldFilter, vtkShepardFieldProbe, vtkToneMappingPass
+ * @sa vtkRadiosityFilter, vtkShepardFieldProbe, vtkToneMappingPass
  */
 
 #ifndef vtkShepardSplatMapper_h
@@ -88,7 +87,7 @@ public:
 
   ///@{
   /**
-   * The field (input port 1): vtkMeshlessFieldFilter's output.
+   * The field (input port 1): port 1 of vtkRadiosityFilter with Method Meshless.
    */
   void SetFieldConnection(vtkAlgorithmOutput* output);
   void SetFieldData(vtkPolyData* field);

@@ -1,6 +1,5 @@
 #include "SolveCommon.h"
 
-#include "vtkDiscontinuityMeshFilter.h"
 
 #include "Bench.h"
 #include "ExrWriter.h"
@@ -27,7 +26,7 @@
 
 #include "Radiosity/Reference/AnalyticReference.h"
 #include "Radiosity/Hierarchical/DiscontinuityMesher.h"
-#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+#include "Radiosity/Hierarchical/HierarchicalMethod.h"
 #include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Common/MemoryBudget.h"
 #include "Radiosity/Reference/PathTracer.h"
@@ -49,8 +48,8 @@
 namespace solve
 {
 /// --method hierarchical: Hardt & Teller's hierarchical radiosity with
-/// discontinuity meshing (SPEC), through vtkRadiosityFilter and
-/// vtkDiscontinuityMeshFilter.
+/// discontinuity meshing (SPEC), through vtkRadiosityFilter: port 0 the
+/// constant leaves, port 1 the discontinuity mesh.
 int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
   const std::vector<RGB>& reference, const std::string& referenceKind, vtkDataObject* input,
   double loadSeconds, Clock::time_point start)
@@ -59,14 +58,16 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   {
     throw BadInput("--link-tolerance must be positive");
   }
-  // The VTK pipeline: the radiosity filter (hierarchical), then the
-  // discontinuity mesh filter, which finds the solution on its input.
+  // The VTK pipeline: the radiosity filter (hierarchical) solves and meshes.
   vtkNew<vtkRadiosityFilter> filter;
   filter->SetInputData(input);
   filter->SetMethodToHierarchical();
   filter->SetLinkTolerance(args.LinkTolerance);
   filter->SetMinElementSize(args.MinElementSize);
   filter->SetMaxRefinementRounds(args.MaxRefinementRounds);
+  filter->SetDiscontinuityMeshing(!args.NoDiscontinuityMeshing);
+  filter->SetMaxDiscontinuitiesPerLeaf(args.DiscontinuitiesPerLeaf);
+  filter->SetMinDiscontinuityWeight(args.MinDiscontinuityWeight);
   cli::ProgressBar bar;
   RunRadiosityFilter(filter, args, probes, reference, bar);
   const std::vector<std::string>& warnings = filter->GetWarnings();
@@ -75,32 +76,18 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   const SolverStatistics& stats = filter->GetStatistics();
   const double preprocessSeconds = filter->GetPreprocessSeconds();
 
-  const bool meshing = !args.NoDiscontinuityMeshing && stats.Stop != StopReason::Aborted &&
-    filter->GetHierarchicalSolution() != nullptr;
-  vtkNew<vtkDiscontinuityMeshFilter> meshFilter;
-  meshFilter->SetInputConnection(filter->GetOutputPort());
-  meshFilter->SetMaxDiscontinuitiesPerLeaf(args.DiscontinuitiesPerLeaf);
-  meshFilter->SetMinDiscontinuityWeight(args.MinDiscontinuityWeight);
-  meshFilter->SetNumberOfThreads(args.Threads);
-  if (meshing)
-  {
-    meshFilter->Update();
-    ThrowFilterError(meshFilter->GetLastError()); // a meshing failure is internal (exit 1)
-  }
-  bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
-  const DiscontinuityMesh& mesh = meshFilter->GetMesh();
-  if (meshing && mesh.LeavesTriangulationFailed > 0)
-  {
-    std::cerr << "warning: " << mesh.LeavesTriangulationFailed
-              << " leaves could not be triangulated with their discontinuities and are meshed as the "
-                 "leaf alone\n";
-  }
-  const SolutionMesh& leaves = *filter->GetSolution();
-  vtkPolyData* solved = meshing ? meshFilter->GetOutput() : filter->GetOutput();
-  if (!filter->GetHierarchicalSolution())
+  auto method = std::dynamic_pointer_cast<const HierarchicalMethod>(filter->GetSolver());
+  if (!method)
   {
     throw std::runtime_error("the hierarchical solve produced no solution");
   }
+  const bool meshing = !args.NoDiscontinuityMeshing && stats.Stop != StopReason::Aborted &&
+    filter->GetOutput(1)->GetNumberOfCells() > 0;
+  bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
+  // The filter reported the leaves that could not be triangulated among its warnings.
+  const DiscontinuityMesh& mesh = method->LastMesh();
+  const SolutionMesh& leaves = *filter->GetSolution();
+  vtkPolyData* solved = meshing ? filter->GetOutput(1) : filter->GetOutput();
   const HierarchicalRadiosity& solver = *filter->GetHierarchicalSolution();
   const HierarchicalOptions& options = solver.Options();
   std::string error;
@@ -177,10 +164,10 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       { "max_refinement_rounds", options.MaxRefinementRounds },
       { "max_blockers_per_link", options.MaxBlockersPerLink },
       { "discontinuity_meshing", meshing },
-      { "discontinuities", meshFilter->GetDiscontinuities() },
-      { "discontinuities_per_leaf", meshFilter->GetMaxDiscontinuitiesPerLeaf() },
-      { "min_discontinuity_weight", meshFilter->GetMinDiscontinuityWeight() },
-      { "conforming_boundaries", meshFilter->GetConformingBoundaries() } };
+      { "discontinuities", filter->GetDiscontinuityMeshing() },
+      { "discontinuities_per_leaf", filter->GetMaxDiscontinuitiesPerLeaf() },
+      { "min_discontinuity_weight", filter->GetMinDiscontinuityWeight() },
+      { "conforming_boundaries", filter->GetConformingBoundaries() } };
     report["parameters"]["memory_budget_bytes"] = ResolveMemoryBudget(args.MaxMemory * 1e9);
     report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
       { "objects", scene.ObjectNames.size() }, { "emitters", scene.NumberOfEmitters() },

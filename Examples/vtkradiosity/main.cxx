@@ -21,7 +21,6 @@
 #include "vtkRadiosityConvergenceChart.h"
 #include "vtkRadiosityFilter.h"
 #include "vtkRadiositySceneConverter.h"
-#include "vtkMeshlessFieldFilter.h"
 #include "vtkRadiosityView.h"
 #include "vtkRenderer.h"
 #include "vtkTable.h"
@@ -236,14 +235,8 @@ int RunSolve(const SolveArguments& args)
   }
   const auto renderStart = Clock::now();
   // The meshless field is drawn per pixel by splatting its basis functions.
-  vtkNew<vtkMeshlessFieldFilter> field;
-  if (meshless && !args.Image.empty())
-  {
-    field->SetInputConnection(filter->GetOutputPort());
-    field->Update();
-  }
   RenderOutputs(args, solved, solution, filter->GetScene(),
-    meshless && !args.Image.empty() ? field->GetOutput() : nullptr);
+    meshless && !args.Image.empty() ? filter->GetOutput(1) : nullptr);
   phases["render_s"] = Since(renderStart);
 
   std::size_t gathered = 0;

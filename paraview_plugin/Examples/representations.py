@@ -19,7 +19,7 @@ glossy = Calculator(Input=specular, AttributeType="Cell Data", ResultArrayName="
                     Function="30")
 meshless = Radiosity(Input=box, Method="Meshless")
 panels = [
-    (DiscontinuityMesh(Input=hierarchical), "Radiosity Quadratic Interpolants"),
+    (OutputPort(hierarchical, 1), "Radiosity Quadratic Interpolants"),
     (glossy, "Vector Irradiance (glossy)"),
     (meshless, "Meshless Field Splats"),
 ]

@@ -3,7 +3,7 @@
  * @brief   ParaView's "Radiosity Quadratic Interpolants" surface representation
  *
  * Draws Hardt & Teller's quadratic irradiance interpolants, evaluated per
- * pixel: the output of the Discontinuity Mesh filter (cell array
+ * pixel: the Product output of Radiosity with Method Hierarchical (cell array
  * QuadraticInterpolant, 18 components), with vtkQuadraticInterpolantMapper.
  * The display parameters and the
  * handling of ParaView's delivered geometry are vtkRadiosityRepresentation's;

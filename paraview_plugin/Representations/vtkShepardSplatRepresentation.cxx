@@ -2,11 +2,10 @@
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkMeshlessFieldFilter.h"
-#include "vtkMeshlessRadiositySolution.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVView.h"
-#include "vtkRadiosityFilter.h"
+#include "vtkPolyData.h"
+#include "vtkRadiositySceneConverter.h"
 #include "vtkShepardSplatMapper.h"
 
 vtkStandardNewMacro(vtkShepardSplatRepresentation);
@@ -24,28 +23,20 @@ int vtkShepardSplatRepresentation::RequestData(
   this->Field->Initialize();
   // No input: the client side of a client-server session, which receives
   // the field through the view's delivery.
-  if (inputVector[0]->GetNumberOfInformationObjects() == 1 &&
-    this->GetNumberOfInputConnections(0) > 0)
+  if (inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
-    // ParaView's copy of the input has lost the solution key: the solver
-    // upstream holds the solution.
-    vtkRadiosityFilter* solver = vtkRadiosityFilter::FindUpstream(this->GetInputAlgorithm(0, 0));
-    auto solution = solver ? solver->GetMeshlessSolution() : nullptr;
-    if (!solution)
+    // The Radiosity filter (Method Meshless) puts its Shepard field into the
+    // surface's field data too: the input itself carries it.
+    auto field = vtkRadiositySceneConverter::AttachedPointProduct(
+      vtkPolyData::GetData(inputVector[0], 0), "ShepardField");
+    if (!field)
     {
       vtkErrorMacro(<< "Meshless Field Splats draws a meshless radiosity solution: the input is "
-                       "not the output of a Radiosity filter with Method Meshless.");
+                       "not the Surface output of a Radiosity filter with Method Meshless.");
     }
     else
     {
-      vtkNew<vtkMeshlessRadiositySolution> carrier;
-      carrier->SetSolution(solution);
-      vtkNew<vtkPolyData> carried;
-      carried->GetInformation()->Set(vtkRadiosityFilter::MESHLESS_SOLUTION(), carrier);
-      vtkNew<vtkMeshlessFieldFilter> field;
-      field->SetInputData(carried);
-      field->Update();
-      this->Field->ShallowCopy(field->GetOutput());
+      this->Field->ShallowCopy(field);
     }
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);

@@ -7,15 +7,16 @@
  * vtkShepardSplatMapper, on the output of the Radiosity filter with Method
  * Meshless.
  *
- * The mapper needs the field beside the surface. The representation builds
- * it (vtkMeshlessFieldFilter) from the solution of the Radiosity filter
- * upstream of its input, when its input changes, and hands it to the view as
- * a second piece (port 1), which the view delivers to where the rendering
- * happens as it does the surface. An input without a meshless solution
- * upstream is reported with an error naming what is missing, and nothing is
+ * The mapper needs the field beside the surface. The Radiosity filter puts
+ * the field (its Product output) into the Surface output's field data too
+ * (vtkRadiositySceneConverter::AttachPointProduct, sharing the arrays); the
+ * representation reads it from its own input when that changes, and hands
+ * it to the view as a second piece (port 1), which the view delivers to
+ * where the rendering happens as it does the surface. An input without a
+ * field is reported with an error naming what is missing, and nothing is
  * drawn.
  *
- * @sa vtkShepardSplatMapper, vtkMeshlessFieldFilter, vtkRadiosityRepresentation
+ * @sa vtkShepardSplatMapper, vtkRadiosityFilter, vtkRadiosityRepresentation
  */
 
 #ifndef vtkShepardSplatRepresentation_h

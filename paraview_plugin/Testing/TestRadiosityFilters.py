@@ -35,8 +35,8 @@ check(data.GetCellData().GetArray("ClusterId3") is None, "NumberOfLevels 3 wrote
 
 hierarchical = Radiosity(Input=box)
 hierarchical.Method = "Hierarchical"
-mesh = DiscontinuityMesh(Input=hierarchical)
-data = servermanager.Fetch(mesh)
+# The Product output (port 1): the discontinuity mesh.
+data = servermanager.Fetch(hierarchical, idx=1)
 interpolants = data.GetCellData().GetArray("QuadraticInterpolant")
 check(interpolants is not None and interpolants.GetNumberOfComponents() == 18,
       "no 18-component QuadraticInterpolant")
@@ -45,14 +45,15 @@ print("discontinuity mesh: %d triangles" % data.GetNumberOfCells())
 
 meshless = Radiosity(Input=box)
 meshless.Method = "Meshless"
-field = MeshlessField(Input=meshless)
-data = servermanager.Fetch(field)
+# The Product output (port 1): the Shepard field's points.
+field = OutputPort(meshless, 1)
+data = servermanager.Fetch(meshless, idx=1)
 for name in ("Level", "Radius", "Coefficient", "Irradiance"):
     check(data.GetPointData().GetArray(name) is not None, "meshless field: no %s" % name)
+print("meshless field: %d basis functions" % data.GetNumberOfPoints())
 probe = ShepardFieldProbe(Input=box, Field=field)
 data = servermanager.Fetch(probe)
 check(finite_positive(data.GetPointData().GetArray("Irradiance")), "Shepard probe irradiance")
-print("meshless field: %d basis functions" % servermanager.Fetch(field).GetNumberOfPoints())
 
 # The progressive solution as ParaView shows it, against the baseline.
 solve = Radiosity(Input=box)

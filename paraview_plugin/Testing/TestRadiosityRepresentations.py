@@ -63,7 +63,7 @@ box = CornellBox()
 # Hardt and Teller: the discontinuity mesh's quadratic interpolants.
 hierarchical = Radiosity(Input=box)
 hierarchical.Method = "Hierarchical"
-mesh = DiscontinuityMesh(Input=hierarchical)
+mesh = OutputPort(hierarchical, 1)  # the Product output: the discontinuity mesh
 display = shown(mesh, "Radiosity Quadratic Interpolants")
 check(display.RadianceExposure == 1.0 and display.RadianceToneMapping == "Clamp",
       "unexpected defaults %s %s" % (display.RadianceExposure, display.RadianceToneMapping))

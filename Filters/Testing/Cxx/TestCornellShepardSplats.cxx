@@ -10,7 +10,6 @@
 #include "vtkImageData.h"
 #include "vtkImageDifference.h"
 #include "vtkLinearSubdivisionFilter.h"
-#include "vtkMeshlessFieldFilter.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -57,10 +56,9 @@ int TestCornellShepardSplats(int argc, char* argv[])
   vtkNew<vtkRadiosityFilter> radiosity;
   radiosity->SetInputConnection(box->GetOutputPort());
   radiosity->SetMethodToMeshless();
-  vtkNew<vtkMeshlessFieldFilter> field;
-  field->SetInputConnection(radiosity->GetOutputPort());
-  field->Update();
-  if (!radiosity->GetLastError().empty() || field->GetOutput()->GetNumberOfPoints() == 0)
+  radiosity->Update();
+  vtkPolyData* fieldPoints = radiosity->GetOutput(1); // the Shepard field
+  if (!radiosity->GetLastError().empty() || fieldPoints->GetNumberOfPoints() == 0)
   {
     std::cerr << "meshless solve failed: " << radiosity->GetLastError() << "\n";
     return EXIT_FAILURE;
@@ -79,7 +77,7 @@ int TestCornellShepardSplats(int argc, char* argv[])
   subdivide->SetInputConnection(triangles->GetOutputPort());
   vtkNew<vtkShepardFieldProbe> probe;
   probe->SetInputConnection(subdivide->GetOutputPort());
-  probe->SetSourceConnection(field->GetOutputPort());
+  probe->SetSourceConnection(radiosity->GetOutputPort(1));
   probe->Update();
   vtkPolyData* probed = vtkPolyData::SafeDownCast(probe->GetOutput());
   if (!probe->GetLastError().empty() || !probed ||
@@ -88,7 +86,7 @@ int TestCornellShepardSplats(int argc, char* argv[])
     std::cerr << "probe failed: " << probe->GetLastError() << "\n";
     return EXIT_FAILURE;
   }
-  std::cout << field->GetOutput()->GetNumberOfPoints() << " basis functions splatted on "
+  std::cout << fieldPoints->GetNumberOfPoints() << " basis functions splatted on "
             << box->GetOutput()->GetNumberOfCells() << " polygons; probed onto "
             << probed->GetNumberOfCells() << " triangles\n";
 
@@ -104,7 +102,7 @@ int TestCornellShepardSplats(int argc, char* argv[])
   // probed mesh through its plain (Gouraud) path.
   vtkNew<vtkRadiosityView> splats;
   splats->SetInputData(box->GetOutput());
-  splats->SetShepardField(field->GetOutput());
+  splats->SetShepardField(fieldPoints);
   vtkNew<vtkRadiosityView> gouraud;
   gouraud->SetInputData(probed);
   int half = 0;

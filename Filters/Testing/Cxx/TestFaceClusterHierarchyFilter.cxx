@@ -9,7 +9,6 @@
 #include "vtkCornellBoxSource.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkFaceClusterHierarchy.h"
 #include "vtkFaceClusterHierarchyFilter.h"
 #include "vtkFloatingPointExceptions.h"
 #include "vtkInformation.h"
@@ -57,8 +56,6 @@ int TestFaceClusterHierarchyFilter(int argc, char* argv[])
   vtkPolyData* out = clusters->GetOutput();
   ok &= Check(clusters->GetLastError().empty(), "no error: " + clusters->GetLastError());
   ok &= Check(out->GetNumberOfCells() == scene->GetNumberOfCells(), "one tuple per input cell");
-  ok &= Check(out->GetInformation()->Has(vtkFaceClusterHierarchyFilter::FACE_CLUSTER_HIERARCHY()) != 0,
-    "hierarchy in the output's information");
   auto hierarchy = clusters->GetHierarchy();
   ok &= Check(hierarchy && !clusters->GetReused(), "built, not reused");
   if (!ok)

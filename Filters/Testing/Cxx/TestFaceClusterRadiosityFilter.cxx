@@ -53,6 +53,13 @@ int TestFaceClusterRadiosityFilter(int argc, char* argv[])
   ok &= Check(solution && solution->SharedHierarchy() == clusters->GetHierarchy(),
     "the upstream hierarchy is used, not rebuilt");
   vtkPolyData* out = radiosity->GetOutput();
+  // Port 1: the triangles with their leaf cluster and its vector irradiance.
+  vtkPolyData* leaves = radiosity->GetOutput(1);
+  vtkDataArray* leafVectors = leaves->GetCellData()->GetArray("IrradianceVector");
+  ok &= Check(leaves->GetNumberOfCells() == static_cast<vtkIdType>(solution->GetScene().Triangles.size()) &&
+      leafVectors && leafVectors->GetNumberOfComponents() == 9 &&
+      leaves->GetCellData()->GetArray("LeafCluster"),
+    "port 1: the leaf clusters with their vector irradiance");
   vtkDataArray* vectors = out->GetPointData()->GetArray("IrradianceVector");
   vtkDataArray* irradiance = out->GetPointData()->GetArray("Irradiance");
   ok &= Check(vectors && vectors->GetNumberOfComponents() == 9 &&

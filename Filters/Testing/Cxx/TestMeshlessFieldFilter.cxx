@@ -1,14 +1,15 @@
 // The meshless method through the VTK pipeline: vtkRadiosityFilter (Method
-// Meshless) -> vtkMeshlessFieldFilter (the point hierarchy and coefficients)
-// -> vtkShepardFieldProbe (the field on another dataset), checked against the
-// solver's own evaluation; and the errors for inputs without a solution.
+// Meshless), port 1 (the point hierarchy and coefficients, also in port 0's
+// field data) -> vtkShepardFieldProbe (the field on another dataset), checked
+// against the solver's own evaluation; and the error for a progressive
+// solve's empty product.
 #include "vtkCellArray.h"
 #include "vtkCornellBoxSource.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatingPointExceptions.h"
 #include "vtkInformation.h"
-#include "vtkMeshlessFieldFilter.h"
+#include "vtkRadiositySceneConverter.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -39,15 +40,18 @@ int TestMeshlessFieldFilter(int, char*[])
   ok &= Check(radiosity->GetLastError().empty(), "meshless solve: " + radiosity->GetLastError());
   vtkPolyData* solved = radiosity->GetOutput();
   ok &= Check(solved->GetPointData()->GetArray("Irradiance") != nullptr, "surface Irradiance");
-  ok &= Check(solved->GetInformation()->Has(vtkRadiosityFilter::MESHLESS_SOLUTION()) != 0,
-    "solution on the output's information");
   const auto solution = radiosity->GetMeshlessSolution();
   ok &= Check(solution != nullptr, "GetMeshlessSolution");
 
-  vtkNew<vtkMeshlessFieldFilter> field;
-  field->SetInputConnection(radiosity->GetOutputPort());
-  field->Update();
-  vtkPolyData* points = field->GetOutput();
+  vtkPolyData* points = radiosity->GetOutput(1);
+  // The same field in the surface's field data (what ParaView's splat
+  // representation reads), sharing the arrays.
+  auto attached = vtkRadiositySceneConverter::AttachedPointProduct(solved, "ShepardField");
+  ok &= Check(attached && attached->GetNumberOfPoints() == points->GetNumberOfPoints() &&
+      attached->GetPointData()->GetArray("Coefficient") &&
+      attached->GetPointData()->GetArray("Coefficient")->GetVoidPointer(0) ==
+        points->GetPointData()->GetArray("Coefficient")->GetVoidPointer(0),
+    "the field in port 0's field data shares port 1's arrays");
   const vtkIdType n = points->GetNumberOfPoints();
   ok &= Check(n == static_cast<vtkIdType>(solution->Points().Points().size()), "one vertex per basis function");
   ok &= Check(points->GetNumberOfVerts() == n, "vertices");
@@ -92,7 +96,7 @@ int TestMeshlessFieldFilter(int, char*[])
   target->GetPointData()->AddArray(objects);
   vtkNew<vtkShepardFieldProbe> probe;
   probe->SetInputData(target);
-  probe->SetSourceConnection(field->GetOutputPort());
+  probe->SetSourceConnection(radiosity->GetOutputPort(1));
   probe->GlobalWarningDisplayOff(); // no materials on the cloud: a warning, Irradiance only
   probe->Update();
   probe->GlobalWarningDisplayOn();
@@ -117,22 +121,24 @@ int TestMeshlessFieldFilter(int, char*[])
   // Onto the scene's own surface (materials present): Radiosity too.
   vtkNew<vtkShepardFieldProbe> onSurface;
   onSurface->SetInputConnection(box->GetOutputPort());
-  onSurface->SetSourceConnection(field->GetOutputPort());
+  onSurface->SetSourceConnection(radiosity->GetOutputPort(1));
   onSurface->Update();
   ok &= Check(onSurface->GetOutput()->GetPointData()->GetArray("Radiosity") != nullptr,
     "Radiosity on a surface with materials");
 
-  // A progressive solution carries no field: an error and an empty output.
+  // A progressive solution has no field (port 1 is empty): probing it is
+  // an error naming what is expected, and an empty output.
   vtkNew<vtkRadiosityFilter> progressive;
   progressive->SetInputConnection(box->GetOutputPort());
   progressive->SetTolerance(1e-2);
-  vtkNew<vtkMeshlessFieldFilter> none;
-  none->SetInputConnection(progressive->GetOutputPort());
+  vtkNew<vtkShepardFieldProbe> none;
+  none->SetInputData(target);
+  none->SetSourceConnection(progressive->GetOutputPort(1));
   none->GlobalWarningDisplayOff();
   none->Update();
   none->GlobalWarningDisplayOn();
-  ok &= Check(none->GetLastError().find("no meshless radiosity solution") != std::string::npos,
-    "error without a solution: " + none->GetLastError());
-  ok &= Check(none->GetOutput()->GetNumberOfPoints() == 0, "empty output without a solution");
+  ok &= Check(none->GetLastError().find("Method Meshless") != std::string::npos,
+    "error without a field: " + none->GetLastError());
+  ok &= Check(none->GetOutput()->GetNumberOfPoints() == 0, "empty output without a field");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

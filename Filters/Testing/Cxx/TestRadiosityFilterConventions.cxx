@@ -7,14 +7,12 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCornellBoxSource.h"
-#include "vtkDiscontinuityMeshFilter.h"
 #include "vtkExecutive.h"
 #include "vtkFaceClusterHierarchyFilter.h"
 #include "vtkFloatingPointExceptions.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationStringVectorKey.h"
-#include "vtkMeshlessFieldFilter.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -151,15 +149,14 @@ int TestRadiosityFilterConventions(int, char*[])
   ok &= Check(!radiosity->GetOvershooting(), "OvershootingOff");
   radiosity->OvershootingOn();
   ok &= Check(radiosity->GetOvershooting(), "OvershootingOn");
-  vtkNew<vtkDiscontinuityMeshFilter> meshing;
-  meshing->DiscontinuitiesOff();
-  meshing->ConformingBoundariesOff();
-  ok &= Check(!meshing->GetDiscontinuities() && !meshing->GetConformingBoundaries(),
-    "DiscontinuitiesOff, ConformingBoundariesOff");
-  meshing->DiscontinuitiesOn();
-  meshing->ConformingBoundariesOn();
-  ok &= Check(meshing->GetDiscontinuities() && meshing->GetConformingBoundaries(),
-    "DiscontinuitiesOn, ConformingBoundariesOn");
+  radiosity->DiscontinuityMeshingOff();
+  radiosity->ConformingBoundariesOff();
+  ok &= Check(!radiosity->GetDiscontinuityMeshing() && !radiosity->GetConformingBoundaries(),
+    "DiscontinuityMeshingOff, ConformingBoundariesOff");
+  radiosity->DiscontinuityMeshingOn();
+  radiosity->ConformingBoundariesOn();
+  ok &= Check(radiosity->GetDiscontinuityMeshing() && radiosity->GetConformingBoundaries(),
+    "DiscontinuityMeshingOn, ConformingBoundariesOn");
   vtkNew<vtkRadiosityView> view;
   view->InterpolantRenderingOff();
   view->OffScreenOff();
@@ -184,17 +181,14 @@ int TestRadiosityFilterConventions(int, char*[])
                                "MaxRefinementRounds", "PointRadius", "PointLevels", "GatherRays",
                                "VariationThreshold", "SolidAngleThreshold", "IrradianceBasis",
                                "RadiosityBasis", "TransferTolerance", "MaxBisections",
-                               "MaxMemory", "ErrorReference", "StatusCallback" });
+                               "MaxMemory", "DiscontinuityMeshing", "MaxDiscontinuitiesPerLeaf",
+                               "MinDiscontinuityWeight", "ConformingBoundaries", "Solver",
+                               "ErrorReference", "StatusCallback" });
   ok &= PrintsAll(clusters, { "NumberOfLevels", "ShapeWeight" });
-  ok &= PrintsAll(meshing, { "Discontinuities", "MaxDiscontinuitiesPerLeaf",
-                             "MinDiscontinuityWeight", "ConformingBoundaries",
-                             "NumberOfThreads" });
   vtkNew<vtkCornellBoxSource> box;
   ok &= PrintsAll(box, { "LightScale" });
   vtkNew<vtkShepardFieldProbe> probe;
   ok &= PrintsAll(probe, { "Source", "MaxLevel" });
-  vtkNew<vtkMeshlessFieldFilter> field;
-  ok &= PrintsAll(field, { "LastError" });
   ok &= PrintsAll(view, { "InputData", "ArrayName", "InterpolantRendering", "ShepardField",
                           "Exposure", "ToneMappingType", "Size", "OffScreen", "Camera",
                           "RenderWindow" });

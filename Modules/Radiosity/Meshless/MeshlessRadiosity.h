@@ -90,6 +90,10 @@ public:
 
   const Scene& GetScene() const { return this->SourceScene; }
   const MeshlessOptions& Options() const { return this->Settings; }
+  /// False before placement: a scene without emitters, or an abort before
+  /// the points were placed (Points(), Irradiance() and DirectIrradiance()
+  /// are then not to be called).
+  bool HasField() const { return this->Hierarchy && this->Solution && this->Direct; }
   const PointHierarchy& Points() const { return *this->Hierarchy; }
   /// The irradiance field b (direct plus every bounce).
   const ShepardField& Irradiance() const { return *this->Solution; }

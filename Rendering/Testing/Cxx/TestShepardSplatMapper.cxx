@@ -210,7 +210,7 @@ vtkSmartPointer<vtkPolyData> MakeSurface(const std::vector<Face>& faces)
   return surface;
 }
 
-// The field as vtkMeshlessFieldFilter writes it.
+// The field as vtkRadiosityFilter (Method Meshless) writes it on port 1.
 vtkSmartPointer<vtkPolyData> MakeFieldPolyData(const std::vector<FieldPoint>& field)
 {
   vtkNew<vtkPoints> points;
@@ -395,7 +395,7 @@ bool TestInvalidInput(
   vtkRenderWindow* window, vtkShepardSplatMapper* mapper, vtkPolyData* surface, vtkPolyData* field)
 {
   bool ok = true;
-  ok &= ExpectError(window, mapper, surface, nullptr, "No field: connect vtkMeshlessFieldFilter");
+  ok &= ExpectError(window, mapper, surface, nullptr, "No field: connect port 1 of vtkRadiosityFilter");
 
   vtkNew<vtkPolyData> bad;
   bad->DeepCopy(field);

@@ -1,0 +1,98 @@
+// The one interface every method implements (DESIGN.md, "Every method
+// implements one small core interface"): built from a scene and the method's
+// settings, it solves with progress and abort, gives the surface solution
+// (the SPEC output of port 0) and the method's own product (port 1: the
+// discontinuity mesh with its interpolants, the Shepard field's points, the
+// leaf clusters with their vector irradiance). The filter, the command line
+// and later the scene-graph pass handle methods once through it.
+#ifndef Radiosity_RadiositySolver_h
+#define Radiosity_RadiositySolver_h
+
+#include "Radiosity/Common/Scene.h"
+#include "Radiosity/Common/SolutionMesh.h"
+#include "Radiosity/Common/SolverTypes.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace radiosity
+{
+/// A named array of a product or of the surface: `Components` values per
+/// tuple, stored as doubles; `Type` says what the VTK array should be.
+struct ProductArray
+{
+  enum class ValueType
+  {
+    Double,
+    Int,
+    IdType,
+    UnsignedChar
+  };
+  std::string Name;
+  int Components = 1;
+  ValueType Type = ValueType::Double;
+  std::vector<double> Values;
+
+  ProductArray() = default;
+  ProductArray(std::string name, int components, std::size_t tuples, ValueType type = ValueType::Double)
+    : Name(std::move(name))
+    , Components(components)
+    , Type(type)
+    , Values(tuples * static_cast<std::size_t>(components), 0.0)
+  {
+  }
+  std::size_t Tuples() const { return this->Components > 0 ? this->Values.size() / this->Components : 0; }
+  double* Tuple(std::size_t i) { return this->Values.data() + i * static_cast<std::size_t>(this->Components); }
+  void SetRGB(std::size_t i, const RGB& c)
+  {
+    double* t = this->Tuple(i);
+    t[0] = c.x;
+    t[1] = c.y;
+    t[2] = c.z;
+  }
+};
+
+/// A method's own product: points, triangles over them (none: every point
+/// is a vertex cell) and named arrays on both. Empty Kind: the method has no
+/// product beyond the surface (progressive refinement).
+struct SolverProduct
+{
+  std::string Kind;
+  std::vector<Vec3> Points;
+  std::vector<Triangle> Triangles;
+  std::vector<ProductArray> PointArrays, CellArrays;
+  std::vector<std::string> Warnings;
+  /// False when the product's computation was aborted part-way.
+  bool Complete = true;
+};
+
+class RadiositySolver
+{
+public:
+  virtual ~RadiositySolver() = default;
+  /// The method's name as the command line spells it ("progressive", ...).
+  virtual const char* MethodName() const = 0;
+  virtual SolverStatistics Solve(const ProgressCallback& progress) = 0;
+  /// The surface solution: the elements with the SPEC fields.
+  virtual SolutionMesh Surface() const = 0;
+  /// Point arrays of the surface beyond the SPEC fields (face cluster: the
+  /// irradiance vectors for vtkVectorIrradianceMapper); none by default.
+  virtual std::vector<ProductArray> SurfacePointArrays() const { return {}; }
+  /// The method's own product (may take time: progress and abort apply).
+  virtual SolverProduct Product(const ProgressCallback& progress) const = 0;
+  const Scene& GetScene() const { return *this->SceneRef; }
+  std::shared_ptr<const Scene> SharedScene() const { return this->SceneRef; }
+
+protected:
+  explicit RadiositySolver(std::shared_ptr<const Scene> scene)
+    : SceneRef(std::move(scene))
+  {
+  }
+  /// Every method's solver references the scene; the interface keeps it alive.
+  std::shared_ptr<const Scene> SceneRef;
+};
+} // namespace radiosity
+
+#endif

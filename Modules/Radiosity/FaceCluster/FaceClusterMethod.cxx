@@ -1,0 +1,74 @@
+#include "Radiosity/FaceCluster/FaceClusterMethod.h"
+
+namespace radiosity
+{
+FaceClusterMethod::FaceClusterMethod(std::shared_ptr<const Scene> scene,
+  const FaceClusterSettings& settings, std::shared_ptr<const FaceClusterHierarchy> hierarchy)
+  : RadiositySolver(scene)
+  // Built on the shared scene itself: no copy of it.
+  , Solver(*scene, settings,
+      hierarchy ? std::move(hierarchy) : FaceClusterHierarchy::Shared(scene, settings.Clustering))
+{
+}
+
+SolverStatistics FaceClusterMethod::Solve(const ProgressCallback& progress)
+{
+  return this->Solver.Solve(progress);
+}
+
+SolutionMesh FaceClusterMethod::Surface() const
+{
+  return this->Solver.Surface();
+}
+
+std::vector<ProductArray> FaceClusterMethod::SurfacePointArrays() const
+{
+  const auto vectors = this->Solver.VertexIrradianceVectors();
+  ProductArray array("IrradianceVector", 9, vectors.size());
+  for (std::size_t p = 0; p < vectors.size(); ++p)
+  {
+    std::copy(vectors[p].begin(), vectors[p].end(), array.Tuple(p));
+  }
+  return { std::move(array) };
+}
+
+SolverProduct FaceClusterMethod::Product(const ProgressCallback&) const
+{
+  using Type = ProductArray::ValueType;
+  const Scene& scene = *this->SceneRef;
+  SolverProduct product;
+  product.Kind = "LeafClusters";
+  product.Points = scene.Points;
+  product.Triangles = scene.Triangles;
+  const std::size_t n = scene.Triangles.size();
+  ProductArray leaf("LeafElement", 1, n, Type::IdType), cluster("LeafCluster", 1, n, Type::IdType),
+    level("Level", 1, n, Type::Int), vector("IrradianceVector", 9, n);
+  const auto& elements = this->Solver.Elements();
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    const Triangle& tri = scene.Triangles[t];
+    const Vec3 centroid = (scene.Points[tri.V[0]] + scene.Points[tri.V[1]] + scene.Points[tri.V[2]]) / 3.0;
+    const auto ti = static_cast<std::uint32_t>(t);
+    const std::int32_t e = this->Solver.LeafAt(ti, centroid);
+    leaf.Values[t] = e;
+    int depth = 0;
+    for (std::int32_t up = e; up >= 0 && elements[static_cast<std::size_t>(up)].Parent >= 0;
+         up = elements[static_cast<std::size_t>(up)].Parent)
+    {
+      ++depth;
+    }
+    cluster.Values[t] = e >= 0 ? elements[static_cast<std::size_t>(e)].Cluster : -1.0;
+    level.Values[t] = depth;
+    const IrradianceVector v = this->Solver.IrradianceVectorAt(ti, centroid);
+    double* out = vector.Tuple(t);
+    for (int c = 0; c < 3; ++c)
+    {
+      out[3 * c] = v[c].x;
+      out[3 * c + 1] = v[c].y;
+      out[3 * c + 2] = v[c].z;
+    }
+  }
+  product.CellArrays = { std::move(leaf), std::move(cluster), std::move(level), std::move(vector) };
+  return product;
+}
+} // namespace radiosity

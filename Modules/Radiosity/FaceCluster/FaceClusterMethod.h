@@ -1,0 +1,36 @@
+// Face cluster radiosity (Gobbetti et al. 2003) behind the common solver
+// interface. The surface's points carry the irradiance vectors (section 3.5,
+// what vtkVectorIrradianceMapper shades per pixel); the product is the input
+// triangles labelled with their leaf cluster and its vector irradiance.
+#ifndef Radiosity_FaceClusterMethod_h
+#define Radiosity_FaceClusterMethod_h
+
+#include "Radiosity/Common/RadiositySolver.h"
+#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+
+namespace radiosity
+{
+class FaceClusterMethod final : public RadiositySolver
+{
+public:
+  /// `hierarchy`: one built for this scene (vtkFaceClusterHierarchyFilter);
+  /// null: the shared one, built once per scene.
+  FaceClusterMethod(std::shared_ptr<const Scene> scene, const FaceClusterSettings& settings,
+    std::shared_ptr<const FaceClusterHierarchy> hierarchy = nullptr);
+  const char* MethodName() const override { return "facecluster"; }
+  SolverStatistics Solve(const ProgressCallback& progress) override;
+  SolutionMesh Surface() const override;
+  /// `IrradianceVector` (9 values: the R, G, B vectors) at every scene point.
+  std::vector<ProductArray> SurfacePointArrays() const override;
+  /// Kind "LeafClusters": the input triangles with `LeafElement` (the leaf
+  /// element's index), `LeafCluster` (its cluster), `Level` and
+  /// `IrradianceVector` at the triangle's centroid.
+  SolverProduct Product(const ProgressCallback& progress) const override;
+  const FaceClusterRadiosity& Instance() const { return this->Solver; }
+
+private:
+  FaceClusterRadiosity Solver;
+};
+} // namespace radiosity
+
+#endif

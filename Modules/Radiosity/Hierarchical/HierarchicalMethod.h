@@ -1,0 +1,40 @@
+// Hierarchical radiosity (Hanrahan, Salzman & Aupperle 1991, with the
+// blockers of every partial link) behind the common solver interface; its
+// product is Hardt & Teller's discontinuity mesh with the quadratic
+// irradiance interpolants (BuildDiscontinuityMesh).
+#ifndef Radiosity_HierarchicalMethod_h
+#define Radiosity_HierarchicalMethod_h
+
+#include "Radiosity/Common/RadiositySolver.h"
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+
+namespace radiosity
+{
+class HierarchicalMethod final : public RadiositySolver
+{
+public:
+  HierarchicalMethod(std::shared_ptr<const Scene> scene, const HierarchicalOptions& options,
+    const DiscontinuityMeshOptions& meshing);
+  const char* MethodName() const override { return "hierarchical"; }
+  SolverStatistics Solve(const ProgressCallback& progress) override;
+  SolutionMesh Surface() const override;
+  /// Kind "DiscontinuityMesh": the triangles with `QuadraticInterpolant`
+  /// (18 values: six coefficients per channel), the SPEC fields, `ElementId`
+  /// (quadtree leaf), `Level` and `ObjectId`; point `Irradiance` and `Radiosity`.
+  SolverProduct Product(const ProgressCallback& progress) const override;
+  const HierarchicalRadiosity& Instance() const { return this->Solver; }
+  /// The mesh behind the last Product() (its statistics, for reports).
+  const DiscontinuityMesh& LastMesh() const { return this->Mesh; }
+
+private:
+  HierarchicalRadiosity Solver;
+  DiscontinuityMeshOptions Meshing;
+  mutable DiscontinuityMesh Mesh;
+};
+
+/// The discontinuity mesh as a product (what HierarchicalMethod::Product gives).
+SolverProduct DiscontinuityMeshProduct(const DiscontinuityMesh& mesh, const Scene& scene);
+} // namespace radiosity
+
+#endif

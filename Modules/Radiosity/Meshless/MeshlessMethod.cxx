@@ -1,0 +1,65 @@
+#include "Radiosity/Meshless/MeshlessMethod.h"
+
+namespace radiosity
+{
+MeshlessMethod::MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options)
+  : RadiositySolver(std::move(scene))
+  , Solver(*this->SceneRef, options)
+{
+}
+
+SolverStatistics MeshlessMethod::Solve(const ProgressCallback& progress)
+{
+  return this->Solver.Solve(progress);
+}
+
+SolutionMesh MeshlessMethod::Surface() const
+{
+  return this->Solver.Surface();
+}
+
+SolverProduct MeshlessMethod::Product(const ProgressCallback&) const
+{
+  using Type = ProductArray::ValueType;
+  SolverProduct product;
+  product.Kind = "ShepardField";
+  if (!this->Solver.HasField())
+  {
+    return product; // no point placed: an empty field
+  }
+  const std::vector<MeshlessPoint>& points = this->Solver.Points().Points();
+  const std::vector<RGB>& total = this->Solver.Irradiance().Coefficients();
+  const std::vector<RGB>& direct = this->Solver.DirectIrradiance().Coefficients();
+  const std::size_t n = points.size();
+  // A scene without emitters stops before any field has coefficients: its
+  // field is zero (the irradiance is), not missing.
+  const bool valued = total.size() == n && direct.size() == n;
+  ProductArray level("Level", 1, n, Type::Int), radius("Radius", 1, n), normal("Normal", 3, n),
+    group("Group", 1, n, Type::Int), coefficient("Coefficient", 3, n),
+    directCoefficient("DirectCoefficient", 3, n), irradiance("Irradiance", 3, n),
+    gathered("Gathered", 1, n, Type::UnsignedChar);
+  product.Points.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const MeshlessPoint& p = points[i];
+    product.Points.push_back(p.Position);
+    level.Values[i] = p.Level;
+    group.Values[i] = static_cast<double>(p.Group);
+    radius.Values[i] = p.Radius;
+    double* m = normal.Tuple(i);
+    m[0] = p.Normal.x;
+    m[1] = p.Normal.y;
+    m[2] = p.Normal.z;
+    if (valued)
+    {
+      coefficient.SetRGB(i, total[i]);
+      directCoefficient.SetRGB(i, direct[i]);
+      irradiance.SetRGB(i, this->Solver.Irradiance().Evaluate(p.Position, p.Normal, p.Group));
+    }
+    gathered.Values[i] = this->Solver.WasGatheredTo(i) ? 1.0 : 0.0;
+  }
+  product.PointArrays = { std::move(level), std::move(radius), std::move(normal), std::move(group),
+    std::move(coefficient), std::move(directCoefficient), std::move(irradiance), std::move(gathered) };
+  return product;
+}
+} // namespace radiosity

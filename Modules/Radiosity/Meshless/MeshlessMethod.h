@@ -1,0 +1,31 @@
+// Meshless radiosity (Lehtinen et al. 2007) behind the common solver
+// interface; its product is the Shepard field: one vertex per basis function
+// (section 3.2) with its support radius, normal, group, level and
+// coefficients, which vtkShepardSplatMapper and vtkShepardFieldProbe read.
+#ifndef Radiosity_MeshlessMethod_h
+#define Radiosity_MeshlessMethod_h
+
+#include "Radiosity/Common/RadiositySolver.h"
+#include "Radiosity/Meshless/MeshlessRadiosity.h"
+
+namespace radiosity
+{
+class MeshlessMethod final : public RadiositySolver
+{
+public:
+  MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options);
+  const char* MethodName() const override { return "meshless"; }
+  SolverStatistics Solve(const ProgressCallback& progress) override;
+  SolutionMesh Surface() const override;
+  /// Kind "ShepardField": vertices with `Level`, `Radius`, `Normal`,
+  /// `Group`, `Coefficient` (total irradiance), `DirectCoefficient`,
+  /// `Irradiance` (the field evaluated at the point) and `Gathered`.
+  SolverProduct Product(const ProgressCallback& progress) const override;
+  const MeshlessRadiosity& Instance() const { return this->Solver; }
+
+private:
+  MeshlessRadiosity Solver;
+};
+} // namespace radiosity
+
+#endif
