@@ -17,6 +17,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
@@ -506,11 +507,19 @@ vtkSmartPointer<vtkDataArray> vtkRadiositySceneConverter::FromProductArray(
   }
   else
   {
-    for (vtkIdType i = 0; i < tuples * array.Components; ++i)
-    {
-      out->SetComponent(i / array.Components, static_cast<int>(i % array.Components),
-        array.Values[static_cast<std::size_t>(i)]);
-    }
+    // Sized above: distinct tuples are written from distinct threads.
+    const int components = array.Components;
+    vtkSMPTools::For(0, tuples,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          for (int c = 0; c < components; ++c)
+          {
+            out->SetComponent(i, c, array.Values[static_cast<std::size_t>(i * components + c)]);
+          }
+        }
+      });
   }
   return out;
 }
