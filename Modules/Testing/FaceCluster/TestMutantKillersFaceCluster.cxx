@@ -1,6 +1,7 @@
 // Tests added for the survivors of the mutation check (Testing/Mutation,
 // issue 16): the face cluster transfer's exact constant coupling.
 #include "Radiosity/Common/ClosedFormFactors.h"
+#include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/FaceCluster/FaceClusterTransfer.h"
 #include "Radiosity/Scenes/SceneGenerators.h"
 
@@ -101,6 +102,52 @@ double LCoupling()
   EXPECT_EQ(t.K.size(), 1u);
   return t.K.empty() ? -1.0 : t.K[0].z;
 }
+
+/// n . K of the constant coupling from a folded emitter (a unit square at
+/// z = 3 facing down and a unit square at x = 1, z in [2, 3], facing -x, one
+/// object of 144 triangles: a cluster neither small nor flat, coupled by the
+/// cubature kernel) to a 0.02-wide square at (0.5, 0.5, 0) facing up; and the
+/// exact point-to-polygon factor of the emitter's triangles at the receiver's
+/// centre (the contour integral, not the cubature).
+std::pair<double, double> FoldCoupling()
+{
+  Scene s;
+  Material m;
+  AppendQuad(s, Vec3(0.49, 0.49, 0), Vec3(0.51, 0.49, 0), Vec3(0.51, 0.51, 0), Vec3(0.49, 0.51, 0), m, 1,
+    "receiver");
+  Scene fold;
+  AppendQuad(fold, Vec3(0, 0, 3), Vec3(0, 1, 3), Vec3(1, 1, 3), Vec3(1, 0, 3), m, 6, "fold");
+  AppendQuad(fold, Vec3(1, 0, 2), Vec3(1, 0, 3), Vec3(1, 1, 3), Vec3(1, 1, 2), m, 6, "fold");
+  fold.ObjectNames = { "fold" };
+  fold.ObjectIds.assign(fold.Triangles.size(), 0);
+  fold.SourceCells.clear();
+  AppendScene(s, fold);
+  double exact = 0.0;
+  const Vec3 centre(0.5, 0.5, 0.0);
+  for (std::size_t t = 2; t < s.Triangles.size(); ++t)
+  {
+    exact += PointToTriangleFormFactor(centre, Vec3(0, 0, 1), s.Vertex(t, 0), s.Vertex(t, 1), s.Vertex(t, 2));
+  }
+  const FaceClusterHierarchy h(s);
+  const FaceClusterVisibility visibility(h);
+  std::uint32_t r = 0, e = 0;
+  for (std::uint32_t root : h.Roots())
+  {
+    (h.Cluster(root).Centre.z > 0.5f ? e : r) = root;
+  }
+  EXPECT_EQ(h.Roots().size(), 2u);
+  EXPECT_EQ(h.Cluster(e).Count, 144u);
+  const PolynomialBasis constant(BasisKind::Constant);
+  const FaceCluster receiver = h.Cluster(r), emitter = h.Cluster(e);
+  const SurfaceRule rr = MakeSurfaceRule(h, r, receiver, constant, 5);
+  const SurfaceRule er = MakeSurfaceRule(h, e, emitter, constant, 5);
+  TransferRule rule;
+  rule.Nodes = 5;
+  const Transfer t = ComputeTransfer({ &receiver, r, &rr, constant.Size() }, { &emitter, e, &er, 1 },
+    { RGB(1.0) }, 1.0, 1.0, visibility, rule);
+  EXPECT_EQ(t.K.size(), 1u);
+  return { t.K.empty() ? -1.0 : t.K[0].z, exact };
+}
 } // namespace mutant_killers_face_cluster
 
 // Mutant "the exact constant coupling ignores occlusion" (v * exactVector ->
@@ -135,4 +182,19 @@ TEST(MutantKillersFaceCluster, LShapedFlatEmitterCouplesByItsCoverage)
   std::cout << "L coupling / closed form - 1 = " << coupling / exact - 1.0 << "\n";
   // Measured 7.6e-5 relative (the receiver's 0.02 width against a point).
   EXPECT_NEAR(coupling, exact, 2e-4 * exact);
+}
+
+// Mutant "the point kernel of the cubature without its 1/pi" survived: every
+// emitter in the tests was small or flat, coupled by exact vector form
+// factors, and the cubature served only the higher-order terms. A folded
+// emitter of 144 triangles is coupled by the cubature; the reference is the
+// contour integral over its triangles.
+TEST(MutantKillersFaceCluster, FoldedEmitterByCubatureMatchesTheContourIntegral)
+{
+  namespace k = mutant_killers_face_cluster;
+  const auto [coupling, exact] = k::FoldCoupling();
+  std::cout << "fold coupling / contour integral - 1 = " << coupling / exact - 1.0 << "\n";
+  // Measured +3.2e-2 relative (five Gauss-Legendre nodes per axis at a
+  // distance of two to three sizes); the mutant is +224%.
+  EXPECT_NEAR(coupling, exact, 8e-2 * exact);
 }
