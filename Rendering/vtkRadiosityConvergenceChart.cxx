@@ -252,6 +252,12 @@ bool vtkRadiosityConvergenceChart::Render(int width, int height)
   }
   this->Internal->NumberOfLines = lines;
   vtkRenderWindow* window = this->Internal->View->GetRenderWindow();
+  std::string why;
+  if (!vtkRadiosityCanOpenWindow(window, why))
+  {
+    vtkErrorMacro(<< why);
+    return false;
+  }
   window->SetSize(std::min(std::max(width, 16), 16384), std::min(std::max(height, 16), 16384));
   this->Internal->Chart->RecalculateBounds();
   this->Internal->View->Render();

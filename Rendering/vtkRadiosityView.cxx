@@ -388,6 +388,12 @@ bool vtkRadiosityView::Render()
   }
   this->UpdatePipeline();
   vtkRenderWindow* window = this->GetRenderWindow();
+  std::string why;
+  if (!vtkRadiosityCanOpenWindow(window, why))
+  {
+    vtkErrorMacro(<< why);
+    return false;
+  }
   window->SetSize(this->Size);
   if (!this->CameraSet)
   {
@@ -397,6 +403,13 @@ bool vtkRadiosityView::Render()
   }
   window->Render();
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRadiosityView::CanOpenWindow(std::string& why)
+{
+  vtkNew<vtkRenderWindow> window; // the factory's kind; nothing is opened
+  return vtkRadiosityCanOpenWindow(window, why);
 }
 
 //------------------------------------------------------------------------------

@@ -57,6 +57,7 @@
 #include "RadiosityRenderingModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For members
+#include <string> // For CanOpenWindow
 
 class vtkActor;
 class vtkPolyData;
@@ -211,9 +212,17 @@ public:
   ///@}
 
   /**
-   * Renders the input. Returns false (with an error) on invalid input.
+   * Renders the input. Returns false (with an error) on invalid input, or
+   * when no window can be opened (see CanOpenWindow).
    */
   bool Render();
+
+  /**
+   * Whether this process can open a render window: false, with `why`
+   * naming DISPLAY and the way out (xvfb-run), when VTK's window is an X
+   * window and no X display can be opened (VTK would abort).
+   */
+  static bool CanOpenWindow(std::string& why);
 
   /**
    * Renders and writes the image as PNG. Returns false (with an error) on

@@ -7,6 +7,11 @@
 
 class vtkRenderWindow;
 
+/// Whether `window` can be opened: an X window needs a display, and VTK
+/// aborts or crashes without one. False with `error` naming DISPLAY and the
+/// way out (xvfb-run) when there is none; true for other kinds of window.
+bool vtkRadiosityCanOpenWindow(vtkRenderWindow* window, std::string& error);
+
 /// Writes `window` (already rendered) to `fileName`; false with `error` set.
 bool vtkRadiosityWriteWindowPNG(vtkRenderWindow* window, const char* fileName, std::string& error);
 

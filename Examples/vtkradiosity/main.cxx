@@ -97,6 +97,14 @@ int RunSolve(const SolveArguments& args)
   {
     throw BadInput("--probe-output needs --probes");
   }
+  std::string noWindow;
+  if ((!args.Image.empty() || !args.Exr.empty() || !args.HistoryPng.empty()) &&
+    !vtkRadiosityView::CanOpenWindow(noWindow))
+  {
+    // Before the solve, not after it: the images need a window.
+    throw BadInput(std::string(!args.Image.empty() ? "--image" : !args.Exr.empty() ? "--exr" : "--history-plot") +
+      ": " + noWindow);
+  }
   // Everything that can be refused is read and checked before anything is written.
   std::vector<Probe> probes;
   std::string error;
@@ -467,6 +475,11 @@ int main(int argc, char* argv[])
   {
     if (*bench)
     {
+      std::string noWindow;
+      if (!vtkRadiosityView::CanOpenWindow(noWindow))
+      {
+        throw BadInput("bench writes its error-against-time plots: " + noWindow);
+      }
       return cli::RunBench(benchDir, quick);
     }
     if (*demo)
