@@ -20,8 +20,15 @@ string(JSON rms GET "${report}" error probe_output_rms_relative_error)
 if (NOT stop STREQUAL "converged" OR NOT triangles EQUAL 32 OR NOT kind MATCHES "^path traced")
   message(FATAL_ERROR "demo report: stop ${stop}, ${triangles} triangles, reference ${kind}")
 endif ()
-# 30 lit probes, 16,384 paths each (largest relative SE 3.5e-2).
-expect_within("demo: RMS error against the path tracer (measured 0.0734)" "${rms}" 0 0.15)
+# 30 lit probes, 16,384 paths each (largest relative SE 3.5e-2), every one
+# counted; the error relative to the peak, then per probe.
+string(JSON counted GET "${report}" error probe_output_probes_counted)
+string(JSON perProbe GET "${report}" error probe_output_rms_per_probe_relative_error)
+if (NOT counted EQUAL 30)
+  message(FATAL_ERROR "demo: ${counted} probes counted, expected 30")
+endif ()
+expect_within("demo: RMS error / peak against the path tracer (measured 0.00719)" "${rms}" 0 0.015)
+expect_within("demo: RMS per-probe relative error against the path tracer (measured 0.0709)" "${perProbe}" 0 0.15)
 file(STRINGS "${out}/convergence.csv" history)
 list(LENGTH history rows)
 list(GET history 0 header)
