@@ -70,6 +70,20 @@ function(read_bench_csv file prefix)
   set(${prefix}_KEYS "${keys}" PARENT_SCOPE)
 endfunction()
 
+# The committed tables were written with the project's metric (error / peak
+# reference irradiance, every probe) when their README says so: then each
+# quick figure is within a factor 3 of the committed one both ways (the
+# analytic scenes reproduce exactly). Tables from before that metric
+# (per-probe relative errors, larger) bound the quick figures from above only.
+file(READ "${COMMITTED}/README.md" committedReadme)
+if (committedReadme MATCHES "relative to the peak reference")
+  set(lowerFactor 3)
+else ()
+  set(lowerFactor 0)
+  message(WARNING "${COMMITTED} predates the peak-relative error metric: "
+    "its figures bound the quick run's from above only; rerun vtkradiosity bench and commit it")
+endif ()
+
 foreach (scene IN LISTS scenes)
   foreach (f "${scene}.csv" "${scene}.png")
     if (NOT EXISTS "${out}/${f}")
@@ -108,9 +122,11 @@ foreach (scene IN LISTS scenes)
     # and at least 1e-10 (the hierarchical closed rooms are exact to 4e-13,
     # rounding that another summation order can change).
     foreach (figure rms max)
-      float_eval(bound "3 * ${committed_${key}_${figure}} > 1e-10 ? 3 * ${committed_${key}_${figure}} : 1e-10")
-      expect_within("${scene} ${key} ${figure} error (committed ${committed_${key}_${figure}})"
-        "${quick_${key}_${figure}}" 0 "${bound}")
+      set(c "${committed_${key}_${figure}}")
+      float_eval(bound "3 * ${c} > 1e-10 ? 3 * ${c} : 1e-10")
+      float_eval(lower "${lowerFactor} > 0 && ${c} > 1e-10 ? ${c} / ${lowerFactor} : 0")
+      expect_within("${scene} ${key} ${figure} error (committed ${c})"
+        "${quick_${key}_${figure}}" "${lower}" "${bound}")
     endforeach ()
     message(STATUS "${scene} ${key}: rms ${quick_${key}_rms} (committed ${committed_${key}_rms}), "
       "max ${quick_${key}_max} (committed ${committed_${key}_max})")
