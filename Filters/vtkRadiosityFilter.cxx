@@ -361,7 +361,7 @@ template <typename Method, typename Instance>
 std::shared_ptr<const Instance> InstanceOf(const std::shared_ptr<radiosity::RadiositySolver>& solver)
 {
   auto method = std::dynamic_pointer_cast<const Method>(solver);
-  return method ? std::shared_ptr<const Instance>(method, &method->Instance()) : nullptr;
+  return method ? std::shared_ptr<const Instance>(method, &method->GetInstance()) : nullptr;
 }
 }
 

@@ -103,7 +103,7 @@ int TestDiscontinuityMeshFilter(int, char*[])
   ok &= Check(solution != nullptr, "GetHierarchicalSolution after a hierarchical solve");
   ok &= Check(radiosity->GetSolution() != nullptr, "GetSolution after a hierarchical solve");
   auto method = std::dynamic_pointer_cast<const radiosity::HierarchicalMethod>(radiosity->GetSolver());
-  ok &= Check(method != nullptr && &method->Instance() == solution.get(),
+  ok &= Check(method != nullptr && &method->GetInstance() == solution.get(),
     "GetSolver is the hierarchical method holding GetHierarchicalSolution");
   if (!method)
   {

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace radiosity
@@ -92,6 +93,30 @@ protected:
   }
   /// Every method's solver references the scene; the interface keeps it alive.
   std::shared_ptr<const Scene> SceneRef;
+};
+
+/// What every method's adapter shares: it owns the method's solver, built on
+/// the shared scene, and forwards Solve to it.
+template <typename Instance>
+class MethodSolver : public RadiositySolver
+{
+public:
+  SolverStatistics Solve(const ProgressCallback& progress) override
+  {
+    return this->Solver.Solve(progress);
+  }
+  /// The method's own solver (its statistics, fields, hierarchy).
+  const Instance& GetInstance() const { return this->Solver; }
+
+protected:
+  /// Builds the method's solver as Instance(scene, args...).
+  template <typename... Args>
+  explicit MethodSolver(std::shared_ptr<const Scene> scene, Args&&... args)
+    : RadiositySolver(std::move(scene))
+    , Solver(*this->SceneRef, std::forward<Args>(args)...)
+  {
+  }
+  Instance Solver;
 };
 } // namespace radiosity
 

@@ -4,16 +4,10 @@ namespace radiosity
 {
 FaceClusterMethod::FaceClusterMethod(std::shared_ptr<const Scene> scene,
   const FaceClusterSettings& settings, std::shared_ptr<const FaceClusterHierarchy> hierarchy)
-  : RadiositySolver(scene)
   // Built on the shared scene itself: no copy of it.
-  , Solver(*scene, settings,
+  : MethodSolver(scene, settings,
       hierarchy ? std::move(hierarchy) : FaceClusterHierarchy::Shared(scene, settings.Clustering))
 {
-}
-
-SolverStatistics FaceClusterMethod::Solve(const ProgressCallback& progress)
-{
-  return this->Solver.Solve(progress);
 }
 
 SolutionMesh FaceClusterMethod::Surface() const

@@ -10,7 +10,7 @@
 
 namespace radiosity
 {
-class FaceClusterMethod final : public RadiositySolver
+class FaceClusterMethod final : public MethodSolver<FaceClusterRadiosity>
 {
 public:
   /// `hierarchy`: one built for this scene (vtkFaceClusterHierarchyFilter);
@@ -18,7 +18,6 @@ public:
   FaceClusterMethod(std::shared_ptr<const Scene> scene, const FaceClusterSettings& settings,
     std::shared_ptr<const FaceClusterHierarchy> hierarchy = nullptr);
   const char* MethodName() const override { return "facecluster"; }
-  SolverStatistics Solve(const ProgressCallback& progress) override;
   SolutionMesh Surface() const override;
   /// `IrradianceVector` (9 values: the R, G, B vectors) at every scene point.
   std::vector<ProductArray> SurfacePointArrays() const override;
@@ -26,10 +25,6 @@ public:
   /// element's index), `LeafCluster` (its cluster), `Level` and
   /// `IrradianceVector` at the triangle's centroid.
   SolverProduct Product(const ProgressCallback& progress) const override;
-  const FaceClusterRadiosity& Instance() const { return this->Solver; }
-
-private:
-  FaceClusterRadiosity Solver;
 };
 } // namespace radiosity
 

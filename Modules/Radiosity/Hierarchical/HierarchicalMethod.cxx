@@ -6,15 +6,9 @@ namespace radiosity
 {
 HierarchicalMethod::HierarchicalMethod(std::shared_ptr<const Scene> scene,
   const HierarchicalOptions& options, const DiscontinuityMeshOptions& meshing)
-  : RadiositySolver(std::move(scene))
-  , Solver(*this->SceneRef, options)
+  : MethodSolver(std::move(scene), options)
   , Meshing(meshing)
 {
-}
-
-SolverStatistics HierarchicalMethod::Solve(const ProgressCallback& progress)
-{
-  return this->Solver.Solve(progress);
 }
 
 SolutionMesh HierarchicalMethod::Surface() const

@@ -11,24 +11,21 @@
 
 namespace radiosity
 {
-class HierarchicalMethod final : public RadiositySolver
+class HierarchicalMethod final : public MethodSolver<HierarchicalRadiosity>
 {
 public:
   HierarchicalMethod(std::shared_ptr<const Scene> scene, const HierarchicalOptions& options,
     const DiscontinuityMeshOptions& meshing);
   const char* MethodName() const override { return "hierarchical"; }
-  SolverStatistics Solve(const ProgressCallback& progress) override;
   SolutionMesh Surface() const override;
   /// Kind "DiscontinuityMesh": the triangles with `QuadraticInterpolant`
   /// (18 values: six coefficients per channel), the SPEC fields, `ElementId`
   /// (quadtree leaf), `Level` and `ObjectId`; point `Irradiance` and `Radiosity`.
   SolverProduct Product(const ProgressCallback& progress) const override;
-  const HierarchicalRadiosity& Instance() const { return this->Solver; }
   /// The mesh behind the last Product() (its statistics, for reports).
   const DiscontinuityMesh& LastMesh() const { return this->Mesh; }
 
 private:
-  HierarchicalRadiosity Solver;
   DiscontinuityMeshOptions Meshing;
   mutable DiscontinuityMesh Mesh;
 };

@@ -3,14 +3,8 @@
 namespace radiosity
 {
 MeshlessMethod::MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options)
-  : RadiositySolver(std::move(scene))
-  , Solver(*this->SceneRef, options)
+  : MethodSolver(std::move(scene), options)
 {
-}
-
-SolverStatistics MeshlessMethod::Solve(const ProgressCallback& progress)
-{
-  return this->Solver.Solve(progress);
 }
 
 SolutionMesh MeshlessMethod::Surface() const

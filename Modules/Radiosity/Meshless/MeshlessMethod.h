@@ -10,21 +10,16 @@
 
 namespace radiosity
 {
-class MeshlessMethod final : public RadiositySolver
+class MeshlessMethod final : public MethodSolver<MeshlessRadiosity>
 {
 public:
   MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options);
   const char* MethodName() const override { return "meshless"; }
-  SolverStatistics Solve(const ProgressCallback& progress) override;
   SolutionMesh Surface() const override;
   /// Kind "ShepardField": vertices with `Level`, `Radius`, `Normal`,
   /// `Group`, `Coefficient` (total irradiance), `DirectCoefficient`,
   /// `Irradiance` (the field evaluated at the point) and `Gathered`.
   SolverProduct Product(const ProgressCallback& progress) const override;
-  const MeshlessRadiosity& Instance() const { return this->Solver; }
-
-private:
-  MeshlessRadiosity Solver;
 };
 } // namespace radiosity
 

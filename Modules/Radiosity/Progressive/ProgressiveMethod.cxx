@@ -3,14 +3,8 @@
 namespace radiosity
 {
 ProgressiveMethod::ProgressiveMethod(std::shared_ptr<const Scene> scene, const ProgressiveOptions& options)
-  : RadiositySolver(std::move(scene))
-  , Solver(*this->SceneRef, options)
+  : MethodSolver(std::move(scene), options)
 {
-}
-
-SolverStatistics ProgressiveMethod::Solve(const ProgressCallback& progress)
-{
-  return this->Solver.Solve(progress);
 }
 
 SolutionMesh ProgressiveMethod::Surface() const

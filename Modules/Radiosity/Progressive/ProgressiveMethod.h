@@ -9,18 +9,13 @@
 
 namespace radiosity
 {
-class ProgressiveMethod final : public RadiositySolver
+class ProgressiveMethod final : public MethodSolver<ProgressiveRadiosity>
 {
 public:
   ProgressiveMethod(std::shared_ptr<const Scene> scene, const ProgressiveOptions& options);
   const char* MethodName() const override { return "progressive"; }
-  SolverStatistics Solve(const ProgressCallback& progress) override;
   SolutionMesh Surface() const override;
   SolverProduct Product(const ProgressCallback& progress) const override;
-  const ProgressiveRadiosity& Instance() const { return this->Solver; }
-
-private:
-  ProgressiveRadiosity Solver;
 };
 } // namespace radiosity
 

@@ -134,7 +134,7 @@ TEST(SolverInterface, MeshlessProductIsTheShepardField)
   const SolverProduct product = SolveThroughInterface(method, "meshless", 1e-12);
   EXPECT_EQ(product.Kind, "ShepardField");
   EXPECT_TRUE(product.Triangles.empty()) << "the field is points";
-  EXPECT_EQ(product.Points.size(), method.Instance().Points().Points().size());
+  EXPECT_EQ(product.Points.size(), method.GetInstance().Points().Points().size());
   for (const char* name : { "Level", "Radius", "Normal", "Group", "Coefficient", "DirectCoefficient",
          "Irradiance", "Gathered" })
   {
