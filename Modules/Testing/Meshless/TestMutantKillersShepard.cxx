@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 using namespace radiosity;
@@ -62,4 +63,21 @@ TEST(MutantKillersShepard, FinerCoefficientsDependOnlyOnCoarserLevels)
       ASSERT_EQ(after[k].x, before[k].x) << "coefficient " << k << " of level " << h.Points()[k].Level;
     }
   }
+}
+
+// Mutant "the weight's normal factor max(0, n . n_j) dropped" (the sign test
+// kept) survived: on flat walls every point of a group shares the normal, and
+// on the sphere the supports are small against the curvature (n . n_j near 1).
+// Eq. 12 at r = 0.3 with the normals 60 degrees apart: K(0.3) = 2 (0.027) -
+// 3 (0.09) + 1 = 0.784, times cos 60 = 0.5, is 0.392.
+TEST(MutantKillersShepard, WeightCarriesTheNormalsCosine)
+{
+  MeshlessPoint p;
+  p.Position = Vec3(0.0);
+  p.Normal = Vec3(0, 0, 1);
+  p.Radius = 1.0;
+  const double s = std::sqrt(3.0) / 2.0;
+  // Measured: 0.392 exactly (difference 0; the bound is rounding); the mutant
+  // gives 0.784.
+  EXPECT_NEAR(ShepardWeight(p, Vec3(0.3, 0, 0), Vec3(s, 0, 0.5)), 0.392, 1e-15);
 }
