@@ -1,4 +1,5 @@
 #include "Radiosity/Common/ClosedFormFactors.h"
+#include "Radiosity/Common/Types.h" // radiosity::Pi
 
 #include <cmath>
 
