@@ -9,11 +9,41 @@
 
 #include <iostream>
 #include <memory>
+#include <utility>
 
 using namespace radiosity;
 
 namespace mutant_killers_face_cluster
 {
+/// The lowest root cluster of `h` (the receiver) and the highest (the emitter).
+std::pair<std::uint32_t, std::uint32_t> LowestAndHighestRoots(const FaceClusterHierarchy& h)
+{
+  std::uint32_t r = h.Roots().front(), e = r;
+  for (std::uint32_t root : h.Roots())
+  {
+    r = h.Cluster(root).Centre.z < h.Cluster(r).Centre.z ? root : r;
+    e = h.Cluster(root).Centre.z > h.Cluster(e).Centre.z ? root : e;
+  }
+  return { r, e };
+}
+
+/// n . K of the constant coupling from root `e` to root `r`, for unit
+/// radiosity (5 nodes per direction, the transfer's own visibility).
+double ConstantCouplingBetween(const FaceClusterHierarchy& h, std::uint32_t r, std::uint32_t e)
+{
+  const FaceClusterVisibility visibility(h);
+  const PolynomialBasis constant(BasisKind::Constant);
+  const FaceCluster receiver = h.Cluster(r), emitter = h.Cluster(e);
+  const SurfaceRule rr = MakeSurfaceRule(h, r, receiver, constant, 5);
+  const SurfaceRule er = MakeSurfaceRule(h, e, emitter, constant, 5);
+  TransferRule rule;
+  rule.Nodes = 5;
+  const Transfer t = ComputeTransfer({ &receiver, r, &rr, constant.Size() }, { &emitter, e, &er, 1 },
+    { RGB(1.0) }, 1.0, 1.0, visibility, rule);
+  EXPECT_EQ(t.K.size(), 1u);
+  return t.K.empty() ? -1.0 : t.K[0].z;
+}
+
 /// n . K of the constant coupling from the unit square at z = 1 (facing down)
 /// to the unit square at z = 0 (facing up), for unit radiosity; with
 /// `blocked`, an opaque plate at z = 0.5 reaching well past both.
@@ -31,34 +61,11 @@ double ConstantCoupling(bool blocked)
     AppendQuad(s, Vec3(-2, -3, 0.5), Vec3(3.3, -3, 0.5), Vec3(3.3, 2.7, 0.5), Vec3(-2, 2.7, 0.5), m, 1, "plate");
   }
   const FaceClusterHierarchy h(s);
-  const FaceClusterVisibility visibility(h);
-  std::uint32_t r = 0, e = 0;
-  int found = 0;
-  for (std::uint32_t root : h.Roots())
-  {
-    const float z = h.Cluster(root).Centre.z;
-    if (z < 0.25f)
-    {
-      r = root;
-      ++found;
-    }
-    else if (z > 0.75f)
-    {
-      e = root;
-      ++found;
-    }
-  }
-  EXPECT_EQ(found, 2);
-  const PolynomialBasis constant(BasisKind::Constant);
-  const FaceCluster receiver = h.Cluster(r), emitter = h.Cluster(e);
-  const SurfaceRule rr = MakeSurfaceRule(h, r, receiver, constant, 5);
-  const SurfaceRule er = MakeSurfaceRule(h, e, emitter, constant, 5);
-  TransferRule rule;
-  rule.Nodes = 5;
-  const Transfer t = ComputeTransfer({ &receiver, r, &rr, constant.Size() }, { &emitter, e, &er, 1 },
-    { RGB(1.0) }, 1.0, 1.0, visibility, rule);
-  EXPECT_EQ(t.K.size(), 1u);
-  return t.K.empty() ? -1.0 : t.K[0].z;
+  EXPECT_EQ(h.Roots().size(), blocked ? 3u : 2u);
+  const auto [r, e] = LowestAndHighestRoots(h);
+  EXPECT_LT(h.Cluster(r).Centre.z, 0.25f);
+  EXPECT_GT(h.Cluster(e).Centre.z, 0.75f);
+  return ConstantCouplingBetween(h, r, e);
 }
 
 /// n . K of the constant coupling from an L-shaped emitter at z = 1 facing
@@ -83,24 +90,10 @@ double LCoupling()
   l.SourceCells.clear();
   AppendScene(s, l);
   const FaceClusterHierarchy h(s);
-  const FaceClusterVisibility visibility(h);
-  std::uint32_t r = 0, e = 0;
-  for (std::uint32_t root : h.Roots())
-  {
-    (h.Cluster(root).Centre.z > 0.5f ? e : r) = root;
-  }
   EXPECT_EQ(h.Roots().size(), 2u);
+  const auto [r, e] = LowestAndHighestRoots(h);
   EXPECT_EQ(h.Cluster(e).Count, 216u);
-  const PolynomialBasis constant(BasisKind::Constant);
-  const FaceCluster receiver = h.Cluster(r), emitter = h.Cluster(e);
-  const SurfaceRule rr = MakeSurfaceRule(h, r, receiver, constant, 5);
-  const SurfaceRule er = MakeSurfaceRule(h, e, emitter, constant, 5);
-  TransferRule rule;
-  rule.Nodes = 5;
-  const Transfer t = ComputeTransfer({ &receiver, r, &rr, constant.Size() }, { &emitter, e, &er, 1 },
-    { RGB(1.0) }, 1.0, 1.0, visibility, rule);
-  EXPECT_EQ(t.K.size(), 1u);
-  return t.K.empty() ? -1.0 : t.K[0].z;
+  return ConstantCouplingBetween(h, r, e);
 }
 
 /// n . K of the constant coupling from a folded emitter (a unit square at
@@ -129,24 +122,10 @@ std::pair<double, double> FoldCoupling()
     exact += PointToTriangleFormFactor(centre, Vec3(0, 0, 1), s.Vertex(t, 0), s.Vertex(t, 1), s.Vertex(t, 2));
   }
   const FaceClusterHierarchy h(s);
-  const FaceClusterVisibility visibility(h);
-  std::uint32_t r = 0, e = 0;
-  for (std::uint32_t root : h.Roots())
-  {
-    (h.Cluster(root).Centre.z > 0.5f ? e : r) = root;
-  }
   EXPECT_EQ(h.Roots().size(), 2u);
+  const auto [r, e] = LowestAndHighestRoots(h);
   EXPECT_EQ(h.Cluster(e).Count, 144u);
-  const PolynomialBasis constant(BasisKind::Constant);
-  const FaceCluster receiver = h.Cluster(r), emitter = h.Cluster(e);
-  const SurfaceRule rr = MakeSurfaceRule(h, r, receiver, constant, 5);
-  const SurfaceRule er = MakeSurfaceRule(h, e, emitter, constant, 5);
-  TransferRule rule;
-  rule.Nodes = 5;
-  const Transfer t = ComputeTransfer({ &receiver, r, &rr, constant.Size() }, { &emitter, e, &er, 1 },
-    { RGB(1.0) }, 1.0, 1.0, visibility, rule);
-  EXPECT_EQ(t.K.size(), 1u);
-  return { t.K.empty() ? -1.0 : t.K[0].z, exact };
+  return { ConstantCouplingBetween(h, r, e), exact };
 }
 } // namespace mutant_killers_face_cluster
 
