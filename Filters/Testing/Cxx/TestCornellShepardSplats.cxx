@@ -145,8 +145,9 @@ int TestCornellShepardSplats(int argc, char* argv[])
   std::cout << "splats against the probed mesh: mean pixel difference " << difference
             << " (splat mean " << mean << "), harness error " << compare->GetThresholdedError()
             << "\n";
-  // 0.15: vtkRegressionTestImage's threshold.
-  if (mean < 20.0 || compare->GetThresholdedError() > 0.15)
+  // 0.15: vtkRegressionTestImage's threshold. Measured: a mean difference
+  // of 0.064 (of 255) between the halves, the splat mean 55.1.
+  if (mean < 20.0 || difference > 0.2 || compare->GetThresholdedError() > 0.15)
   {
     std::cerr << "the splats are dark or do not agree with the probed mesh\n";
     return EXIT_FAILURE;

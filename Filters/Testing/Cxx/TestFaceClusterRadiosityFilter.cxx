@@ -80,7 +80,8 @@ int TestFaceClusterRadiosityFilter(int argc, char* argv[])
   }
   std::cout << "closed room: worst point irradiance error " << worst << ", "
             << solution->Statistics().LeafElements << " leaf elements\n";
-  ok &= Check(worst < 0.02, "point irradiance within 2% of the exact answer");
+  // Measured 1.9e-4 (192 leaf elements).
+  ok &= Check(worst < 6e-4, "point irradiance within 6e-4 of the exact answer");
 
   // The Cornell box, each triangle split into 64, the tall block glossy.
   vtkNew<vtkCornellBoxSource> box;

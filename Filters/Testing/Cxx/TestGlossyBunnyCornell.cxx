@@ -113,7 +113,8 @@ int TestGlossyBunnyCornell(int argc, char* argv[])
   const FilterTestSupport::Halves halves = FilterTestSupport::CompareHalves(window, width, height);
   const double difference = halves.Difference, mean = halves.LeftMean;
   std::cout << "mean pixel " << mean << ", mean difference between the bases " << difference << "\n";
-  if (mean < 20.0 || difference < 0.2)
+  // Measured: mean 87.5, a mean difference of 5.5 (of 255) between the bases.
+  if (mean < 30.0 || difference < 2.0)
   {
     std::cerr << "the image is dark or the two bases do not differ\n";
     return EXIT_FAILURE;
