@@ -255,6 +255,8 @@ bool CheckPixels(vtkRenderer* ren, vtkRenderWindow* window, const std::vector<Tr
         const double got = pixels->GetComponent(static_cast<vtkIdType>(y) * size[0] + x, c);
         worst = std::max(worst, std::abs(got - expected));
         lobe = std::max(lobe, std::abs(expected - Displayed(diffuseOnly[c] * exposure, toneMapping)));
+        // 2.5 of 255 against 0.5 measured (8-bit rounding): see the reason
+        // written in TestQuadraticInterpolantMapper; the lobe changes 93.6.
         if (std::abs(got - expected) > 2.5)
         {
           std::cerr << "Pixel (" << x << ", " << y << ") channel " << c << " of triangle " << hit
