@@ -106,7 +106,17 @@ int TestRadiosityFilterFailures(int, char*[])
   ok &= Check(filter->GetExecutive()->Update() == 1, "the solve after the failures failed: " + filter->GetLastError());
   ok &= Check(filter->GetLastError().empty(), "LastError kept: " + filter->GetLastError());
   const double again = PeakIrradiance(filter->GetOutput());
-  ok &= Check(again > 1.0, "hierarchical peak irradiance after the failures " + std::to_string(again));
+  // The same answer as a filter that never failed (the solve is deterministic
+  // up to the order of parallel sums).
+  vtkNew<vtkRadiosityFilter> fresh;
+  fresh->SetInputConnection(box->GetOutputPort());
+  fresh->SetMaxTime(20);
+  fresh->SetMethod(filter->GetMethod());
+  fresh->Update();
+  const double expected = PeakIrradiance(fresh->GetOutput());
+  ok &= Check(again > 1.0 && std::fabs(again - expected) <= 1e-9 * expected,
+    "peak irradiance after the failures " + std::to_string(again) + ", a fresh filter's " +
+      std::to_string(expected));
 
   // vtkShepardFieldProbe: a field whose Level is NaN is refused by name (the
   // cast of a NaN to an integer was undefined behaviour).
