@@ -166,11 +166,14 @@ TEST(MemoryBudget, HierarchicalSphereOf20kTrianglesIsRefusedAtOnce)
     std::cout << message << "\n";
     EXPECT_NE(message.find("20480 input triangles"), std::string::npos) << message;
     EXPECT_NE(message.find("419 million links"), std::string::npos) << message;
+    EXPECT_NE(message.find("need about 47 GB"), std::string::npos) << message; // the README's figure
     EXPECT_NE(message.find("--method facecluster"), std::string::npos) << message;
     EXPECT_NE(message.find("--max-memory"), std::string::npos) << message;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "refused in " << seconds << " s\n";
+  // The README's "in under a second" is this figure (0.54 s measured on a
+  // loaded 2-core machine); speed is not asserted in tests (DESIGN: benchmarks).
 }
 
 TEST(MemoryBudget, RefinementPastTheBudgetIsRefused)
