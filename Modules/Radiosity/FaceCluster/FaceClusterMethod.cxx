@@ -40,19 +40,15 @@ SolverProduct FaceClusterMethod::Product(const ProgressCallback&) const
   const auto& elements = this->Solver.Elements();
   for (std::size_t t = 0; t < n; ++t)
   {
-    const Triangle& tri = scene.Triangles[t];
-    const Vec3 centroid = (scene.Points[tri.V[0]] + scene.Points[tri.V[1]] + scene.Points[tri.V[2]]) / 3.0;
+    const Vec3 centroid = scene.Centroid(t);
     const auto ti = static_cast<std::uint32_t>(t);
     const std::int32_t e = this->Solver.LeafAt(ti, centroid);
     leaf.Values[t] = e;
-    int depth = 0;
-    for (std::int32_t up = e; up >= 0 && elements[static_cast<std::size_t>(up)].Parent >= 0;
-         up = elements[static_cast<std::size_t>(up)].Parent)
-    {
-      ++depth;
-    }
-    cluster.Values[t] = e >= 0 ? elements[static_cast<std::size_t>(e)].Cluster : -1.0;
-    level.Values[t] = depth;
+    // The leaf's cluster and its depth in the cluster tree, as the surface's
+    // ElementId and Level (FaceClusterRadiosity::Surface).
+    const FaceClusterElement* element = e >= 0 ? &elements[static_cast<std::size_t>(e)] : nullptr;
+    cluster.Values[t] = element ? element->Cluster : -1.0;
+    level.Values[t] = element ? element->Data.Depth : 0.0;
     const IrradianceVector v = this->Solver.IrradianceVectorAt(ti, centroid);
     double* out = vector.Tuple(t);
     for (int c = 0; c < 3; ++c)

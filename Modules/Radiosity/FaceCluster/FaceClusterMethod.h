@@ -22,7 +22,8 @@ public:
   /// `IrradianceVector` (9 values: the R, G, B vectors) at every scene point.
   std::vector<ProductArray> SurfacePointArrays() const override;
   /// Kind "LeafClusters": the input triangles with `LeafElement` (the leaf
-  /// element's index), `LeafCluster` (its cluster), `Level` and
+  /// element's index), `LeafCluster` (its cluster), `Level` (the cluster's
+  /// depth, as the surface's) and
   /// `IrradianceVector` at the triangle's centroid.
   SolverProduct Product(const ProgressCallback& progress) const override;
 };

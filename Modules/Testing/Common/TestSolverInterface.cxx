@@ -155,6 +155,18 @@ TEST(SolverInterface, FaceClusterProductIsTheLeafClusters)
   const ProductArray* v = Find(product.CellArrays, "IrradianceVector");
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(v->Components, 9);
+  // The product labels each triangle as the surface does: its leaf's
+  // cluster is the surface's ElementId, its depth the surface's Level.
+  const SolutionMesh surface = method.Surface();
+  const ProductArray* cluster = Find(product.CellArrays, "LeafCluster");
+  const ProductArray* level = Find(product.CellArrays, "Level");
+  ASSERT_NE(cluster, nullptr);
+  ASSERT_NE(level, nullptr);
+  for (std::size_t t = 0; t < surface.Triangles.size(); ++t)
+  {
+    EXPECT_EQ(cluster->Values[t], surface.ElementId[t]) << "triangle " << t;
+    EXPECT_EQ(level->Values[t], surface.Level[t]) << "triangle " << t;
+  }
   const std::vector<ProductArray> surfaceArrays = method.SurfacePointArrays();
   ASSERT_EQ(surfaceArrays.size(), 1u);
   EXPECT_EQ(surfaceArrays[0].Name, "IrradianceVector");
