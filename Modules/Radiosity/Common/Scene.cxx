@@ -155,6 +155,8 @@ void ValidateScene(const Scene& scene)
       throw SceneError("array Specular or Shininess, " + where + ": negative value");
     }
   }
+  LightSet lights = scene.Lighting;
+  ValidateLights(lights);
 }
 
 SceneCleanupReport DropDegenerateTriangles(Scene& scene)
@@ -220,6 +222,12 @@ void AppendScene(Scene& scene, const Scene& other)
   {
     scene.ObjectNames.insert(
       scene.ObjectNames.end(), other.ObjectNames.begin(), other.ObjectNames.end());
+  }
+  scene.Lighting.Lights.insert(
+    scene.Lighting.Lights.end(), other.Lighting.Lights.begin(), other.Lighting.Lights.end());
+  if (other.Lighting.SkyLight.Enabled() && !scene.Lighting.SkyLight.Enabled())
+  {
+    scene.Lighting.SkyLight = other.Lighting.SkyLight;
   }
 }
 } // namespace radiosity

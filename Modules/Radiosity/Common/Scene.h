@@ -3,6 +3,7 @@
 #ifndef Radiosity_Scene_h
 #define Radiosity_Scene_h
 
+#include "Radiosity/Common/Lights.h"
 #include "Radiosity/Common/Types.h"
 
 #include <stdexcept>
@@ -35,6 +36,7 @@ struct Scene
   std::vector<int> ObjectIds;      ///< one per triangle: the block it came from
   std::vector<long long> SourceCells; ///< input cell index, for messages
   std::vector<std::string> ObjectNames;
+  LightSet Lighting; ///< punctual lights and the sky (SPEC "Lights and sky")
 
   std::size_t NumberOfTriangles() const { return Triangles.size(); }
   Vec3 Vertex(std::size_t tri, int k) const { return Points[Triangles[tri].V[k]]; }
@@ -44,7 +46,9 @@ struct Scene
 
   void BoundingBox(Vec3& lo, Vec3& hi) const;
   double Diagonal() const;
-  bool HasEmitters() const;
+  bool HasEmitters() const; ///< emitting triangles (lights not counted)
+  /// Some light: an emitting triangle, a punctual light or an enabled sky.
+  bool IsLit() const { return this->HasEmitters() || !this->Lighting.Empty(); }
   std::size_t NumberOfEmitters() const; ///< triangles with a non-zero emission
   double EmittedPower() const; ///< sum of luminance-free RGB power: sum of (r+g+b)/3 * area
 };
@@ -57,7 +61,8 @@ struct SceneCleanupReport
 
 /**
  * Checks a scene against SPEC.md: finite coordinates, reflectance in [0, 1),
- * emission >= 0, finite material values, at least one triangle. Throws
+ * emission >= 0, finite material values, at least one triangle, valid lights
+ * (ValidateLights on a copy: the caller normalises its own). Throws
  * SceneError naming the offending cell or point and value.
  */
 void ValidateScene(const Scene& scene);

@@ -1,0 +1,82 @@
+// Direct light from the punctual lights and the sky of a scene (SPEC.md
+// "Lights and sky"), the one place every method takes it from.
+//
+// Punctual lights are exact: the closed form (Lights.h) times the visibility
+// of the light from the point, one shadow ray per light per point, so a
+// point, spot or sun gives a sharp shadow edge wherever a method evaluates it.
+//
+// The sky is an integral over the hemisphere: H = int L(w) V(x, w) cos dw.
+// It is evaluated by a stratified cosine-weighted quadrature (Malley's method:
+// a stratified disc lifted onto the hemisphere, n x n strata at their
+// centres, so it is deterministic and smooth in x), each direction weighted
+// by the sky radiance where its ray escapes the scene. Every weight is pi / N,
+// so an unobstructed uniform sky gives pi L exactly.
+#ifndef Radiosity_DirectLighting_h
+#define Radiosity_DirectLighting_h
+
+#include "Radiosity/Common/Lights.h"
+#include "Radiosity/Common/Scene.h"
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace radiosity
+{
+class Visibility;
+
+class DirectLighting
+{
+public:
+  /// `skySamples` is rounded to the nearest square (at least 4).
+  explicit DirectLighting(const Scene& scene, int skySamples = 256);
+  ~DirectLighting();
+  DirectLighting(const DirectLighting&) = delete;
+  DirectLighting& operator=(const DirectLighting&) = delete;
+
+  /// No punctual light and no sky.
+  bool Empty() const { return this->Set.Empty(); }
+  bool HasPunctualLights() const { return !this->Set.Lights.empty(); }
+  bool HasSky() const { return this->Set.SkyLight.Enabled(); }
+  const LightSet& Lights() const { return this->Set; }
+  int SkySamples() const { return this->SkyStrata * this->SkyStrata; }
+
+  /// Exact direct irradiance of the punctual lights at x (unit normal n).
+  RGB Punctual(const Vec3& x, const Vec3& n) const;
+  /// Exact direct irradiance of punctual light `light` alone, with its shadow ray.
+  RGB PunctualOne(std::size_t light, const Vec3& x, const Vec3& n) const;
+  /// Sky irradiance at x by the stratified quadrature.
+  RGB SkyIrradiance(const Vec3& x, const Vec3& n) const;
+  RGB Irradiance(const Vec3& x, const Vec3& n) const
+  {
+    return this->Punctual(x, n) + this->SkyIrradiance(x, n);
+  }
+
+  /// Irradiance at many points, in parallel (TBB).
+  void Evaluate(const Vec3* x, const Vec3* n, std::size_t count, RGB* out) const;
+
+  /**
+   * Power each punctual light delivers to the scene's front faces (centroid
+   * rule per triangle: the report's figure for a directional light, which has
+   * no power of its own), and the sky's (last entry, when there is a sky).
+   */
+  std::vector<RGB> ReceivedPower() const;
+
+  /// The distance beyond which a shadow ray has left the scene.
+  double FarDistance(const Vec3& x) const;
+  std::size_t RaysCast() const;
+
+private:
+  const Scene& SourceScene;
+  LightSet Set;
+  int SkyStrata = 16;
+  Vec3 Centre{ 0.0 };
+  double Extent = 1.0;
+  std::unique_ptr<Visibility> Occluders;
+};
+
+/// The scene's lights rescaled: every punctual intensity and the sky radiance times `scale`.
+LightSet ScaledLights(const LightSet& lights, double scale);
+} // namespace radiosity
+
+#endif
