@@ -54,9 +54,10 @@ RGB DirectLighting::PunctualOne(std::size_t index, const Vec3& x, const Vec3& n)
   {
     return RGB(0.0);
   }
+  const Vec3 origin = this->RayOrigin(x, n);
   const Vec3 target = ShadowRayTarget(light, x, this->FarDistance(x));
   unsigned char visible = 1;
-  this->Occluders->TestSegments(&x, &target, 1, &visible);
+  this->Occluders->TestSegments(&origin, &target, 1, &visible);
   return visible ? h : RGB(0.0);
 }
 
@@ -73,12 +74,13 @@ RGB DirectLighting::Punctual(const Vec3& x, const Vec3& n) const
   to.reserve(count);
   contribution.reserve(count);
   const double far = this->FarDistance(x);
+  const Vec3 origin = this->RayOrigin(x, n);
   for (const Light& light : this->Set.Lights)
   {
     const RGB h = UnshadowedIrradiance(light, x, n);
     if (MaxComponent(h) > 0.0)
     {
-      from.push_back(x);
+      from.push_back(origin);
       to.push_back(ShadowRayTarget(light, x, far));
       contribution.push_back(h);
     }
@@ -107,6 +109,7 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
   FrameAround(n, t, b);
   const int m = this->SkyStrata;
   const double far = this->FarDistance(x);
+  const Vec3 origin = this->RayOrigin(x, n);
   std::vector<Vec3> from, to;
   std::vector<RGB> radiance;
   from.reserve(m * m);
@@ -123,7 +126,7 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
       const RGB l = SkyRadiance(sky, w);
       if (MaxComponent(l) > 0.0)
       {
-        from.push_back(x);
+        from.push_back(origin);
         to.push_back(x + far * w);
         radiance.push_back(l);
       }
@@ -140,6 +143,71 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
     }
   }
   return (Pi / (m * m)) * sum;
+}
+
+std::array<Vec3, 3> DirectLighting::IrradianceVector(const Vec3& x, const Vec3& n) const
+{
+  std::array<Vec3, 3> out{ Vec3(0.0), Vec3(0.0), Vec3(0.0) };
+  for (std::size_t l = 0; l < this->Set.Lights.size(); ++l)
+  {
+    const Light& light = this->Set.Lights[l];
+    const RGB h = this->PunctualOne(l, x, n);
+    if (!(MaxComponent(h) > 0.0))
+    {
+      continue;
+    }
+    const Vec3 towards = light.Type == LightType::Directional ? -light.Direction
+                                                              : glm::normalize(light.Position - x);
+    const double c = glm::dot(n, towards); // > 0: PunctualOne is zero behind the surface
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] += (h[k] / c) * towards;
+    }
+  }
+  if (this->HasSky())
+  {
+    const RGB sky = this->SkyIrradiance(x, n);
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] += sky[k] * n;
+    }
+  }
+  return out;
+}
+
+DirectLighting::PowerEstimate DirectLighting::EstimatePower(std::size_t maxTriangles) const
+{
+  PowerEstimate result;
+  const Scene& scene = this->SourceScene;
+  const std::size_t nt = scene.Triangles.size();
+  if (this->Empty() || nt == 0)
+  {
+    return result;
+  }
+  const std::size_t stride = std::max<std::size_t>(1, (nt + maxTriangles - 1) / std::max<std::size_t>(maxTriangles, 1));
+  std::vector<std::size_t> chosen;
+  for (std::size_t t = 0; t < nt; t += stride)
+  {
+    chosen.push_back(t);
+  }
+  std::vector<RGB> h(chosen.size());
+  tbb::parallel_for(std::size_t(0), chosen.size(), [&](std::size_t i) {
+    h[i] = this->Irradiance(scene.Centroid(chosen[i]), scene.Normal(chosen[i]));
+  });
+  double sampledArea = 0.0, totalArea = 0.0, power = 0.0;
+  for (std::size_t i = 0; i < chosen.size(); ++i)
+  {
+    const double a = scene.Area(chosen[i]);
+    sampledArea += a;
+    power += Mean(h[i]) * a;
+    result.PeakIrradiance = std::max(result.PeakIrradiance, MaxComponent(h[i]));
+  }
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    totalArea += scene.Area(t);
+  }
+  result.Power = sampledArea > 0.0 ? power * totalArea / sampledArea : 0.0;
+  return result;
 }
 
 void DirectLighting::Evaluate(const Vec3* x, const Vec3* n, std::size_t count, RGB* out) const
@@ -194,6 +262,13 @@ std::vector<RGB> DirectLighting::ReceivedPower() const
     }
   }
   return power;
+}
+
+Vec3 DirectLighting::RayOrigin(const Vec3& x, const Vec3& n) const
+{
+  // Off the surface along its normal by Visibility's offset (relative to the
+  // scene's size): a grazing shadow ray then cannot hit its own triangle.
+  return x + this->Occluders->Offset() * n;
 }
 
 std::size_t DirectLighting::RaysCast() const

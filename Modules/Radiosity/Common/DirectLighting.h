@@ -17,6 +17,7 @@
 #include "Radiosity/Common/Lights.h"
 #include "Radiosity/Common/Scene.h"
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -52,6 +53,24 @@ public:
     return this->Punctual(x, n) + this->SkyIrradiance(x, n);
   }
 
+  /**
+   * Vector irradiance (one vector per channel) at x on a surface of normal n:
+   * each visible punctual light in front of the surface contributes its
+   * I falloff / d^2 along the direction towards it (so n . E is the scalar
+   * irradiance, and a glossy display sees where the lamp is); the sky, which
+   * has no single direction, contributes its irradiance along n.
+   */
+  std::array<Vec3, 3> IrradianceVector(const Vec3& x, const Vec3& n) const;
+
+  struct PowerEstimate
+  {
+    double Power = 0.0;          ///< W reaching the surfaces (mean of the channels)
+    double PeakIrradiance = 0.0; ///< the largest channel's largest irradiance seen
+  };
+  /// The power the lights deliver to the scene, from the triangles' centroids
+  /// (every triangle up to `maxTriangles`, else an even subset scaled by area).
+  PowerEstimate EstimatePower(std::size_t maxTriangles = 20000) const;
+
   /// Irradiance at many points, in parallel (TBB).
   void Evaluate(const Vec3* x, const Vec3* n, std::size_t count, RGB* out) const;
 
@@ -62,9 +81,13 @@ public:
    */
   std::vector<RGB> ReceivedPower() const;
 
+  /// Where the shadow rays from x on a surface of normal n start.
+  Vec3 RayOrigin(const Vec3& x, const Vec3& n) const;
   /// The distance beyond which a shadow ray has left the scene.
   double FarDistance(const Vec3& x) const;
   std::size_t RaysCast() const;
+  /// The BVH over every triangle the shadow rays use (null without lights).
+  const Visibility* ShadowRays() const { return this->Occluders.get(); }
 
 private:
   const Scene& SourceScene;

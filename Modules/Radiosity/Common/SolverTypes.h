@@ -109,7 +109,10 @@ struct SolverStatistics
   /// that kept only those the rays between the nodes meet (visibility there
   /// is approximate; reported as a warning)
   std::size_t LinksWithBlockersCut = 0;
-  double EmittedPowerW = 0.0;
+  double EmittedPowerW = 0.0; ///< emitting triangles' power plus LightPowerW
+  /// Power the punctual lights and the sky deliver to the surfaces (SPEC
+  /// "Lights and sky"); part of EmittedPowerW, the energy balance's input.
+  double LightPowerW = 0.0;
   double UnshotPowerW = 0.0;
   double AbsorbedPowerW = 0.0;
   double EscapedPowerW = 0.0;

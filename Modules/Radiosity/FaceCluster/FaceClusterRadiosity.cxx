@@ -391,7 +391,35 @@ void FaceClusterRadiosity::TransportLight(std::int32_t i, const std::vector<Irra
       }
     }
   }
+  // The lights are external emitters of the first iteration (SPEC "Lights
+  // and sky"): an element whose light varies over its nodes by more than the
+  // transfer tolerance is subdivided, as a transfer would be, and each leaf
+  // receives the lights' vector irradiance fitted at its own nodes.
+  std::vector<IrradianceVector> lightAtNodes;
+  if (this->Lights && this->Iteration == 0 && this->Nodes[i].IsLeaf())
+  {
+    double spread = 0.0;
+    lightAtNodes = this->LightAtNodes(i, &spread);
+    if (this->Nodes[i].IsLeaf() && spread > this->Epsilon && this->CanSubdivide(this->Nodes[i]))
+    {
+      this->Subdivide(i);
+      lightAtNodes.clear();
+    }
+  }
   FaceClusterElement& e = this->Nodes[i];
+  if (e.IsLeaf() && !lightAtNodes.empty())
+  {
+    for (std::size_t q = 0; q < e.Rule.Size(); ++q)
+    {
+      for (int a = 0; a < ne; ++a)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          dE[a][c] += e.Rule.Dual[q * ne + a] * lightAtNodes[q][c];
+        }
+      }
+    }
+  }
   std::fill(e.Next.begin(), e.Next.end(), RGB(0.0));
   e.NextMin = std::numeric_limits<double>::infinity();
   e.NextMax = 0.0;
@@ -453,6 +481,26 @@ void FaceClusterRadiosity::TransportLight(std::int32_t i, const std::vector<Irra
   }
 }
 
+std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(std::int32_t i, double* spread) const
+{
+  const FaceClusterElement& e = this->Nodes[i];
+  std::vector<IrradianceVector> out(e.Rule.Size());
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (std::size_t q = 0; q < e.Rule.Size(); ++q)
+  {
+    out[q] = this->Lights->IrradianceVector(e.Rule.Points[q], e.Rule.Normals[q]);
+    const double h = Mean(RGB(glm::dot(e.Rule.Normals[q], out[q][0]), glm::dot(e.Rule.Normals[q], out[q][1]),
+      glm::dot(e.Rule.Normals[q], out[q][2])));
+    lo = std::min(lo, h);
+    hi = std::max(hi, h);
+  }
+  if (spread)
+  {
+    *spread = e.Rule.Size() > 0 ? (hi - lo) * static_cast<double>(e.Data.Area) : 0.0;
+  }
+  return out;
+}
+
 SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
@@ -465,6 +513,15 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     {
       emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
       brightest = std::max(brightest, Mean(scene.Materials[t].Emission));
+    }
+    this->Lights.reset();
+    if (!scene.Lighting.Empty())
+    {
+      this->Lights = std::make_unique<DirectLighting>(scene, this->Settings.SkySamples);
+      const DirectLighting::PowerEstimate light = this->Lights->EstimatePower();
+      stats.LightPowerW = light.Power;
+      emitted += light.Power;
+      brightest = std::max(brightest, light.PeakIrradiance);
     }
     stats.EmittedPowerW = emitted;
     this->Nodes.clear();

@@ -23,6 +23,7 @@
 #ifndef Radiosity_FaceClusterRadiosity_h
 #define Radiosity_FaceClusterRadiosity_h
 
+#include "Radiosity/Common/DirectLighting.h"
 #include "Radiosity/FaceCluster/FaceClusterTransfer.h"
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/SolutionMesh.h"
@@ -58,6 +59,7 @@ struct FaceClusterSettings
   double MemoryBudgetBytes = 0.0;
   TransferRule Rule;
   FaceClusterOptions Clustering;
+  int SkySamples = 256; ///< sky quadrature directions per node (DirectLighting)
 };
 
 /// Irradiance vector: one vector per colour channel.
@@ -169,6 +171,11 @@ private:
   void TransportLight(std::int32_t i, const std::vector<IrradianceVector>& up);
   void Gather(std::int32_t i, std::int32_t j, std::vector<IrradianceVector>& into);
   void AddShooter(std::int32_t receiver, std::int32_t emitter);
+  /// The lights' vector irradiance at element e's rule nodes (external
+  /// emitters of the first iteration), and their scalar spread over the
+  /// nodes times the element's area: a transfer error bound in W.
+  std::vector<IrradianceVector> LightAtNodes(std::int32_t e, double* spread) const;
+  std::unique_ptr<DirectLighting> Lights; ///< null without lights and sky
 };
 } // namespace radiosity
 

@@ -2,6 +2,7 @@
 
 #include "Radiosity/Hierarchical/ConstrainedTriangulation.h"
 #include "Radiosity/Hierarchical/CriticalSurfaces.h"
+#include "Radiosity/Hierarchical/HardShadowEdges.h"
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/MeshProbeTracker.h"
 #include "Radiosity/Hierarchical/Shaft.h"
@@ -245,6 +246,7 @@ struct SampleRef
 struct LeafWork
 {
   std::vector<std::array<Vec3, 2>> Segments;
+  std::vector<std::array<Vec3, 2>> HardSegments; ///< D0: the lights' shadow boundaries
   PlanarTriangulation Mesh;
   std::vector<Vec3> LocalPoints;
   std::vector<RGB> LocalValues;
@@ -401,7 +403,7 @@ std::size_t ConformBoundaries(
 RGB AccuratePointIrradiance(
   const HierarchicalRadiosity& solution, std::uint32_t leaf, const Vec3& x, const Vec3& n)
 {
-  return ChainIrradiance(GatherChain(solution, leaf), x, n);
+  return ChainIrradiance(GatherChain(solution, leaf), x, n) + solution.DirectLight(x, n);
 }
 
 DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
@@ -421,6 +423,14 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     }
     const double minWeight = options.MinWeight * brightest;
     const EdgeTopology topology(scene);
+    // The lights' hard shadow boundaries (D0) come before every EV/VE event.
+    const DirectLighting* lights = s.GetDirectLighting();
+    std::unique_ptr<HardShadowEdges> hardShadows;
+    if (options.Discontinuities && lights && lights->HasPunctualLights())
+    {
+      hardShadows = std::make_unique<HardShadowEdges>(
+        scene, *lights->ShadowRays(), 4.0 * std::max(s.Analysis().Diagonal, 1e-300));
+    }
     auto report = [&](const char* phase, double fraction) {
       if (!progress)
       {
@@ -450,7 +460,18 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
         std::vector<std::array<Vec3, 2>> segments;
         if (options.Discontinuities)
         {
-          segments = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
+          if (hardShadows)
+          {
+            const double minLength = 1e-4 * mesh.LongestEdge(leaf);
+            for (const Light& light : lights->Lights().Lights)
+            {
+              hardShadows->Find(light, corners, mesh[leaf].Normal, minLength, work[i].HardSegments);
+            }
+            found[i] += work[i].HardSegments.size();
+          }
+          segments = work[i].HardSegments;
+          const auto events = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
+          segments.insert(segments.end(), events.begin(), events.end());
           kept[i] = segments.size();
         }
         work[i].Mesh = segments.empty()
@@ -543,15 +564,45 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
           w.LocalPoints.push_back(x);
         }
       }
+      // A hard shadow boundary is a jump of the irradiance (D0): a sample on
+      // it belongs to each triangle beside it with that triangle's own limit,
+      // taken a little inside the triangle (a thousandth of the way to its
+      // centroid: far above the single-precision shadow rays' error).
+      const double onHard = 1e-6 * mesh.LongestEdge(leaves[i]);
+      auto onHardSegment = [&](const Vec3& x) {
+        for (const auto& seg : w.HardSegments)
+        {
+          bool inside = false;
+          if (EdgeDistance(x, seg[0], seg[1], inside, 0.0) < onHard)
+          {
+            return true;
+          }
+        }
+        return false;
+      };
+      auto sideSample = [&](const Vec3& x, const Vec3& triangleCentre) {
+        const SampleRef ref{ false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
+        w.LocalPoints.push_back(x + 1e-3 * (triangleCentre - x));
+        return ref;
+      };
       for (const auto& t : w.Mesh.Triangles)
       {
         std::array<SampleRef, 6> r{};
+        const Vec3 triangleCentre = (w.Mesh.Points[t[0]] + w.Mesh.Points[t[1]] + w.Mesh.Points[t[2]]) / 3.0;
         for (int k = 0; k < 3; ++k)
         {
           const std::uint32_t a = t[k], b = t[(k + 1) % 3];
           r[2 * k] = w.VertexSamples[a];
           const Vec3 mid = 0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]);
-          if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
+          if (!w.HardSegments.empty() && onHardSegment(w.Mesh.Points[a]))
+          {
+            r[2 * k] = sideSample(w.Mesh.Points[a], triangleCentre);
+          }
+          if (!w.HardSegments.empty() && onHardSegment(mid))
+          {
+            r[2 * k + 1] = sideSample(mid, triangleCentre);
+          }
+          else if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
           {
             r[2 * k + 1] = shared(mid); // a piece of the leaf's boundary
           }
@@ -587,13 +638,15 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       const Vec3& c = mesh[leaves[i]].Centroid;
       for (std::uint32_t k : owned[i])
       {
-        sharedValues[k] = ChainIrradiance(chain, Inside(sharedPoints[k], c), n);
+        const Vec3 x = Inside(sharedPoints[k], c);
+        sharedValues[k] = ChainIrradiance(chain, x, n) + s.DirectLight(x, n);
       }
       LeafWork& w = work[i];
       w.LocalValues.resize(w.LocalPoints.size());
       for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
       {
-        w.LocalValues[k] = ChainIrradiance(chain, Inside(w.LocalPoints[k], c), n);
+        const Vec3 x = Inside(w.LocalPoints[k], c);
+        w.LocalValues[k] = ChainIrradiance(chain, x, n) + s.DirectLight(x, n);
       }
     });
     out.PointSamples = sharedPoints.size();

@@ -68,11 +68,22 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const Hierarchi
   const double diag = this->SceneInfo.Diagonal > 0 ? this->SceneInfo.Diagonal : 1.0;
   this->MinEdge = this->Settings.MinElementSize * diag;
   this->PlaneTolerance = 1e-9 * diag;
+  // Lights count in the ambient estimate with the irradiance they bring
+  // (at each triangle's centroid): a scene lit only by lights gets the same
+  // relative tolerance as one lit by emitters.
+  std::vector<double> lightAtRoot(scene.Triangles.size(), 0.0);
+  if (!scene.Lighting.Empty())
+  {
+    this->Lights = std::make_unique<DirectLighting>(scene, this->Settings.SkySamples);
+    tbb::parallel_for(std::size_t(0), scene.Triangles.size(), [&](std::size_t t) {
+      lightAtRoot[t] = MaxComponent(this->Lights->Irradiance(scene.Centroid(t), scene.Normal(t)));
+    });
+  }
   double power = 0.0, area = 0.0, reflected = 0.0;
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
     const double a = scene.Area(t);
-    power += MaxComponent(scene.Materials[t].Emission) * a;
+    power += (MaxComponent(scene.Materials[t].Emission) + lightAtRoot[t]) * a;
     reflected += MaxComponent(scene.Materials[t].Reflectance) * a;
     area += a;
   }
@@ -86,6 +97,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const Hierarchi
   this->NodeGatheredVisible.assign(n, RGB(0.0));
   this->Normalization.assign(n, 1.0);
   this->NodeIrradiance.assign(n, RGB(0.0));
+  this->NodeDirect.assign(n, RGB(0.0));
   for (std::uint32_t e = 0; e < n; ++e)
   {
     this->NodeRadiosity[e] = this->Elements->MaterialOf(e).Emission;
@@ -142,6 +154,7 @@ std::uint32_t HierarchicalRadiosity::Children(std::uint32_t e)
   this->NodeGatheredVisible.resize(n, RGB(0.0));
   this->Normalization.resize(n, 1.0);
   this->NodeIrradiance.resize(n, h);
+  this->NodeDirect.resize(n, RGB(0.0));
   return first;
 }
 
@@ -545,7 +558,9 @@ double HierarchicalRadiosity::Sweep(std::vector<RGB>& change)
             gv += t;
           }
         }
-        this->NodeGathered[e] = g;
+        // The light link joins the transfers that are not normalised (Normalize
+        // rescales the emitters' unoccluded form factors only).
+        this->NodeGathered[e] = g + this->NodeDirect[e];
         this->NodeGatheredVisible[e] = gv;
       }
     });
@@ -557,6 +572,76 @@ double HierarchicalRadiosity::Sweep(std::vector<RGB>& change)
     delta += Mean(glm::abs(change[e])) * (*this->Elements)[static_cast<std::uint32_t>(e)].Area;
   }
   return delta;
+}
+
+double HierarchicalRadiosity::LinkLights()
+{
+  if (!this->Lights)
+  {
+    return 0.0;
+  }
+  ElementMesh& mesh = *this->Elements;
+  std::vector<std::uint32_t> pending = this->Roots;
+  std::vector<RGB> mean;
+  std::vector<unsigned char> split;
+  double power = 0.0;
+  while (!pending.empty())
+  {
+    mean.assign(pending.size(), RGB(0.0));
+    split.assign(pending.size(), 0);
+    tbb::parallel_for(std::size_t(0), pending.size(), [&](std::size_t i) {
+      const std::uint32_t e = pending[i];
+      const Element& el = mesh[e];
+      const TriangleCorners c = this->Corners(e);
+      // Corners (from inside, as the discontinuity mesher samples them), edge
+      // midpoints and the centre.
+      const Vec3 points[7] = { c[0] + 1e-7 * (el.Centroid - c[0]), c[1] + 1e-7 * (el.Centroid - c[1]),
+        c[2] + 1e-7 * (el.Centroid - c[2]), 0.5 * (c[0] + c[1]), 0.5 * (c[1] + c[2]),
+        0.5 * (c[2] + c[0]), el.Centroid };
+      RGB h[7];
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (int k = 0; k < 7; ++k)
+      {
+        h[k] = this->Lights->Irradiance(points[k], el.Normal);
+        lo = std::min(lo, MaxComponent(h[k]));
+        hi = std::max(hi, MaxComponent(h[k]));
+      }
+      // Two rules exact for quadratics (the mean of the edge midpoints, and
+      // 3/4 centre + 1/12 corners), averaged.
+      const RGB midpoints = (h[3] + h[4] + h[5]) / 3.0;
+      const RGB centroidRule = 0.75 * h[6] + (h[0] + h[1] + h[2]) / 12.0;
+      mean[i] = 0.5 * (midpoints + centroidRule);
+      split[i] = hi - lo > this->Epsilon && this->Splittable(e);
+    });
+    std::vector<std::uint32_t> next;
+    for (std::size_t i = 0; i < pending.size(); ++i)
+    {
+      const std::uint32_t e = pending[i];
+      if (split[i])
+      {
+        const std::uint32_t first = this->Children(e);
+        for (std::uint32_t k = 0; k < 4; ++k)
+        {
+          next.push_back(first + k);
+        }
+        continue;
+      }
+      if (MaxComponent(mean[i]) > 0.0)
+      {
+        this->NodeDirect[e] = mean[i];
+        ++this->LightLinks;
+        power += Mean(mean[i]) * mesh[e].Area;
+        // The first links are refined against B = E + rho H_direct.
+        this->NodeRadiosity[e] = mesh.MaterialOf(e).Emission + mesh.MaterialOf(e).Reflectance * mean[i];
+      }
+    }
+    pending.swap(next);
+  }
+  for (std::uint32_t r : this->Roots)
+  {
+    this->Pull(r);
+  }
+  return power;
 }
 
 void HierarchicalRadiosity::StoreLeafIrradiance()
@@ -578,11 +663,22 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
   return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
     ElementMesh& mesh = *this->Elements;
     stats.Occluders = this->SceneInfo.Occluders;
+    const auto report0 = [&](const char* phase) {
+      return ReportProgress(progress, phase, 0, 1.0, this->Settings.Tolerance);
+    };
     double emitted = 0.0;
     for (std::uint32_t e : this->Roots)
     {
       emitted += Mean(mesh.MaterialOf(e).Emission) * mesh[e].Area;
     }
+    if (this->Lights && !report0("lighting"))
+    {
+      stats.Stop = StopReason::Aborted;
+      stats.SolveSeconds = start.Seconds();
+      return stats;
+    }
+    stats.LightPowerW = this->LinkLights();
+    emitted += stats.LightPowerW;
     stats.EmittedPowerW = emitted;
     stats.Elements = mesh.NumberOfLeaves();
     if (!(emitted > 0.0))
@@ -738,7 +834,7 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
       stats.LinksWithBlockersCut += l.BlockersCut;
     }
     stats.Subdivisions = (mesh.Elements().size() - this->Roots.size()) / 4;
-    stats.RaysCast = this->Rays->RaysCast();
+    stats.RaysCast = this->Rays->RaysCast() + (this->Lights ? this->Lights->RaysCast() : 0);
     stats.SolveSeconds = start.Seconds();
     return stats;
   });

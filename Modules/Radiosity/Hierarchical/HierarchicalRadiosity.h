@@ -47,6 +47,8 @@
 #include "Radiosity/Common/SceneAnalysis.h"
 #include "Radiosity/Common/SolverTypes.h"
 
+#include "Radiosity/Common/DirectLighting.h"
+
 #include <functional>
 #include <memory>
 #include <vector>
@@ -78,6 +80,7 @@ struct HierarchicalOptions
   /// Checked before the first allocation (the initial links of every facing
   /// pair of input triangles) and while links and nodes are refined.
   double MemoryBudgetBytes = 0.0;
+  int SkySamples = 256; ///< sky quadrature directions per light-link sample (DirectLighting)
   std::vector<Probe> ErrorProbes;   ///< reference irradiance: error in every history row
   std::vector<RGB> ErrorReference;
 };
@@ -130,6 +133,18 @@ public:
   /// Total irradiance of a node (its own links and its ancestors'), W/m^2.
   const RGB& Irradiance(std::uint32_t e) const { return this->NodeIrradiance[e]; }
   double GetLinkTolerance() const { return this->Epsilon; }
+  /// The punctual lights and the sky (null when the scene has none).
+  const DirectLighting* GetDirectLighting() const { return this->Lights.get(); }
+  /// Exact direct light of the lights and sky at x (0 without lights): the
+  /// value a light-to-node link integrates, and the discontinuity mesher's.
+  RGB DirectLight(const Vec3& x, const Vec3& n) const
+  {
+    return this->Lights ? this->Lights->Irradiance(x, n) : RGB(0.0);
+  }
+  /// Direct irradiance a node receives through its own light link (0 when
+  /// its light arrives through an ancestor's link or not at all).
+  const RGB& LightLinkIrradiance(std::uint32_t e) const { return this->NodeDirect[e]; }
+  std::size_t NumberOfLightLinks() const { return this->LightLinks; }
   TriangleCorners Corners(std::uint32_t e) const;
 
 private:
@@ -148,6 +163,14 @@ private:
   bool ComputeLinks(const std::vector<PendingLink>& pending, SolverStatistics& stats,
     const std::function<bool()>& keepGoing);
   void IndexLinks();
+  /// Light-to-node links (SPEC "Lights and sky"): from each root down, a node
+  /// takes the lights' direct irradiance as its own link when the exact
+  /// values at its corners, edge midpoints and centre differ by at most the
+  /// link tolerance (the BF criterion with the light's B F being the
+  /// irradiance itself), else it is split; a hard shadow edge is followed
+  /// down to MinElementSize, and discontinuity meshing makes it sharp.
+  /// Returns the power the lights deliver to the surfaces.
+  double LinkLights();
   double Sweep(std::vector<RGB>& change);
   RGB PushPull(std::uint32_t e, const RGB& downVisible, const RGB& downOther,
     std::vector<RGB>& change);
@@ -164,6 +187,9 @@ private:
   std::vector<std::uint32_t> BlockerPool;
   std::vector<std::uint32_t> LinkOffsets; ///< links sorted by receiver: per node, the first
   std::vector<RGB> NodeRadiosity, NodeGathered, NodeGatheredVisible, NodeIrradiance;
+  std::vector<RGB> NodeDirect; ///< the light link's irradiance per node
+  std::unique_ptr<DirectLighting> Lights;
+  std::size_t LightLinks = 0;
   /// Per leaf: exact over approximate sum of the unoccluded form factors of
   /// its links and its ancestors' links (see Normalize).
   std::vector<double> Normalization;

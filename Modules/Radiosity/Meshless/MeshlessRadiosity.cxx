@@ -131,6 +131,11 @@ RGB MeshlessRadiosity::DirectAt(std::uint32_t receiver) const
     }
     e += f * (static_cast<double>(seen) / count) * this->SourceScene.Materials[t].Emission;
   }
+  if (this->Lights)
+  {
+    // Punctual lights exactly (one shadow ray each), the sky by its quadrature.
+    e += this->Lights->Irradiance(p.Position, p.Normal);
+  }
   return e;
 }
 
@@ -410,7 +415,7 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
       area += scene.Area(t);
     }
     stats.EmittedPowerW = emitted;
-    if (!(emitted > 0.0))
+    if (!(emitted > 0.0) && scene.Lighting.Empty())
     {
       stats.Stop = StopReason::NoEmitters;
       return stats;
@@ -431,6 +436,10 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     // Only what can occlude casts shadows (SceneAnalysis): no rays, and no
     // grazing-angle misses, inside a convex enclosure.
     this->Shadows = std::make_unique<Visibility>(scene, AnalyzeScene(scene).CanOcclude);
+    if (!scene.Lighting.Empty())
+    {
+      this->Lights = std::make_unique<DirectLighting>(scene, this->Settings.SkySamples);
+    }
     try
   {
     this->Hierarchy = std::make_unique<PointHierarchy>(scene, this->Settings.Placement, this->Rays.get(),
@@ -466,6 +475,23 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     this->Stats.DirectSeconds = clock.Seconds() - this->Stats.PlacementSeconds;
     const double base = std::max(direct.Magnitude, 1e-300);
     const double perPoint = area / static_cast<double>(points.LevelEnd(0));
+    if (this->Lights)
+    {
+      // The lights' power reaching the surfaces, from the coarsest level's
+      // direct values (each point stands for area / points of surface).
+      double light = 0.0;
+      for (std::size_t j = points.LevelBegin(0); j < points.LevelEnd(0); ++j)
+      {
+        light += Mean(this->Lights->Irradiance(points.Points()[j].Position, points.Points()[j].Normal));
+      }
+      stats.LightPowerW = light * perPoint;
+      stats.EmittedPowerW += stats.LightPowerW;
+      if (!(stats.EmittedPowerW > 0.0))
+      {
+        stats.Stop = StopReason::NoEmitters;
+        return stats;
+      }
+    }
 
     auto row = [&](long long iteration, double remaining) {
       ConvergenceRow r;

@@ -30,6 +30,7 @@
 #ifndef Radiosity_MeshlessRadiosity_h
 #define Radiosity_MeshlessRadiosity_h
 
+#include "Radiosity/Common/DirectLighting.h"
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Meshless/ShepardField.h"
 #include "Radiosity/Common/SolutionMesh.h"
@@ -49,6 +50,7 @@ struct MeshlessOptions
   double SolidAngleThreshold = 3.14159265358979323846 / 10.0; ///< epsilon_Omega, steradians
   double VariationThreshold = 0.01;        ///< epsilon_E, relative to the largest direct irradiance
   int EmitterSamples = 16;                 ///< visibility rays per receiver and emitter triangle
+  int SkySamples = 256;                    ///< sky quadrature directions per point (DirectLighting)
   int MaxBounces = 1000;
   double Tolerance = 1e-3;                 ///< stop when a bounce carries less than this of the direct light
   double MaxTimeSeconds = 0.0;             ///< 0: no limit
@@ -127,6 +129,7 @@ private:
   MeshlessOptions Settings;
   std::unique_ptr<Visibility> Rays;     ///< every triangle: gather rays, placement
   std::unique_ptr<Visibility> Shadows;  ///< the triangles that can occlude: direct light
+  std::unique_ptr<DirectLighting> Lights; ///< punctual lights and sky (null without)
   std::unique_ptr<PointHierarchy> Hierarchy;
   std::unique_ptr<ShepardField> Direct, Solution;
   std::vector<std::uint32_t> Emitters;

@@ -1,5 +1,6 @@
 #include "Radiosity/Progressive/ProgressiveRadiosity.h"
 
+#include "Radiosity/Common/DirectLighting.h"
 #include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Common/Stopwatch.h"
 #include "Radiosity/Common/ThreadLimit.h"
@@ -551,6 +552,101 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
   total += shot;
 }
 
+double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
+{
+  if (this->SourceScene.Lighting.Empty())
+  {
+    return 0.0;
+  }
+  ElementMesh& mesh = *this->Elements;
+  const DirectLighting lights(this->SourceScene, this->Settings.SkySamples);
+  const double threshold = this->Settings.SubdivisionThreshold;
+  std::vector<std::uint32_t> pending = mesh.Leaves();
+  std::vector<RGB> sampleLight;
+  std::vector<std::uint32_t> needed;
+  std::vector<ElementSamples> delta;
+  std::vector<unsigned char> split;
+  double received = 0.0;
+  while (!pending.empty())
+  {
+    // The corner samples are shared by the leaves meeting at a vertex: each is lit once.
+    ++this->Stamp;
+    needed.clear();
+    for (std::uint32_t e : pending)
+    {
+      for (std::uint32_t id : this->CornerSamples[e])
+      {
+        if (this->SampleStamp[id] != this->Stamp)
+        {
+          this->SampleStamp[id] = this->Stamp;
+          needed.push_back(id);
+        }
+      }
+    }
+    sampleLight.resize(this->Samples.size());
+    tbb::parallel_for(std::size_t(0), needed.size(), [&](std::size_t i)
+      {
+        const SharedSample& sample = this->Samples[needed[i]];
+        sampleLight[needed[i]] = lights.Irradiance(sample.Point, sample.Normal);
+      });
+    delta.assign(pending.size(), ElementSamples());
+    split.assign(pending.size(), 0);
+    tbb::parallel_for(std::size_t(0), pending.size(), [&](std::size_t i)
+      {
+        const std::uint32_t e = pending[i];
+        const Element& r = mesh[e];
+        for (int k = 0; k < 3; ++k)
+        {
+          delta[i].Corner[k] = sampleLight[this->CornerSamples[e][k]];
+        }
+        delta[i].Centre = lights.Irradiance(r.Centroid, r.Normal);
+        // The same gradient criterion as an element's shot (Shoot): a hard
+        // shadow edge across the element moves its centre off the corners' mean.
+        const ElementSamples& d = delta[i];
+        const double departure = std::fabs(Luminance(d.Centre) -
+          (Luminance(d.Corner[0]) + Luminance(d.Corner[1]) + Luminance(d.Corner[2])) / 3.0);
+        split[i] = r.Level < this->MaxLevel[r.Source] &&
+          departure > threshold * std::fabs(Luminance(d.Mean()));
+      });
+    std::vector<std::uint32_t> next;
+    for (std::size_t i = 0; i < pending.size(); ++i)
+    {
+      const std::uint32_t e = pending[i];
+      if (split[i])
+      {
+        if (mesh.Elements().size() + 4 > this->ElementCapacity)
+        {
+          CheckMemoryBudget(static_cast<double>(mesh.Elements().size() + 4) * BytesPerElement,
+            this->Budget,
+            "progressive radiosity: subdividing to " + std::to_string(mesh.Elements().size() + 4) +
+              " elements",
+            "lower MaxSubdivisionLevels or raise SubdivisionThreshold or --element-size");
+        }
+        const std::uint32_t first = mesh.Subdivide(e);
+        ++stats.Subdivisions;
+        for (std::uint32_t c = 0; c < 4; ++c)
+        {
+          this->RegisterCorners(first + c);
+          next.push_back(first + c);
+        }
+        continue;
+      }
+      Element& r = mesh[e];
+      const RGB rho = mesh.MaterialOf(e).Reflectance;
+      r.Irradiance += delta[i];
+      const RGB meanDelta = delta[i].Mean();
+      r.Unshot += rho * meanDelta;
+      this->Absorbed += Mean((RGB(1.0) - rho) * meanDelta) * r.Area;
+      received += Mean(meanDelta) * r.Area;
+    }
+    pending.swap(next);
+    this->SampleFactor.resize(this->Samples.size());
+    this->SampleStamp.resize(this->Samples.size(), 0);
+  }
+  stats.RaysCast += lights.RaysCast();
+  return received;
+}
+
 SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
@@ -573,6 +669,8 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       }
     }
     rhoMean /= std::max(area, 1e-300);
+    stats.LightPowerW = this->ShootLights(stats);
+    emitted += stats.LightPowerW;
     stats.EmittedPowerW = emitted;
     stats.Elements = mesh.NumberOfLeaves();
     if (!(emitted > 0.0))
@@ -672,7 +770,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       this->Shoot(sel.Best, nodeUnshot + overshoot, leaves, stats);
     }
     stats.Elements = mesh.NumberOfLeaves();
-    stats.RaysCast = this->Rays->RaysCast();
+    stats.RaysCast += this->Rays->RaysCast();
     stats.AbsorbedPowerW = this->Absorbed;
     stats.EscapedPowerW = this->Escaped;
     stats.SolveSeconds = start.Seconds();

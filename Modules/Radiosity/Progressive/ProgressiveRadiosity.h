@@ -42,6 +42,7 @@ struct ProgressiveOptions
   double FormFactorTolerance = 2e-3;
   int VisibilitySamples = 16;      ///< rays per receiver sample from emitters: 1, 4 or 16
   int IndirectVisibilitySamples = 1; ///< rays per receiver sample from reflectors
+  int SkySamples = 256; ///< sky quadrature directions per receiver sample (DirectLighting)
   /// Bytes the elements may use; 0: 75% of physical memory. Checked before
   /// the initial mesh is made and at every adaptive subdivision.
   double MemoryBudgetBytes = 0.0;
@@ -70,6 +71,11 @@ public:
 private:
   struct ShotResult;
   struct TransferScratch;
+  /// The lights and the sky shoot first, all in one shot (DirectLighting:
+  /// exact at every corner sample and centre, one shadow ray per light), the
+  /// receivers splitting along shadow edges by the gradient criterion.
+  /// Returns the power received by the surfaces.
+  double ShootLights(SolverStatistics& stats);
   /// One shot; `leaves` are the current leaves (the selection pass has them).
   void Shoot(std::uint32_t shooter, const RGB& shot, const std::vector<std::uint32_t>& leaves,
     SolverStatistics& stats);

@@ -1,0 +1,121 @@
+// A point light's hard shadow through hierarchical radiosity with
+// discontinuity meshing (SPEC "Lights and sky"; Hardt & Teller 4.1: the D0
+// boundaries, the projections of the blocker's silhouette from the light,
+// inserted into the leaves' triangulations): along a line across both
+// shadow edges the quadratic interpolants follow the exact step, where the
+// progressive method's elements blur it.
+#include "Radiosity/Common/SolutionMesh.h"
+#include "Radiosity/Common/ProbeEvaluator.h"
+#include "Radiosity/Hierarchical/DiscontinuityMesher.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+#include "Radiosity/Progressive/ProgressiveRadiosity.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+using namespace radiosity;
+
+namespace
+{
+constexpr double PlateZ = 0.5, PlateHalf = 0.4;
+const Vec3 LampAt(0.3, 0.1, 1.5);
+constexpr double Intensity = 10.0;
+
+/// A black floor [-2, 2]^2 of 4 x 4 quads (32 triangles: coarse input), a
+/// black two-sided square plate above it, a point light above the plate.
+Scene HardShadowScene()
+{
+  Scene scene;
+  Material black;
+  black.Reflectance = RGB(0.0);
+  AppendQuad(scene, Vec3(-2, -2, 0), Vec3(2, -2, 0), Vec3(2, 2, 0), Vec3(-2, 2, 0), black, 4, "floor");
+  const double h = PlateHalf;
+  AppendQuad(scene, Vec3(-h, -h, PlateZ), Vec3(h, -h, PlateZ), Vec3(h, h, PlateZ), Vec3(-h, h, PlateZ), black, 1,
+    "plate top");
+  AppendQuad(scene, Vec3(-h, -h, PlateZ), Vec3(-h, h, PlateZ), Vec3(h, h, PlateZ), Vec3(h, -h, PlateZ), black, 1,
+    "plate bottom");
+  Light lamp;
+  lamp.Type = LightType::Point;
+  lamp.Position = LampAt;
+  lamp.Intensity = RGB(Intensity);
+  scene.Lighting.Lights.push_back(lamp);
+  return scene;
+}
+
+/// Exact: I h / d^3 where the segment to the lamp misses the plate, else 0.
+double ExactIrradiance(const Vec3& x)
+{
+  const Vec3 crossing = x + (LampAt - x) * (PlateZ / LampAt.z);
+  if (std::fabs(crossing.x) <= PlateHalf && std::fabs(crossing.y) <= PlateHalf)
+  {
+    return 0.0;
+  }
+  const double d = glm::length(LampAt - x);
+  return Intensity * LampAt.z / (d * d * d);
+}
+
+/// Probes along y = 0 from x = -1.5 to 1.5; the shadow's edges on it are at
+/// x = 0.3 + 1.5 (+-0.4 - 0.3): -0.75 and 0.45. Probes within 1e-3 of an
+/// edge are left out (the value on the edge itself is either side's).
+std::vector<Probe> LineAcrossTheEdges()
+{
+  std::vector<Probe> probes;
+  for (int i = 0; i <= 600; ++i)
+  {
+    const double x = -1.5 + 3.0 * i / 600.0;
+    if (std::fabs(x + 0.75) < 1e-3 || std::fabs(x - 0.45) < 1e-3)
+    {
+      continue;
+    }
+    probes.push_back({ Vec3(x, 0.0, 0.0), Vec3(0, 0, 1) });
+  }
+  return probes;
+}
+
+double MaxErrorOverPeak(const std::vector<RGB>& values, const std::vector<Probe>& probes)
+{
+  double peak = 0.0, worst = 0.0;
+  for (const Probe& p : probes)
+  {
+    peak = std::max(peak, ExactIrradiance(p.Position));
+  }
+  for (std::size_t i = 0; i < probes.size(); ++i)
+  {
+    const double e = std::fabs(values[i].x - ExactIrradiance(probes[i].Position));
+    worst = std::max(worst, std::isfinite(e) ? e : std::numeric_limits<double>::infinity());
+  }
+  return worst / peak;
+}
+}
+
+TEST(HardShadow, DiscontinuityMeshFollowsThePointLightsStep)
+{
+  const Scene scene = HardShadowScene();
+  const std::vector<Probe> probes = LineAcrossTheEdges();
+
+  HierarchicalRadiosity hr(scene, HierarchicalOptions{});
+  const SolverStatistics stats = hr.Solve();
+  EXPECT_GT(stats.LightPowerW, 0.0);
+  EXPECT_GT(hr.NumberOfLightLinks(), 0u);
+  const DiscontinuityMesh dm = BuildDiscontinuityMesh(hr, DiscontinuityMeshOptions{});
+  const std::vector<RGB> values = EvaluateInterpolants(dm, probes, 1e-6 * scene.Diagonal());
+  const double dmError = MaxErrorOverPeak(values, probes);
+
+  ProgressiveRadiosity progressive(scene, ProgressiveOptions{});
+  progressive.Solve();
+  const SolutionMesh surface = ExtractSolution(progressive.Mesh());
+  const ProbeEvaluator evaluator(surface, scene);
+  const double progressiveError = MaxErrorOverPeak(evaluator.Evaluate(probes), probes);
+
+  std::cout << "hard shadow: discontinuity mesh " << dm.Triangles.size() << " triangles ("
+            << dm.LeavesMeshed << " leaves meshed, " << dm.SegmentsKept << " segments), max error "
+            << dmError << " of peak; progressive " << surface.Triangles.size()
+            << " elements, max error " << progressiveError << std::endl;
+  // Measured: see the commit. The bound of the issue: below 1% of the peak.
+  EXPECT_LT(dmError, 0.01);
+  // The progressive elements straddling the edges blur the step.
+  EXPECT_GT(progressiveError, 0.1);
+}
