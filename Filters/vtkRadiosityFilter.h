@@ -21,6 +21,14 @@
  * ("LeafClusters"); empty for Progressive. Downstream filters, mappers and
  * representations read it like any input.
  *
+ * Lights and sky (SPEC.md "Lights and sky"): besides emitting triangles the
+ * scene is lit by the vtkLights given (AddLight, SetLights, mapped with
+ * LightScale), by the lights of a LIGHTS.json file (LightsFileName), by
+ * radiosity::LightSet lights from C++ (SetSceneLights) and by a sky
+ * (SkyModel, SkyRadiance, SkyUp); a scene lit only by lights is lit, not
+ * empty. A bad light fails the request with an error naming the light's
+ * index and field (and the file).
+ *
  * Bad input gives an error naming the array, cell or point and an empty
  * output (GetLastError() keeps the message). Progress events during the solve;
  * AbortExecute stops it (VTK then empties the output; the solution so far
@@ -36,6 +44,8 @@
 #include "Radiosity/Common/Scene.h"       // for radiosity::SceneCleanupReport
 #include "Radiosity/Common/SolverTypes.h" // for radiosity::SolverStatistics
 
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
 #include <memory> // for std::unique_ptr, std::shared_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -49,6 +59,9 @@ class MeshlessRadiosity;
 class FaceClusterRadiosity;
 class RadiositySolver;
 }
+
+class vtkLight;
+class vtkLightCollection;
 
 class RADIOSITYFILTERS_EXPORT vtkRadiosityFilter : public vtkPolyDataAlgorithm
 {
@@ -162,6 +175,108 @@ public:
   vtkSetClampMacro(IndirectVisibilitySamples, int, 1, 16);
   vtkGetMacro(IndirectVisibilitySamples, int);
   ///@}
+
+  /// The sky models of SPEC.md "Lights and sky".
+  enum SkyModels
+  {
+    SkyNone = 0,
+    SkyUniform = 1,
+    SkyCieOvercast = 2
+  };
+
+  ///@{
+  /**
+   * vtkLights that light the scene (SPEC.md: "A vtkLight maps to a SPEC
+   * light", vtkRadiositySceneConverter::ToLight). The filter keeps its own
+   * list; the lights themselves are shared, so a change to one of them
+   * (its MTime) solves again. SetLights replaces the list with the lights of
+   * `lights` (null: none). Lights switched off (GetSwitch) are skipped;
+   * they still count in the index an error message names
+   * ("vtkLights (AddLight, SetLights): light 2 (spot): field 'direction' ...").
+   */
+  void AddLight(vtkLight* light);
+  void SetLights(vtkLightCollection* lights);
+  void RemoveAllLights();
+  vtkLightCollection* GetLights();
+  ///@}
+
+  ///@{
+  /**
+   * Watts per unit of a vtkLight's Intensity x DiffuseColor: W/sr for a
+   * point or spot light, W/m^2 for a directional one. Default pi, so that a
+   * directional light of Intensity 1 on a white Lambertian surface facing it
+   * looks as bright as VTK's OpenGL shading shows it:
+   *
+   * - VTK (vtkOpenGLPolyDataMapper, a white vtkProperty: Diffuse 1,
+   *   DiffuseColor 1, no ambient): the fragment colour is
+   *   Intensity x DiffuseColor x Diffuse x cos(theta) = 1 at normal incidence.
+   * - This project's per-pixel mappers (vtkRadiosityCellTexelMapper,
+   *   vtkQuadraticInterpolantMapper, vtkVectorIrradianceMapper,
+   *   vtkShepardSplatMapper; vtkRadiosityView) write the radiance
+   *   L = B / pi x Exposure (Exposure 1 by default), encoded as L^(1/Gamma)
+   *   for vtkToneMappingPass. A white Lambertian surface (reflectance 1)
+   *   under irradiance E has B = E, so L = E / pi; with E = LightScale x
+   *   Intensity at normal incidence, L = 1 needs LightScale = pi. L = 1 is
+   *   also the one value that 1^(1/Gamma) and the tone mapping pass's
+   *   decoding leave unchanged, so the two agree whatever Gamma.
+   *
+   * Away from normal incidence VTK's colour is cos(theta) unencoded while the
+   * mappers encode L = cos(theta) with 1/Gamma (physically displayed), so
+   * only the peak matches. Display white is clamped to the scene's maximum
+   * reflectance (0.95 by default, SPEC "Scenes"), 5% darker than reflectance
+   * 1. A positional vtkLight is a SPEC point or spot light: inverse-square,
+   * so at 1 m it matches VTK (whose default AttenuationValues (1, 0, 0) do
+   * not fall off). LightScale applies to vtkLights only: the lights of
+   * LightsFileName and SetSceneLights are already in SI units.
+   */
+  vtkSetClampMacro(LightScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(LightScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * A sky (SPEC.md "Lights and sky"): none (default), uniform radiance
+   * SkyRadiance, or the CIE standard overcast sky of zenith radiance
+   * SkyRadiance (L = L_z (1 + 2 cos theta) / 3), W/(m^2 sr) per channel,
+   * above the horizon of SkyUp (default (0, 0, 1)). SkyRadiance defaults to
+   * (1, 1, 1). Refused when LightsFileName or SetSceneLights has a sky too
+   * (a scene has at most one).
+   */
+  vtkSetClampMacro(SkyModel, int, SkyNone, SkyCieOvercast);
+  vtkGetMacro(SkyModel, int);
+  void SetSkyModelToNone() { this->SetSkyModel(SkyNone); }
+  void SetSkyModelToUniform() { this->SetSkyModel(SkyUniform); }
+  void SetSkyModelToCieOvercast() { this->SetSkyModel(SkyCieOvercast); }
+  static const char* GetSkyModelName(int model);
+  vtkSetVector3Macro(SkyRadiance, double);
+  vtkGetVector3Macro(SkyRadiance, double);
+  vtkSetVector3Macro(SkyUp, double);
+  vtkGetVector3Macro(SkyUp, double);
+  ///@}
+
+  ///@{
+  /**
+   * A LIGHTS.json file (SPEC.md "Lights and sky"), read at every request;
+   * null or empty: none. A file that cannot be read or a bad light fails the
+   * request with the message naming the file, the light's index and field.
+   */
+  vtkSetFilePathMacro(LightsFileName);
+  vtkGetFilePathMacro(LightsFileName);
+  ///@}
+
+  /**
+   * Lights in the core's form (the command line's --lights), added to the
+   * others; validated at the request (an error names "scene light" i).
+   */
+  void SetSceneLights(const radiosity::LightSet& lights);
+  const radiosity::LightSet& GetSceneLights() const { return *this->SceneLights; }
+
+  /// The lights of the last request as the solver had them (file, scene
+  /// lights, vtkLights in that order, then the sky); empty before one.
+  const radiosity::LightSet& GetLastLighting() const { return this->LastScene->Lighting; }
+
+  /// The MTime of the lights too.
+  vtkMTimeType GetMTime() override;
 
   /// Why the last execution failed ("" when it did not).
   const std::string& GetLastError() const { return this->LastError; }
@@ -363,6 +478,11 @@ protected:
   int MaxDiscontinuitiesPerLeaf = 10;
   double MinDiscontinuityWeight = 0.05;
   bool ConformingBoundaries = true;
+  double LightScale = 3.14159265358979323846;
+  int SkyModel = SkyNone;
+  double SkyRadiance[3] = { 1.0, 1.0, 1.0 };
+  double SkyUp[3] = { 0.0, 0.0, 1.0 };
+  char* LightsFileName = nullptr;
 
 private:
   vtkRadiosityFilter(const vtkRadiosityFilter&) = delete;
@@ -381,6 +501,9 @@ private:
   template <typename Options>
   void FillErrorReference(Options& options) const;
   void Warn(const std::string& warning);
+  /// Every light of the request: the file's, the scene lights, the
+  /// vtkLights, the sky; validated (a SceneError names the light and field).
+  radiosity::LightSet GatherLights() const;
 
   std::string LastError;
   std::vector<std::string> Warnings;
@@ -394,6 +517,8 @@ private:
   radiosity::ProgressCallback StatusCallback;
   std::vector<radiosity::Probe> ErrorProbes;
   std::vector<radiosity::RGB> ErrorReference;
+  vtkSmartPointer<vtkLightCollection> Lights;
+  std::unique_ptr<radiosity::LightSet> SceneLights;
 };
 
 #endif

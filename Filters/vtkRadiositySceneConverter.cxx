@@ -12,6 +12,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
+#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -234,6 +235,36 @@ bool AppendDataSet(vtkDataSet* ds, const std::string& name, radiosity::Scene& sc
 void vtkRadiositySceneConverter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+radiosity::Light vtkRadiositySceneConverter::ToLight(vtkLight* vtk, double lightScale)
+{
+  radiosity::Light light;
+  double position[3], focal[3], colour[3];
+  vtk->GetTransformedPosition(position);
+  vtk->GetTransformedFocalPoint(focal);
+  vtk->GetDiffuseColor(colour);
+  const radiosity::Vec3 from(position[0], position[1], position[2]);
+  const radiosity::Vec3 to(focal[0], focal[1], focal[2]);
+  const double watts = lightScale * vtk->GetIntensity();
+  light.Intensity = radiosity::RGB(watts * colour[0], watts * colour[1], watts * colour[2]);
+  light.Position = from;
+  light.Direction = to - from;
+  if (!vtk->GetPositional())
+  {
+    light.Type = radiosity::LightType::Directional;
+  }
+  else if (vtk->GetConeAngle() < 90.0)
+  {
+    light.Type = radiosity::LightType::Spot;
+    light.InnerConeAngle = 0.0;
+    light.OuterConeAngle = vtk->GetConeAngle() * radiosity::Pi / 180.0;
+  }
+  else
+  {
+    light.Type = radiosity::LightType::Point;
+  }
+  return light;
 }
 
 bool vtkRadiositySceneConverter::ToScene(vtkDataObject* input, radiosity::Scene& scene,

@@ -26,6 +26,7 @@
 
 class vtkDataObject;
 class vtkDataArray;
+class vtkLight;
 class vtkDoubleArray;
 class vtkPolyData;
 
@@ -44,6 +45,25 @@ public:
    */
   static bool ToScene(vtkDataObject* input, radiosity::Scene& scene, std::string& error,
     std::vector<std::string>& warnings);
+
+  /**
+   * A vtkLight as a SPEC light (SPEC.md "Scenes from VTK's scene graph"):
+   * positional with ConeAngle < 90 degrees a spot, positional otherwise a
+   * point, non-positional a directional light travelling along
+   * FocalPoint - Position. Positions are the world ones
+   * (GetTransformedPosition, GetTransformedFocalPoint). The intensity is
+   * `lightScale` x Intensity x DiffuseColor per channel (W/sr for point and
+   * spot, W/m^2 for directional; vtkRadiosityFilter::LightScale documents
+   * the default). Spot cones: VTK's ConeAngle is the half angle of its hard
+   * cone, so outerConeAngle = ConeAngle in radians; innerConeAngle is 0,
+   * glTF's default, whatever the Exponent: VTK's cos^Exponent falloff has
+   * no inner cone of full intensity, and glTF's ramp from the axis to the
+   * outer cone is the nearest of glTF's shapes to it (Exponent 1). VTK's
+   * AttenuationValues are not used: a SPEC point light falls off with the
+   * inverse square, physically. Not validated here (see
+   * radiosity::ValidateLights): a zero direction or a NaN is kept as it is.
+   */
+  static radiosity::Light ToLight(vtkLight* light, double lightScale);
 
   /// The scene as polydata with its material cell arrays, `ObjectId` and the
   /// field data string array `ObjectNames`.
