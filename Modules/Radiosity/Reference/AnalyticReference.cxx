@@ -2,6 +2,7 @@
 
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/SceneAnalysis.h"
+#include "Radiosity/Reference/AnalyticLights.h"
 
 #include <algorithm>
 #include <cmath>
@@ -133,6 +134,64 @@ double PolygonArea(const std::vector<Vec3>& poly)
   }
   return 0.5 * glm::length(a);
 }
+
+/// The triangles flagged in `occluders` that do not emit must form one convex
+/// planar polygon of at most 5 vertices (both faces allowed), parallel to
+/// every emitter: its vertices in `blocker` (empty when none is flagged).
+bool FindConvexBlocker(const Scene& scene, const std::vector<unsigned char>& occluders,
+  std::vector<Vec3>& blocker, std::string& why)
+{
+  const double diag = scene.Diagonal();
+  std::vector<Vec3> blockerPoints;
+  Vec3 blockerNormal(0.0);
+  double blockerArea = 0.0;
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    if (!occluders[t] || MaxComponent(scene.Materials[t].Emission) > 0)
+    {
+      continue;
+    }
+    const Vec3 n = scene.Normal(t);
+    if (blockerPoints.empty())
+    {
+      blockerNormal = n;
+    }
+    if (std::fabs(std::fabs(glm::dot(n, blockerNormal)) - 1.0) > 1e-9 ||
+      std::fabs(glm::dot(scene.Vertex(t, 0) - (blockerPoints.empty() ? scene.Vertex(t, 0) : blockerPoints[0]), blockerNormal)) > 1e-9 * diag)
+    {
+      why = "no closed form: the occluders are not one planar blocker";
+      return false;
+    }
+    if (glm::dot(n, blockerNormal) > 0)
+    {
+      blockerArea += scene.Area(t); // one side only (a two-sided blocker repeats it)
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      blockerPoints.push_back(scene.Vertex(t, k));
+    }
+  }
+  blocker.clear();
+  if (!blockerPoints.empty())
+  {
+    blocker = PlanarHull(blockerPoints, blockerNormal);
+    if (std::fabs(PolygonArea(blocker) - blockerArea) > 1e-9 * blockerArea || blocker.size() > 5)
+    {
+      why = "no closed form: the blocker is not a convex polygon of at most 5 vertices";
+      return false;
+    }
+    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+    {
+      if (MaxComponent(scene.Materials[t].Emission) > 0 &&
+        std::fabs(std::fabs(glm::dot(scene.Normal(t), blockerNormal)) - 1.0) > 1e-9)
+      {
+        why = "no closed form: the blocker is not parallel to every emitter";
+        return false;
+      }
+    }
+  }
+  return true;
+}
 }
 
 RGB DirectIrradiance(
@@ -185,6 +244,167 @@ RGB DirectIrradiance(
   return h;
 }
 
+namespace
+{
+/// The scenes with lights that have a closed form (AnalyticLights.h).
+bool AnalyticLightsReference(const Scene& scene, const std::vector<Probe>& probes,
+  const std::vector<std::uint32_t>& weld, AnalyticReference& reference, std::string& why)
+{
+  namespace al = analyticlights;
+  const LightSet& lights = scene.Lighting;
+  const double diag = scene.Diagonal();
+  const double tol = 1e-9 * diag;
+  bool uniformReflectance = true, black = true;
+  for (const Material& m : scene.Materials)
+  {
+    uniformReflectance = uniformReflectance && SameColour(m.Reflectance, scene.Materials[0].Reflectance);
+    black = black && MaxComponent(m.Reflectance) == 0.0;
+  }
+  const RGB rho = scene.Materials[0].Reflectance;
+
+  // Lights inside a closed sphere of uniform reflectance: the reflected
+  // light is uniform, rho P / ((1 - rho) A) (+ mean(E) / (1 - rho)).
+  if (uniformReflectance && Watertight(scene, weld))
+  {
+    Vec3 centre(0.0);
+    for (const Vec3& p : scene.Points)
+    {
+      centre += p;
+    }
+    centre /= static_cast<double>(scene.Points.size());
+    double rMin = 1e300, rMax = 0.0;
+    for (const Vec3& p : scene.Points)
+    {
+      rMin = std::min(rMin, glm::length(p - centre));
+      rMax = std::max(rMax, glm::length(p - centre));
+    }
+    if (rMax - rMin <= 1e-6 * rMax)
+    {
+      std::vector<Light> inside;
+      for (std::size_t l = 0; l < lights.Lights.size(); ++l)
+      {
+        const Light& light = lights.Lights[l];
+        if (light.Type == LightType::Directional)
+        {
+          continue; // no sunlight gets into a closed sphere (nor any sky)
+        }
+        for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+        {
+          if (!(glm::dot(light.Position - scene.Vertex(t, 0), scene.Normal(t)) > tol))
+          {
+            why = "no closed form: light " + std::to_string(l) + " is not inside the closed sphere";
+            return false;
+          }
+        }
+        inside.push_back(light);
+      }
+      RGB meanEmission(0.0);
+      double area = 0.0;
+      for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+      {
+        meanEmission += scene.Materials[t].Emission * scene.Area(t);
+        area += scene.Area(t);
+      }
+      meanEmission /= area;
+      reference.Kind = "sphere interior with lights";
+      for (const Probe& probe : probes)
+      {
+        reference.Irradiance.push_back(
+          al::LightsInSphere(inside, rho, area, probe.Position, glm::normalize(probe.Normal)) +
+          meanEmission / (RGB(1.0) - rho));
+      }
+      return true;
+    }
+  }
+
+  // Otherwise nothing may reflect light onto anything: every surface black,
+  // or one plane (which never sees itself).
+  bool onePlane = true;
+  const Vec3 n0 = scene.Normal(0), p0 = scene.Vertex(0, 0);
+  for (std::size_t t = 0; t < scene.Triangles.size() && onePlane; ++t)
+  {
+    onePlane = glm::dot(scene.Normal(t), n0) > 1.0 - 1e-9;
+    for (int k = 0; k < 3 && onePlane; ++k)
+    {
+      onePlane = std::fabs(glm::dot(scene.Vertex(t, k) - p0, n0)) <= tol;
+    }
+  }
+  if (!black && !onePlane)
+  {
+    why = "no closed form: surfaces reflect the lights onto each other (the scene is not black, "
+          "not one plane and not a closed sphere)";
+    return false;
+  }
+  // What can hide a light from a probe: a triangle with a scene point, a
+  // probe or a point light behind its plane, a sun shining from behind it, or
+  // a sky it can stand in front of (a plane not facing up).
+  const SceneAnalysis analysis = AnalyzeScene(scene);
+  std::vector<unsigned char> occluders = analysis.CanOcclude;
+  const Vec3 up = lights.SkyLight.Enabled() ? glm::normalize(lights.SkyLight.Up) : Vec3(0.0);
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    const Vec3 n = scene.Normal(t), o = scene.Vertex(t, 0);
+    bool can = occluders[t] != 0;
+    for (std::size_t i = 0; i < probes.size() && !can; ++i)
+    {
+      can = glm::dot(probes[i].Position - o, n) < -tol;
+    }
+    for (const Light& light : lights.Lights)
+    {
+      can = can ||
+        (light.Type == LightType::Directional ? glm::dot(light.Direction, n) > 1e-12
+                                              : glm::dot(light.Position - o, n) < -tol);
+    }
+    can = can || (lights.SkyLight.Enabled() && glm::dot(n, up) < 1.0 - 1e-12);
+    occluders[t] = can ? 1 : 0;
+  }
+  std::vector<Vec3> blocker;
+  if (!FindConvexBlocker(scene, occluders, blocker, why))
+  {
+    return false;
+  }
+  Vec3 lo, hi;
+  scene.BoundingBox(lo, hi);
+  const Vec3 centre = 0.5 * (lo + hi);
+  for (const Probe& probe : probes)
+  {
+    const Vec3 p = probe.Position, n = glm::normalize(probe.Normal);
+    RGB h = DirectIrradiance(scene, p, n, blocker);
+    for (const Light& light : lights.Lights)
+    {
+      const Vec3 target = light.Type == LightType::Directional
+        ? p - 2.0 * (diag + glm::length(p - centre)) * glm::normalize(light.Direction)
+        : light.Position;
+      if (!al::SegmentCrossesConvexPolygon(p, target, blocker, tol))
+      {
+        h += al::PunctualIrradiance(light, p, n);
+      }
+    }
+    if (lights.SkyLight.Enabled())
+    {
+      if (lights.SkyLight.Model == SkyModel::Uniform)
+      {
+        h += al::UniformSkyIrradiance(lights.SkyLight, p, n, blocker);
+      }
+      else if (blocker.empty() && glm::dot(n, up) > 1.0 - 1e-12)
+      {
+        h += al::CieOvercastHorizontal(lights.SkyLight);
+      }
+      else
+      {
+        why = "no closed form: a CIE overcast sky partly hidden, or a probe not facing up";
+        reference.Irradiance.clear();
+        return false;
+      }
+    }
+    reference.Irradiance.push_back(h);
+  }
+  reference.Kind = std::string("direct light of lights") +
+    (lights.SkyLight.Enabled() ? " and sky" : "") + (blocker.empty() ? "" : " with convex blocker");
+  return true;
+}
+}
+
 bool ComputeAnalyticReference(const Scene& scene, const std::vector<Probe>& probes,
   AnalyticReference& reference, std::string& why)
 {
@@ -196,6 +416,10 @@ bool ComputeAnalyticReference(const Scene& scene, const std::vector<Probe>& prob
   }
   const double diag = scene.Diagonal();
   const std::vector<std::uint32_t> weld = WeldVertices(scene, 1e-9 * diag);
+  if (!scene.Lighting.Empty())
+  {
+    return AnalyticLightsReference(scene, probes, weld, reference, why);
+  }
   bool uniformReflectance = true, uniformEmission = true, black = true;
   for (const Material& m : scene.Materials)
   {
@@ -248,53 +472,10 @@ bool ComputeAnalyticReference(const Scene& scene, const std::vector<Probe>& prob
   // Direct light only: the occluders that are not emitters must form one
   // convex planar blocker parallel to every emitter.
   const SceneAnalysis analysis = AnalyzeScene(scene);
-  std::vector<Vec3> blockerPoints;
-  Vec3 blockerNormal(0.0);
-  double blockerArea = 0.0;
-  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-  {
-    if (!analysis.CanOcclude[t] || MaxComponent(scene.Materials[t].Emission) > 0)
-    {
-      continue;
-    }
-    const Vec3 n = scene.Normal(t);
-    if (blockerPoints.empty())
-    {
-      blockerNormal = n;
-    }
-    if (std::fabs(std::fabs(glm::dot(n, blockerNormal)) - 1.0) > 1e-9 ||
-      std::fabs(glm::dot(scene.Vertex(t, 0) - (blockerPoints.empty() ? scene.Vertex(t, 0) : blockerPoints[0]), blockerNormal)) > 1e-9 * diag)
-    {
-      why = "no closed form: the occluders are not one planar blocker";
-      return false;
-    }
-    if (glm::dot(n, blockerNormal) > 0)
-    {
-      blockerArea += scene.Area(t); // one side only (a two-sided blocker repeats it)
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      blockerPoints.push_back(scene.Vertex(t, k));
-    }
-  }
   std::vector<Vec3> blocker;
-  if (!blockerPoints.empty())
+  if (!FindConvexBlocker(scene, analysis.CanOcclude, blocker, why))
   {
-    blocker = PlanarHull(blockerPoints, blockerNormal);
-    if (std::fabs(PolygonArea(blocker) - blockerArea) > 1e-9 * blockerArea || blocker.size() > 5)
-    {
-      why = "no closed form: the blocker is not a convex polygon of at most 5 vertices";
-      return false;
-    }
-    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-    {
-      if (MaxComponent(scene.Materials[t].Emission) > 0 &&
-        std::fabs(std::fabs(glm::dot(scene.Normal(t), blockerNormal)) - 1.0) > 1e-9)
-      {
-        why = "no closed form: the blocker is not parallel to every emitter";
-        return false;
-      }
-    }
+    return false;
   }
   reference.Kind = blocker.empty() ? "direct" : "direct with convex blocker";
   for (const Probe& probe : probes)

@@ -11,6 +11,16 @@
 // - "sphere interior": a watertight sphere of uniform reflectance: every area
 //   element sees every other alike (F = dA / (4 pi R^2)), so irradiance is the
 //   area-mean radiosity, mean(E) / (1 - rho), for any distribution of emission.
+// Scenes with lights (scene.Lighting, SPEC "Lights and sky"; AnalyticLights.h
+// has the formulas, Scenes/LightScenes.h the scenes):
+// - "sphere interior with lights": point and spot lights inside such a
+//   sphere: H = E0(x) + rho P / ((1 - rho) A) (+ mean(E) / (1 - rho));
+// - "direct light of lights[ and sky][ with convex blocker]": every surface
+//   black, or one plane: the punctual lights' closed forms, each hidden or
+//   not by at most one convex planar blocker (an exact segment test: hard
+//   shadows), a uniform sky less the part of it the blocker hides (Lambert's
+//   contour formula), an unobstructed CIE overcast sky on probes facing up
+//   (7/9 pi L_z); emitters as above.
 #ifndef Radiosity_AnalyticReference_h
 #define Radiosity_AnalyticReference_h
 

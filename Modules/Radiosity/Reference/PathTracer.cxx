@@ -21,11 +21,24 @@
 // cos cos / r^2 is singular where the receiver touches the emitter); cosine
 // sampling is bounded there, and the power heuristic keeps the better of the
 // two in each region.
-// Back faces are black and opaque: a ray that hits one ends the walk.
+// Punctual lights (SPEC "Lights and sky": point, spot, directional) are
+// delta lights: no direction sampling can find them, so they are estimated by
+// next-event estimation alone (no MIS), at every vertex: one shadow ray per
+// light towards its position (or far towards a directional light), the
+// closed-form unshadowed irradiance (Lights.h UnshadowedIrradiance) times the
+// vertex's f = albedo / pi. At the probe (f = 1/pi, albedo pi) this is the
+// light's exact direct irradiance. Every strategy (PathSampling) does it.
+// The sky has no area to sample: a path direction that leaves the scene (no
+// hit, the probe's first direction included) picks up SkyRadiance(sky, w)
+// times the throughput; cosine sampling makes an unobstructed uniform sky
+// exact for every sample (pi L at the probe). Every strategy counts it.
+// Back faces are black and opaque: a ray that hits one ends the walk (and
+// hides the sky).
 // Russian roulette (Arvo & Kirk 1990) from depth RouletteStart on, with
 // survival probability min(0.95, max component of the throughput / pi).
 #include "Radiosity/Reference/PathTracer.h"
 
+#include "Radiosity/Common/Lights.h"
 #include "Radiosity/Common/Visibility.h"
 
 #include <tbb/parallel_for.h>
@@ -134,6 +147,20 @@ struct PathTracer::Internals
   std::vector<unsigned> Emitters;     ///< emitter triangles
   std::vector<double> EmitterCdf;     ///< cumulative selection probability, last = 1
   std::vector<double> AreaDensity;    ///< per triangle: density of emitter samples per m^2
+  std::vector<Light> Punctual;        ///< the scene's point, spot and directional lights
+  Sky SkyLight;                       ///< the scene's sky (Model None: none)
+  bool HasSky = false;
+  Vec3 Centre{ 0.0 };                 ///< of the scene's bounding box
+  double Extent = 1.0;                ///< the bounding box's diagonal
+
+  /// Beyond this distance from x a shadow ray has left the scene (as DirectLighting).
+  double FarDistance(const Vec3& x) const
+  {
+    return 2.0 * (this->Extent + glm::length(x - this->Centre));
+  }
+  /// The punctual lights' direct irradiance at x (normal n), each with one
+  /// shadow ray from `origin` (x offset along n).
+  RGB PunctualLight(const Vec3& x, const Vec3& n, const Vec3& origin) const;
 
   RGB Path(const Scene& scene, const PathTracerOptions& options, const Sensor& sensor,
     Pcg32& rng) const;
@@ -194,6 +221,45 @@ PathTracer::PathTracer(const Scene& scene, const PathTracerOptions& options)
   {
     this->Impl->EmitterCdf.back() = 1.0;
   }
+  // Lights: only those that can give light (a zero intensity is none).
+  for (const Light& light : scene.Lighting.Lights)
+  {
+    if (MaxComponent(light.Intensity) > 0.0)
+    {
+      this->Impl->Punctual.push_back(light);
+    }
+  }
+  this->Impl->SkyLight = scene.Lighting.SkyLight;
+  this->Impl->HasSky = scene.Lighting.SkyLight.Enabled();
+  if (nt > 0)
+  {
+    Vec3 lo, hi;
+    scene.BoundingBox(lo, hi);
+    this->Impl->Centre = 0.5 * (lo + hi);
+    this->Impl->Extent = std::max(glm::length(hi - lo), 1e-300);
+  }
+}
+
+RGB PathTracer::Internals::PunctualLight(const Vec3& x, const Vec3& n, const Vec3& origin) const
+{
+  RGB sum(0.0);
+  const double far = this->FarDistance(x);
+  for (const Light& light : this->Punctual)
+  {
+    const RGB h = UnshadowedIrradiance(light, x, n);
+    if (!(MaxComponent(h) > 0.0))
+    {
+      continue;
+    }
+    const Vec3 target = ShadowRayTarget(light, x, far);
+    unsigned char visible = 0;
+    this->Rays->TestSegments(&origin, &target, 1, &visible);
+    if (visible)
+    {
+      sum += h;
+    }
+  }
+  return sum;
 }
 
 PathTracer::~PathTracer() = default;
@@ -256,6 +322,11 @@ RGB PathTracer::Internals::Path(const Scene& scene, const PathTracerOptions& opt
         }
       }
     }
+    // Punctual lights: next-event estimation only (delta lights), f = albedo / pi.
+    if (!this->Punctual.empty())
+    {
+      sum += beta * (albedo / Pi) * this->PunctualLight(x, n, origin);
+    }
 
     // Cosine-weighted direction: continues the walk and finds emitters by hitting them.
     const double u1 = rng.Uniform();
@@ -271,7 +342,11 @@ RGB PathTracer::Internals::Path(const Scene& scene, const PathTracerOptions& opt
     unsigned hit;
     if (!this->Rays->Intersect(origin, w, dist, hit, bu, bv))
     {
-      break; // background: black
+      if (this->HasSky)
+      {
+        sum += beta * SkyRadiance(this->SkyLight, w); // f cos L / p = beta L
+      }
+      break; // the path leaves the scene: the sky, or black
     }
     const Vec3& nh = this->Normals[hit];
     const double cosY = -glm::dot(nh, w);

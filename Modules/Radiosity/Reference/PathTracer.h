@@ -8,6 +8,12 @@
 // rho^(MaxBounces+1) in a closed scene of reflectance rho, 1e-3 for rho = 0.9
 // and the default 64); every value comes with its standard error.
 //
+// Lights (SPEC "Lights and sky", scene.Lighting): every punctual light
+// (point, spot, directional) by next-event estimation at every vertex, one
+// shadow ray each (delta lights: no MIS); the sky on every path direction
+// that leaves the scene (SkyRadiance of that direction). Lights and sky are
+// not seen by the camera (Render's background stays black).
+//
 // Determinism: each probe (or pixel) is split into fixed chunks of samples,
 // each chunk seeded from (Seed, index, chunk) by splitmix64 and drawing from
 // its own PCG32 stream; chunk sums are combined in a fixed order. The result
@@ -34,6 +40,8 @@ enum class PathSampling
   MultipleImportance, ///< emitter sampling + cosine sampling, power heuristic
   EmitterOnly,        ///< next-event estimation only (unbounded variance at contacts)
   CosineOnly          ///< cosine-weighted hemisphere sampling only (emission found by hits)
+  // Punctual lights (NEE only) and the sky (found by escaping paths) are
+  // estimated the same way under every strategy.
 };
 
 struct PathTracerOptions

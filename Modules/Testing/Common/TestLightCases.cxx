@@ -1,0 +1,104 @@
+// Every method through the one core interface (Common/RadiositySolver.h) on
+// every analytic light case (Scenes/LightScenes.h: point, spot and sun over
+// planes, a point light in a sphere, skies over a plane and beside a wall),
+// the probes evaluated from the method's surface (ProbeEvaluator, as the
+// CLI's --probe-output does for the surface), the error the project's metric
+// (ErrorMetrics.h: |value - exact| / peak exact over every probe) against
+// ComputeAnalyticReference (checked against hand-derived forms in
+// Reference/TestAnalyticLights.cxx and by the path tracer in
+// Reference/TestPathTracerLights.cxx). Bounds: 2% of the peak for every
+// case; 1e-4 of the peak where the answer is the punctual lights' direct
+// light alone (LightCase::DirectPunctual: the methods take it from
+// DirectLighting, exact up to its interpolation on their surface).
+#include "Radiosity/Common/ErrorMetrics.h"
+#include "Radiosity/Common/ProbeEvaluator.h"
+#include "Radiosity/Common/RadiositySolver.h"
+#include "Radiosity/FaceCluster/FaceClusterMethod.h"
+#include "Radiosity/Hierarchical/HierarchicalMethod.h"
+#include "Radiosity/Meshless/MeshlessMethod.h"
+#include "Radiosity/Progressive/ProgressiveMethod.h"
+#include "Radiosity/Reference/AnalyticReference.h"
+#include "Radiosity/Scenes/LightScenes.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace
+{
+using namespace radiosity;
+
+using MakeMethod = std::function<std::unique_ptr<RadiositySolver>(std::shared_ptr<const Scene>)>;
+
+constexpr double AllCasesBound = 0.02;
+constexpr double DirectPunctualBound = 1e-4;
+
+/// Solves every light case with `make`'s method; checks and prints the errors.
+void CheckEveryCase(const char* method, const MakeMethod& make)
+{
+  for (const LightCase& c : AnalyticLightCases(1.0))
+  {
+    AnalyticReference exact;
+    std::string why;
+    ASSERT_TRUE(ComputeAnalyticReference(c.Geometry, c.Probes, exact, why)) << c.Name << ": " << why;
+    auto scene = std::make_shared<const Scene>(c.Geometry);
+    std::unique_ptr<RadiositySolver> solver = make(scene);
+    const SolverStatistics stats = solver->Solve({});
+    EXPECT_NE(stats.Stop, StopReason::Aborted) << method << ", " << c.Name;
+    const SolutionMesh surface = solver->Surface();
+    const ProbeEvaluator evaluator(surface, *scene);
+    const std::vector<RGB> values = evaluator.Evaluate(c.Probes);
+    const ErrorFigures e = RelativeErrors(values, exact.Irradiance);
+    const double bound = c.DirectPunctual ? DirectPunctualBound : AllCasesBound;
+    std::cout << "  " << method << ", " << c.Name << ": max " << e.Max << " RMS " << e.Rms
+              << " of the peak " << e.Peak << " (bound " << bound << "; "
+              << surface.Triangles.size() << " elements, " << evaluator.GatheredCount()
+              << " probes gathered)\n";
+    EXPECT_EQ(e.NotFinite, 0u) << method << ", " << c.Name;
+    EXPECT_LT(e.Max, bound) << method << ", " << c.Name;
+  }
+}
+}
+
+TEST(LightCases, Progressive)
+{
+  CheckEveryCase("progressive",
+    [](std::shared_ptr<const Scene> scene)
+    {
+      ProgressiveOptions options;
+      options.Tolerance = 1e-4;
+      return std::make_unique<ProgressiveMethod>(scene, options);
+    });
+}
+
+TEST(LightCases, Hierarchical)
+{
+  CheckEveryCase("hierarchical",
+    [](std::shared_ptr<const Scene> scene)
+    {
+      HierarchicalOptions options;
+      options.Tolerance = 1e-4;
+      return std::make_unique<HierarchicalMethod>(scene, options, DiscontinuityMeshOptions());
+    });
+}
+
+TEST(LightCases, Meshless)
+{
+  CheckEveryCase("meshless",
+    [](std::shared_ptr<const Scene> scene)
+    {
+      MeshlessOptions options;
+      options.Placement.Levels = 3;
+      return std::make_unique<MeshlessMethod>(scene, options);
+    });
+}
+
+TEST(LightCases, FaceCluster)
+{
+  CheckEveryCase("facecluster",
+    [](std::shared_ptr<const Scene> scene)
+    { return std::make_unique<FaceClusterMethod>(scene, FaceClusterSettings()); });
+}
