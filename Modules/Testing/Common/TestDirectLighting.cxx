@@ -39,6 +39,7 @@ double WorstOfPeak(const LightCase& c, int skySamples)
   }
   const DirectLighting direct(c.Geometry, skySamples);
   double peak = 0.0, worst = 0.0;
+  std::size_t worstProbe = 0;
   for (const RGB& e : exact)
   {
     peak = std::max(peak, MaxComponent(e));
@@ -48,12 +49,20 @@ double WorstOfPeak(const LightCase& c, int skySamples)
     const RGB h = direct.Irradiance(c.Probes[i].Position, glm::normalize(c.Probes[i].Normal));
     for (int k = 0; k < 3; ++k)
     {
-      worst = std::max(worst, std::fabs(h[k] - exact[i][k]) / peak);
+      const double e = std::fabs(h[k] - exact[i][k]) / peak;
+      worstProbe = e > worst ? i : worstProbe;
+      worst = std::max(worst, e);
     }
     if (exact[i].r == 0.0)
     {
       EXPECT_EQ(h.r, 0.0) << c.Name << " probe " << i << ": an exact zero (shadow, outside the cone)";
     }
+  }
+  if (worst > 0.0)
+  {
+    const Vec3& x = c.Probes[worstProbe].Position;
+    std::cout << "  " << c.Name << ": worst at probe " << worstProbe << " (" << x.x << ", " << x.y
+              << ", " << x.z << ")\n";
   }
   return worst;
 }
@@ -86,7 +95,10 @@ TEST(DirectLighting, SkyWithinItsQuadrature)
   // (1 + 2 cos) / 3 and the wall's silhouette are not. Measured, of the peak:
   // 256 samples (the default): uniform 0, CIE 7.5e-4, wall 2.6e-2; 1024:
   // wall 1.8e-2; 4096: CIE 9.8e-5, wall 5.3e-3 (the CIE error falls as 1 / N,
-  // the wall's, from its edges cutting strata, more slowly and unevenly).
+  // the wall's, from its edges cutting strata, more slowly and unevenly; its
+  // worst probe is the one 0.3 from the wall at 256 and 1024 samples, where
+  // the wall's top edge crosses the strata near the zenith). At the default
+  // 256 the wall's 2.6% is above the 2% that LightCases.* asks of the methods.
   // Bounds 1.5 times these.
   struct Expected
   {

@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -45,6 +46,7 @@ void CheckEveryCase(const char* method, const MakeMethod& make)
     std::string why;
     ASSERT_TRUE(ComputeAnalyticReference(c.Geometry, c.Probes, exact, why)) << c.Name << ": " << why;
     auto scene = std::make_shared<const Scene>(c.Geometry);
+    const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<RadiositySolver> solver = make(scene);
     const SolverStatistics stats = solver->Solve({});
     EXPECT_NE(stats.Stop, StopReason::Aborted) << method << ", " << c.Name;
@@ -56,9 +58,20 @@ void CheckEveryCase(const char* method, const MakeMethod& make)
     std::cout << "  " << method << ", " << c.Name << ": max " << e.Max << " RMS " << e.Rms
               << " of the peak " << e.Peak << " (bound " << bound << "; "
               << surface.Triangles.size() << " elements, " << evaluator.GatheredCount()
-              << " probes gathered)\n";
+              << " probes gathered; "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+              << " s)\n";
     EXPECT_EQ(e.NotFinite, 0u) << method << ", " << c.Name;
     EXPECT_LT(e.Max, bound) << method << ", " << c.Name;
+    if (!(e.Max < bound))
+    {
+      for (std::size_t i = 0; i < values.size(); ++i)
+      {
+        const Vec3& x = c.Probes[i].Position;
+        std::cout << "    probe " << i << " (" << x.x << ", " << x.y << ", " << x.z << "): "
+                  << values[i].r << " exact " << exact.Irradiance[i].r << "\n";
+      }
+    }
   }
 }
 }
