@@ -266,9 +266,12 @@ std::vector<RGB> DirectLighting::ReceivedPower() const
 
 Vec3 DirectLighting::RayOrigin(const Vec3& x, const Vec3& n) const
 {
-  // Off the surface along its normal by Visibility's offset (relative to the
-  // scene's size): a grazing shadow ray then cannot hit its own triangle.
-  return x + this->Occluders->Offset() * n;
+  // Off the surface along its normal by a hundredth of Visibility's offset
+  // (1e-7 of the scene's size, a few float ulps): TestSegments also shortens
+  // the segment by the offset along the ray, which keeps it off its own
+  // triangle without moving the shadow; a full offset along the normal would
+  // move every hard shadow edge by about that much (1e-5 of the scene).
+  return x + 0.01 * this->Occluders->Offset() * n;
 }
 
 std::size_t DirectLighting::RaysCast() const

@@ -469,7 +469,23 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
             }
             found[i] += work[i].HardSegments.size();
           }
-          segments = work[i].HardSegments;
+          // A boundary along the leaf's own edge splits no triangle: it is kept
+          // for the per-side samples only, not as a constraint.
+          const double onEdge = 1e-6 * mesh.LongestEdge(leaf);
+          for (const auto& seg : work[i].HardSegments)
+          {
+            bool alongEdge = false;
+            for (int k = 0; k < 3 && !alongEdge; ++k)
+            {
+              bool inside = false;
+              alongEdge = EdgeDistance(seg[0], corners[k], corners[(k + 1) % 3], inside, 0.0) < onEdge &&
+                EdgeDistance(seg[1], corners[k], corners[(k + 1) % 3], inside, 0.0) < onEdge;
+            }
+            if (!alongEdge)
+            {
+              segments.push_back(seg);
+            }
+          }
           const auto events = LeafDiscontinuities(s, topology, leaf, options, minWeight, found[i]);
           segments.insert(segments.end(), events.begin(), events.end());
           kept[i] = segments.size();
@@ -566,8 +582,9 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       }
       // A hard shadow boundary is a jump of the irradiance (D0): a sample on
       // it belongs to each triangle beside it with that triangle's own limit,
-      // taken a little inside the triangle (a thousandth of the way to its
-      // centroid: far above the single-precision shadow rays' error).
+      // taken a little inside the triangle (a hundredth of the way to its
+      // centroid: far above the single-precision shadow rays' error, and
+      // 1% of the triangle's size changes a smooth field by next to nothing).
       const double onHard = 1e-6 * mesh.LongestEdge(leaves[i]);
       auto onHardSegment = [&](const Vec3& x) {
         for (const auto& seg : w.HardSegments)
@@ -582,7 +599,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       };
       auto sideSample = [&](const Vec3& x, const Vec3& triangleCentre) {
         const SampleRef ref{ false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
-        w.LocalPoints.push_back(x + 1e-3 * (triangleCentre - x));
+        w.LocalPoints.push_back(x + 1e-2 * (triangleCentre - x));
         return ref;
       };
       for (const auto& t : w.Mesh.Triangles)

@@ -154,14 +154,17 @@ void HardShadowEdges::Find(const Light& light, const TriangleCorners& receiver, 
         return light.Position + t * (x - light.Position);
       };
       const Vec3 A = project(a), B = project(bEnd);
-      // Clip the projected segment to the receiver triangle (three half-planes).
+      // Clip the projected segment to the receiver triangle (three half-planes),
+      // grown by a rounding margin: a shadow edge along the receiver's own
+      // edge (a blocker edge whose projection is a leaf's boundary) is kept.
       double t0 = 0.0, t1 = 1.0;
       for (int e = 0; e < 3 && t0 < t1; ++e)
       {
         const Vec3& ea = receiver[e];
         const Vec3& eb = receiver[(e + 1) % 3];
         const Vec3 inward = glm::cross(normal, eb - ea);
-        const double fa = glm::dot(A - ea, inward), fb = glm::dot(B - ea, inward);
+        const double margin = 1e-7 * size * glm::length(inward);
+        const double fa = glm::dot(A - ea, inward) + margin, fb = glm::dot(B - ea, inward) + margin;
         if (fa < 0 && fb < 0)
         {
           t0 = 1.0;

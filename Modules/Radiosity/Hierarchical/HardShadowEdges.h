@@ -35,7 +35,8 @@ public:
   /**
    * The shadow boundary segments that `light` casts onto the triangle
    * `receiver` (unit normal `normal`), each at least `minLength` long,
-   * appended to `segments`.
+   * appended to `segments`. A boundary along one of the receiver's edges is
+   * included (within a relative 1e-7): the samples there need both sides.
    */
   void Find(const Light& light, const TriangleCorners& receiver, const Vec3& normal, double minLength,
     std::vector<std::array<Vec3, 2>>& segments) const;

@@ -103,7 +103,6 @@ TEST(HardShadow, DiscontinuityMeshFollowsThePointLightsStep)
   const DiscontinuityMesh dm = BuildDiscontinuityMesh(hr, DiscontinuityMeshOptions{});
   const std::vector<RGB> values = EvaluateInterpolants(dm, probes, 1e-6 * scene.Diagonal());
   const double dmError = MaxErrorOverPeak(values, probes);
-
   ProgressiveRadiosity progressive(scene, ProgressiveOptions{});
   progressive.Solve();
   const SolutionMesh surface = ExtractSolution(progressive.Mesh());
@@ -114,8 +113,14 @@ TEST(HardShadow, DiscontinuityMeshFollowsThePointLightsStep)
             << dm.LeavesMeshed << " leaves meshed, " << dm.SegmentsKept << " segments), max error "
             << dmError << " of peak; progressive " << surface.Triangles.size()
             << " elements, max error " << progressiveError << std::endl;
-  // Measured: see the commit. The bound of the issue: below 1% of the peak.
-  EXPECT_LT(dmError, 0.01);
-  // The progressive elements straddling the edges blur the step.
-  EXPECT_GT(progressiveError, 0.1);
+  // Measured: 4.1e-5 of the peak with 8,036 triangles (the issue asks for
+  // below 1%). A uniform linear mesh would need elements below 2e-3 m (the
+  // probes come within 1e-3 of the edges, and a step across an element is
+  // wrong by half its height there): about 8 million triangles on this floor.
+  EXPECT_LT(dmError, 2e-4);
+  EXPECT_LT(dm.Triangles.size(), 20000u);
+  EXPECT_GT(dm.LeavesMeshed, 0u);
+  // The progressive elements straddling the edges blur the step (measured
+  // 0.72 of the peak with 891 elements).
+  EXPECT_GT(progressiveError, 0.3);
 }
