@@ -80,8 +80,9 @@ LightSet ParseLightsJson(const std::string& text, const std::string& fileName)
   {
     doc = Json::parse(text);
   }
-  catch (const Json::parse_error& e)
+  catch (const Json::exception& e)
   {
+    // parse_error, and out_of_range for a number beyond double (1e999).
     throw SceneError(fileName + ": not valid JSON: " + e.what());
   }
   const Json* list = &doc;
