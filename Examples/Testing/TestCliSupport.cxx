@@ -349,6 +349,33 @@ TEST_F(Probes, ReadWriteRoundTrip)
   EXPECT_EQ(this->FileCount(), 2u);
 }
 
+TEST_F(Probes, DaylightFactorColumnWithASky)
+{
+  // SPEC "Lights and sky": DF = luminance(E) / luminance(E_unobstructed),
+  // luminance 0.2126 R + 0.7152 G + 0.0722 B.
+  const RGB sky(100.0, 50.0, 25.0);
+  const double skyLuminance = 0.2126 * 100.0 + 0.7152 * 50.0 + 0.0722 * 25.0;
+  EXPECT_DOUBLE_EQ(DaylightFactor(RGB(10.0, 0.0, 0.0), sky), 2.126 / skyLuminance);
+  EXPECT_DOUBLE_EQ(DaylightFactor(sky, sky), 1.0);
+  EXPECT_EQ(DaylightFactor(sky, RGB(0.0)), 0.0);
+  const std::vector<Probe> probes = { Probe{ Vec3(0.0), Vec3(0, 0, 1) }, Probe{ Vec3(1.0), Vec3(0, 0, 1) } };
+  const std::vector<RGB> values = { RGB(50.0, 25.0, 12.5), RGB(0.0, 7.0, 0.0) };
+  const std::string out = (this->Dir / "df.csv").string();
+  std::string error;
+  ASSERT_TRUE(WriteProbeValues(out, probes, values, error, &sky)) << error;
+  std::ifstream back(out);
+  std::string line;
+  std::getline(back, line);
+  EXPECT_EQ(line, "x,y,z,E_r,E_g,E_b,DF");
+  for (std::size_t i = 0; i < 2; ++i)
+  {
+    ASSERT_TRUE(std::getline(back, line));
+    const double df = std::strtod(line.substr(line.rfind(',') + 1).c_str(), nullptr);
+    EXPECT_DOUBLE_EQ(df, DaylightFactor(values[i], sky)) << line;
+  }
+  EXPECT_DOUBLE_EQ(DaylightFactor(values[0], sky), 0.5);
+}
+
 TEST_F(Probes, ErrorsNameTheLine)
 {
   struct Case

@@ -51,8 +51,8 @@ namespace solve
 /// discontinuity meshing (SPEC), through vtkRadiosityFilter: port 0 the
 /// constant leaves, port 1 the discontinuity mesh.
 int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
-  const std::vector<RGB>& reference, const std::string& referenceKind, vtkDataObject* input,
-  double loadSeconds, Clock::time_point start)
+  const std::vector<RGB>& reference, const std::string& referenceKind, const LightSet& lights,
+  vtkDataObject* input, double loadSeconds, Clock::time_point start)
 {
   if (!(args.LinkTolerance > 0.0))
   {
@@ -69,7 +69,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   filter->SetMaxDiscontinuitiesPerLeaf(args.DiscontinuitiesPerLeaf);
   filter->SetMinDiscontinuityWeight(args.MinDiscontinuityWeight);
   cli::ProgressBar bar;
-  RunRadiosityFilter(filter, args, probes, reference, bar);
+  RunRadiosityFilter(filter, args, probes, reference, lights, bar);
   const std::vector<std::string>& warnings = filter->GetWarnings();
   const SceneCleanupReport& cleanup = filter->GetCleanupReport();
   const Scene& scene = filter->GetScene();
@@ -150,7 +150,8 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       }
     }
   }
-  WriteProbesAndHistory(args, probes, probeValues, stats.History, ", hierarchical radiosity");
+  WriteProbesAndHistory(
+    args, probes, probeValues, stats.History, ", hierarchical radiosity", scene);
 
   if (!args.Report.empty())
   {
@@ -171,6 +172,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
     report["parameters"]["memory_budget_bytes"] = ResolveMemoryBudget(args.MaxMemory * 1e9);
     report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
       { "objects", scene.ObjectNames.size() }, { "emitters", scene.NumberOfEmitters() },
+      { "lights", scene.Lighting.Lights.size() }, { "sky", scene.Lighting.SkyLight.Enabled() },
       { "emitted_power_W", stats.EmittedPowerW }, { "warnings", warnings },
       { "left_out",
         { { "degenerate_triangles_dropped", cleanup.DegenerateTrianglesDropped },
@@ -198,6 +200,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
     {
       report["discontinuity_mesh"] = nullptr;
     }
+    report["lights"] = LightsReport(scene);
     ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {
@@ -229,7 +232,8 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
     }
     Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
   }
-  std::cerr << "solved " << args.Scene << ": " << stats.Elements << " leaves, " << stats.Links
+  std::cerr << "solved " << args.Scene << " (" << EmitterSummary(scene) << "): " << stats.Elements
+            << " leaves, " << stats.Links
             << " links (" << stats.PartialLinks << " partial), " << stats.Iterations
             << " sweeps, " << stats.SolveSeconds << " s";
   if (meshing)

@@ -202,8 +202,15 @@ bool ReadProbeValues(const std::string& csv, const std::vector<Probe>& probes,
   return true;
 }
 
+double DaylightFactor(const RGB& irradiance, const RGB& unobstructed)
+{
+  // Luminance (Types.h): 0.2126 R + 0.7152 G + 0.0722 B.
+  const double sky = Luminance(unobstructed);
+  return sky > 0.0 ? Luminance(irradiance) / sky : 0.0;
+}
+
 bool WriteProbeValues(const std::string& csv, const std::vector<Probe>& probes,
-  const std::vector<RGB>& values, std::string& error)
+  const std::vector<RGB>& values, std::string& error, const RGB* skyUnobstructed)
 {
   const std::string prefix = "cannot write probe values '" + csv + "': ";
   if (probes.size() != values.size())
@@ -236,13 +243,17 @@ bool WriteProbeValues(const std::string& csv, const std::vector<Probe>& probes,
     return false;
   }
   // %.17g: every double prints so that it reads back to the same bits.
-  bool ok = std::fputs("x,y,z,E_r,E_g,E_b\n", out) >= 0;
+  bool ok = std::fputs(skyUnobstructed ? "x,y,z,E_r,E_g,E_b,DF\n" : "x,y,z,E_r,E_g,E_b\n", out) >= 0;
   for (std::size_t i = 0; ok && i < probes.size(); ++i)
   {
     const Vec3& p = probes[i].Position;
     const RGB& e = values[i];
-    ok = std::fprintf(out, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", p.x, p.y, p.z, e.r, e.g,
-           e.b) > 0;
+    ok = std::fprintf(out, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", p.x, p.y, p.z, e.r, e.g, e.b) > 0;
+    if (ok && skyUnobstructed)
+    {
+      ok = std::fprintf(out, ",%.17g", DaylightFactor(e, *skyUnobstructed)) > 0;
+    }
+    ok = ok && std::fputs("\n", out) >= 0;
   }
   int code = ok ? 0 : errno;
   // fclose flushes: a full disk shows up here, not before.

@@ -33,10 +33,18 @@ bool ReadProbeValues(const std::string& csv, const std::vector<Probe>& probes,
  * Writes `x,y,z,E_r,E_g,E_b`, one row per probe in input order, with 17
  * significant digits (doubles round-trip exactly). Refuses mismatched sizes and
  * non-finite values; written to a temporary file in the same directory and
- * renamed, so no half-written file is ever left.
+ * renamed, so no half-written file is ever left. With `skyUnobstructed` (the
+ * unobstructed horizontal irradiance of the scene's sky, SPEC "Lights and
+ * sky") a seventh column `DF`, the daylight factor
+ * luminance(E) / luminance(E_unobstructed) (DaylightFactor).
  */
 bool WriteProbeValues(const std::string& csv, const std::vector<Probe>& probes,
-  const std::vector<RGB>& values, std::string& error);
+  const std::vector<RGB>& values, std::string& error, const RGB* skyUnobstructed = nullptr);
+
+/// The daylight factor (CIE/Radiance convention): the ratio of the
+/// luminance-weighted channels 0.2126 R + 0.7152 G + 0.0722 B of E and of
+/// the unobstructed sky's horizontal irradiance (0 when that is 0).
+double DaylightFactor(const RGB& irradiance, const RGB& unobstructed);
 } // namespace cli
 } // namespace radiosity
 

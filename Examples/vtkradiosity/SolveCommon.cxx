@@ -26,7 +26,9 @@
 #include "Radiosity/Reference/AnalyticReference.h"
 #include "Radiosity/Hierarchical/DiscontinuityMesher.h"
 #include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+#include "Radiosity/Common/DirectLighting.h"
 #include "Radiosity/Common/ErrorMetrics.h"
+#include "Radiosity/Common/Lights.h"
 #include "Radiosity/Reference/PathTracer.h"
 #include "Radiosity/Scenes/SceneGenerators.h"
 #include "Radiosity/Common/SystemInfo.h"
@@ -213,9 +215,115 @@ nlohmann::json Finite(double v)
 /// the interpolants' means, point values the accurate samples) and the cell
 /// array QuadraticInterpolant (18 components, channel-major: 6c + k is
 /// coefficient k of channel c, in the triangle's point order).
-void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
-  const std::vector<Probe>& probes, const std::vector<RGB>& reference, cli::ProgressBar& bar)
+LightSet ReadLights(const SolveArguments& args)
 {
+  if (args.Lights.empty())
+  {
+    return LightSet();
+  }
+  try
+  {
+    return ReadLightsFile(args.Lights);
+  }
+  catch (const SceneError& e)
+  {
+    throw BadInput(e.what());
+  }
+  catch (const nlohmann::json::exception& e)
+  {
+    // nlohmann's refusals outside its parse errors (a number overflowing a
+    // double, 1e999) are bad input too, not an internal failure.
+    throw BadInput(args.Lights + ": not a valid lights file: " + e.what());
+  }
+}
+
+namespace
+{
+nlohmann::json Triple(const Vec3& v)
+{
+  return nlohmann::json::array({ v.x, v.y, v.z });
+}
+}
+
+nlohmann::json LightsReport(const Scene& scene)
+{
+  const LightSet& set = scene.Lighting;
+  nlohmann::json report;
+  report["count"] = set.Lights.size();
+  std::vector<RGB> received;
+  if (!set.Empty() && !scene.Triangles.empty())
+  {
+    received = DirectLighting(scene).ReceivedPower();
+  }
+  const auto receivedAt = [&received](std::size_t i) {
+    return i < received.size() ? Triple(received[i]) : nlohmann::json();
+  };
+  nlohmann::json lights = nlohmann::json::array();
+  for (std::size_t i = 0; i < set.Lights.size(); ++i)
+  {
+    const Light& l = set.Lights[i];
+    nlohmann::json entry;
+    entry["index"] = i;
+    entry["type"] = LightTypeName(l.Type);
+    if (!l.Name.empty())
+    {
+      entry["name"] = l.Name;
+    }
+    if (l.Type != LightType::Directional)
+    {
+      entry["position"] = Triple(l.Position);
+    }
+    if (l.Type != LightType::Point)
+    {
+      entry["direction"] = Triple(l.Direction);
+    }
+    entry["intensity"] = Triple(l.Intensity);
+    entry["intensity_unit"] = l.Type == LightType::Directional ? "W/m^2" : "W/sr";
+    if (l.Type == LightType::Spot)
+    {
+      entry["inner_cone_angle"] = l.InnerConeAngle;
+      entry["outer_cone_angle"] = l.OuterConeAngle;
+    }
+    entry["emitted_power_W"] =
+      l.Type == LightType::Directional ? nlohmann::json() : Triple(EmittedPower(l));
+    entry["received_power_W"] = receivedAt(i);
+    lights.push_back(entry);
+  }
+  report["lights"] = lights;
+  if (set.SkyLight.Enabled())
+  {
+    const RGB e = UnobstructedHorizontalIrradiance(set.SkyLight);
+    report["sky"] = { { "model", SkyModelName(set.SkyLight.Model) }, { "up", Triple(set.SkyLight.Up) },
+      { "radiance", Triple(set.SkyLight.Radiance) },
+      { "radiance_is", set.SkyLight.Model == SkyModel::Uniform ? "uniform" : "zenith" },
+      { "received_power_W", receivedAt(set.Lights.size()) } };
+    report["E_unobstructed"] = { { "rgb", Triple(e) }, { "luminance", Luminance(e) },
+      { "unit", "W/m^2" } };
+  }
+  else
+  {
+    report["sky"] = nullptr;
+    report["E_unobstructed"] = nullptr;
+  }
+  return report;
+}
+
+std::string EmitterSummary(const Scene& scene)
+{
+  std::string text = std::to_string(scene.NumberOfEmitters()) + " emitting triangles, " +
+    std::to_string(scene.Lighting.Lights.size()) + " lights";
+  if (scene.Lighting.SkyLight.Enabled())
+  {
+    text += std::string(", a ") + SkyModelName(scene.Lighting.SkyLight.Model) + " sky";
+  }
+  return text;
+}
+
+void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
+  const std::vector<Probe>& probes, const std::vector<RGB>& reference, const LightSet& lights,
+  cli::ProgressBar& bar)
+{
+  filter->SetSceneLights(lights);
   filter->SetTolerance(args.Tolerance);
   filter->SetMaxIterations(args.MaxIterations);
   filter->SetMaxTime(args.MaxTime);
@@ -241,12 +349,17 @@ void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
 }
 
 void WriteProbesAndHistory(const SolveArguments& args, const std::vector<Probe>& probes,
-  const std::vector<RGB>& values, const ConvergenceHistory& history, const std::string& method)
+  const std::vector<RGB>& values, const ConvergenceHistory& history, const std::string& method,
+  const Scene& scene)
 {
   std::string error;
   if (!args.ProbeOutput.empty())
   {
-    Check(cli::WriteProbeValues(args.ProbeOutput, probes, values, error), error);
+    // With a sky, the daylight factor column DF (SPEC "Lights and sky").
+    const RGB sky = UnobstructedHorizontalIrradiance(scene.Lighting.SkyLight);
+    Check(cli::WriteProbeValues(args.ProbeOutput, probes, values, error,
+            scene.Lighting.SkyLight.Enabled() ? &sky : nullptr),
+      error);
   }
   if (!args.HistoryCsv.empty())
   {

@@ -50,6 +50,7 @@ struct SolveArguments
   double MaxMemory = 0.0; ///< GB; 0: 75% of physical memory
   std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
   std::string Reference;
+  std::string Lights; ///< --lights LIGHTS.json (SPEC "Lights and sky")
   std::size_t ReferenceSamples = 16384;
   std::string ReferenceExr;
   std::size_t ReferencePixelSamples = 64;
@@ -94,11 +95,27 @@ nlohmann::json Finite(double v);
 /// Sets the settings every method shares (tolerance, limits, threads, the
 /// error reference), runs the filter with the progress bar, refuses bad input
 /// (BadInput) and prints the warnings; the caller sets the method's own.
+/// `lights` (--lights, read by ReadLights) go to the filter's SetSceneLights.
 void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
-  const std::vector<Probe>& probes, const std::vector<RGB>& reference, cli::ProgressBar& bar);
-/// --probe-output, --history and --history-plot (`method` ends the plot title).
+  const std::vector<Probe>& probes, const std::vector<RGB>& reference, const LightSet& lights,
+  cli::ProgressBar& bar);
+/// --lights: the file read and checked (before anything is solved or
+/// written); a bad file or light is BadInput naming the file, the light's
+/// index and the field. Empty without --lights.
+LightSet ReadLights(const SolveArguments& args);
+/// --probe-output, --history and --history-plot (`method` ends the plot
+/// title). With a sky in `scene`, the probe output has the column DF.
 void WriteProbesAndHistory(const SolveArguments& args, const std::vector<Probe>& probes,
-  const std::vector<RGB>& values, const ConvergenceHistory& history, const std::string& method);
+  const std::vector<RGB>& values, const ConvergenceHistory& history, const std::string& method,
+  const Scene& scene);
+/// The report's "lights" section (SPEC "Lights and sky"): every punctual
+/// light (type, position and/or direction, intensity RGB, emitted power for
+/// point and spot, the power the scene's front faces receive from it,
+/// DirectLighting::ReceivedPower), the sky (model, up, radiance, received
+/// power) and E_unobstructed (RGB and luminance; null without a sky).
+nlohmann::json LightsReport(const Scene& scene);
+/// The console line about emitters: "N emitting triangles, M lights[, a sky]".
+std::string EmitterSummary(const Scene& scene);
 /// The report's run figures every method shares: time per phase and in all,
 /// peak memory, the convergence history.
 void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,
@@ -112,8 +129,8 @@ void AddProbeOutputErrors(nlohmann::json& e, const ErrorFigures& all);
 /// `solve --method hierarchical` (called by the solve command once the
 /// probes, the reference and the scene are read and checked).
 int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
-  const std::vector<RGB>& reference, const std::string& referenceKind, vtkDataObject* input,
-  double loadSeconds, Clock::time_point start);
+  const std::vector<RGB>& reference, const std::string& referenceKind, const LightSet& lights,
+  vtkDataObject* input, double loadSeconds, Clock::time_point start);
 } // namespace solve
 
 #endif

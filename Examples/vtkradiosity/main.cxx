@@ -120,6 +120,8 @@ int RunSolve(const SolveArguments& args)
   {
     throw BadInput("--reference needs --probes (the points where the error is measured)");
   }
+  // --lights: read and checked before the scene is loaded or anything solved.
+  const LightSet lights = ReadLights(args);
   std::vector<std::string> loadWarnings, loadNotes;
   cli::LoadOptions loadOptions;
   loadOptions.MaxReflectance = args.MaxReflectance;
@@ -143,7 +145,7 @@ int RunSolve(const SolveArguments& args)
   std::vector<RGB> reference;
   std::string referenceKind;
   // The scene as the core sees it, for the references (the filter converts its own).
-  const auto coreScene = [&input]()
+  const auto coreScene = [&input, &lights]()
   {
     std::vector<std::string> ignored;
     std::string why;
@@ -161,6 +163,7 @@ int RunSolve(const SolveArguments& args)
       throw BadInput(e.what());
     }
     DropDegenerateTriangles(scene);
+    scene.Lighting = lights;
     return scene;
   };
   if (args.Reference == "analytic")
@@ -206,7 +209,8 @@ int RunSolve(const SolveArguments& args)
 
   if (args.Method == "hierarchical")
   {
-    return RunHierarchicalSolve(args, probes, reference, referenceKind, input, loadSeconds, start);
+    return RunHierarchicalSolve(
+      args, probes, reference, referenceKind, lights, input, loadSeconds, start);
   }
 
   vtkNew<vtkRadiosityFilter> filter;
@@ -226,7 +230,7 @@ int RunSolve(const SolveArguments& args)
   filter->SetInitialElementSize(args.ElementSize);
   filter->SetShooterElementSize(args.ShooterSize);
   cli::ProgressBar bar;
-  RunRadiosityFilter(filter, args, probes, reference, bar);
+  RunRadiosityFilter(filter, args, probes, reference, lights, bar);
   const SolverStatistics& stats = filter->GetStatistics();
   bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
 
@@ -266,7 +270,8 @@ int RunSolve(const SolveArguments& args)
     gathered = evaluator.GatheredCount();
   }
   WriteProbesAndHistory(args, probes, probeValues, stats.History,
-    meshless ? ", meshless radiosity" : faceCluster ? ", face cluster radiosity" : ", progressive refinement");
+    meshless ? ", meshless radiosity" : faceCluster ? ", face cluster radiosity" : ", progressive refinement",
+    filter->GetScene());
 
   if (!args.Report.empty())
   {
@@ -285,6 +290,7 @@ int RunSolve(const SolveArguments& args)
       { "indirect_visibility_samples", filter->GetIndirectVisibilitySamples() } };
     report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
       { "objects", scene.ObjectNames.size() }, { "emitters", scene.NumberOfEmitters() },
+      { "lights", scene.Lighting.Lights.size() }, { "sky", scene.Lighting.SkyLight.Enabled() },
       { "emitted_power_W", stats.EmittedPowerW }, { "warnings", filter->GetWarnings() },
       { "left_out",
         { { "degenerate_triangles_dropped", filter->GetCleanupReport().DegenerateTrianglesDropped },
@@ -332,6 +338,7 @@ int RunSolve(const SolveArguments& args)
         { "hierarchy_memory_bytes", filter->GetFaceClusterSolution()->Hierarchy().MemoryBytes() } };
       phases["hierarchy_s"] = f.HierarchySeconds;
     }
+    report["lights"] = LightsReport(scene);
     ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {
@@ -354,8 +361,9 @@ int RunSolve(const SolveArguments& args)
     }
     Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
   }
-  std::cerr << "solved " << args.Scene << ": " << stats.Elements << " elements, "
-            << stats.Iterations << " iterations, " << stats.SolveSeconds << " s\n";
+  std::cerr << "solved " << args.Scene << " (" << EmitterSummary(filter->GetScene()) << "): "
+            << stats.Elements << " elements, " << stats.Iterations << " iterations, "
+            << stats.SolveSeconds << " s\n";
   return 0;
 }
 }
@@ -448,6 +456,9 @@ int main(int argc, char* argv[])
     ->check(CLI::Range(1e-4, 1.0));
   solveCommand->add_option("--reference", solve.Reference,
     "analytic (scenes with a closed form), pathtraced, or a CSV x,y,z,E_r,E_g,E_b at the probes");
+  solveCommand->add_option("--lights", solve.Lights,
+    "LIGHTS.json: point, spot and directional lights and a sky (KHR_lights_punctual's fields, "
+    "SPEC 'Lights and sky')");
   solveCommand->add_option("--reference-samples", solve.ReferenceSamples,
     "paths per probe for --reference pathtraced (default 16384)")
     ->check(CLI::Range(std::size_t(16), std::size_t(1) << 30));
