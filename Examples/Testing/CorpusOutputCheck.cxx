@@ -1,7 +1,10 @@
 // Checks a solved .vtp for the corpus test (Testing/Corpus/run_corpus.py):
 // its Irradiance arrays (points and cells) must exist, be finite and
 // non-negative. Prints "zero" (all values 0) or "non-zero", the range and the
-// counts; exit status 1 with the reason otherwise.
+// counts, then a line "bounds: xmin xmax ymin ymax zmin zmax" (the corpus
+// test places its light from it); exit status 1 with the reason otherwise.
+// With --nonzero (the solve under the corpus test's light) a zero peak
+// irradiance fails too.
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
@@ -11,12 +14,14 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 
 int main(int argc, char* argv[])
 {
-  if (argc != 2)
+  const bool nonzero = argc == 3 && std::string(argv[2]) == "--nonzero";
+  if (argc != 2 && !nonzero)
   {
-    std::cerr << "usage: CorpusOutputCheck SOLVED.vtp\n";
+    std::cerr << "usage: CorpusOutputCheck SOLVED.vtp [--nonzero]\n";
     return 2;
   }
   vtkNew<vtkXMLPolyDataReader> reader;
@@ -56,5 +61,15 @@ int main(int argc, char* argv[])
   }
   std::cout << (hi == 0 ? "zero" : "non-zero") << " irradiance in [" << lo << ", " << hi << "] on "
             << out->GetNumberOfCells() << " cells\n";
+  double b[6];
+  out->GetBounds(b);
+  std::cout.precision(17);
+  std::cout << "bounds: " << b[0] << " " << b[1] << " " << b[2] << " " << b[3] << " " << b[4] << " "
+            << b[5] << "\n";
+  if (nonzero && hi == 0)
+  {
+    std::cout << "zero peak irradiance under a light\n";
+    return 1;
+  }
   return 0;
 }

@@ -15,13 +15,27 @@ Never a signal, a hang (the per-file timeout), exit 1, exit 2 without its
 line, or a zero answer without its warning. glTF is not read by the scene
 loader yet: it is refused (unknown type), which counts as refused.
 
+Every file that solved is then lit (SPEC.md "Lights and sky"): solved again
+with `--lights`, a LIGHTS.json of a point light above its bounding box (from
+the first solve's output: half a diagonal d above its top in y and in z, so
+that it is above for y-up and z-up files alike, and a quarter of d beyond it
+in x, so that no axis-aligned plane of the box holds it) and its mirror below
+the box (surfaces are one-sided: a lone triangle facing down, as
+OBJ/multiple_spaces.obj's does, is rightly dark under a light above), each
+of intensity d^2 W/sr (about 1 W/m^2 on the box). That solve must exit 0
+without the "no emitter" warning (nor a "no emitters" stop) and with a
+non-zero peak irradiance (CorpusOutputCheck --nonzero): a zero answer under
+a light fails.
+
 Usage: run_corpus.py VTKRADIOSITY CORPUSOUTPUTCHECK WORKDIR [MODELS]
 Exit 0 when every file passes, 1 otherwise, 77 (ctest: skipped) without the
-package. Measured on the 2-core development machine (another build running):
-95 files in 9 to 12 s (29 zero solutions with their warning, 66 refused).
+package. Measured on the 2-core development machine (other builds running):
+95 files in 40 to 42 s (29 zero solutions with their warning, each then lit
+to a non-zero answer; 66 refused).
 """
 import concurrent.futures
 import json
+import math
 import os
 import subprocess
 import sys
@@ -32,7 +46,69 @@ TIMEOUT_S = 60  # per file: reading, cleaning and a 5 s solve take under 10 s he
 EXTENSIONS = (".obj", ".ply", ".stl", ".gltf", ".glb")
 
 
+def light_above(verdict):
+    """The LIGHTS.json text of the point lights above and below the bounding
+    box that CorpusOutputCheck printed ("bounds: xmin xmax ymin ymax zmin zmax")."""
+    for line in verdict.splitlines():
+        if line.startswith("bounds:"):
+            b = [float(v) for v in line.split()[1:7]]
+            break
+    else:
+        return None
+    d = math.sqrt((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2)
+    if not (d > 0.0 and math.isfinite(d)):
+        return None
+    above = [b[1] + d / 4.0, b[3] + d / 2.0, b[5] + d / 2.0]
+    below = [b[0] - d / 4.0, b[2] - d / 2.0, b[4] - d / 2.0]
+    return json.dumps({"lights": [
+        {"type": "point", "position": above, "intensity": d * d, "name": "above"},
+        {"type": "point", "position": below, "intensity": d * d, "name": "below"}]})
+
+
+def run_lit(program, check, work, index, path, verdict, seconds):
+    """The second solve, under the point lights above and below the box."""
+    lights_text = light_above(verdict)
+    if lights_text is None:
+        return "other", "no bounding box to place the light from: " + verdict, seconds
+    lights = os.path.join(work, "lights%d.json" % index)
+    out = os.path.join(work, "lit%d.vtp" % index)
+    with open(lights, "w") as f:
+        f.write(lights_text + "\n")
+    if os.path.exists(out):
+        os.remove(out)
+    command = [program, "solve", path, "--max-time", "5", "--output", out, "--lights", lights]
+    start = time.monotonic()
+    try:
+        p = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           timeout=TIMEOUT_S)
+    except subprocess.TimeoutExpired:
+        return "hung", "lit: no answer after %d s" % TIMEOUT_S, seconds + TIMEOUT_S
+    seconds += time.monotonic() - start
+    stderr = p.stderr.decode("utf-8", "replace")
+    if p.returncode != 0:
+        return ("crashed" if p.returncode < 0 or p.returncode >= 128 else "other",
+                "lit: exit %d: %s" % (p.returncode, stderr.strip()[-300:]), seconds)
+    if "no emitter" in stderr:
+        return "other", "lit: warned of no emitter under a light", seconds
+    c = subprocess.run([check, out, "--nonzero"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       timeout=TIMEOUT_S)
+    lit_verdict = c.stdout.decode("utf-8", "replace").strip()
+    if c.returncode != 0:
+        return "other", "lit: " + lit_verdict.replace("\n", "; "), seconds
+    return "lit", lit_verdict.splitlines()[0], seconds
+
+
 def run_one(program, check, work, index, path):
+    outcome, detail, seconds = run_unlit(program, check, work, index, path)
+    if outcome not in ("solved", "solved-zero-with-warning"):
+        return outcome, detail, seconds
+    lit = run_lit(program, check, work, index, path, detail, seconds)
+    if lit[0] != "lit":
+        return lit
+    return outcome, detail.splitlines()[0] + "; lit: " + lit[1], lit[2]
+
+
+def run_unlit(program, check, work, index, path):
     out = os.path.join(work, "out%d.vtp" % index)
     report = os.path.join(work, "report%d.json" % index)
     for f in (out, report):
