@@ -259,6 +259,8 @@ public:
    * A LIGHTS.json file (SPEC.md "Lights and sky"), read at every request;
    * null or empty: none. A file that cannot be read or a bad light fails the
    * request with the message naming the file, the light's index and field.
+   * Like a reader's file name: a change to the file's contents under the
+   * same name solves again after Modified().
    */
   vtkSetFilePathMacro(LightsFileName);
   vtkGetFilePathMacro(LightsFileName);

@@ -374,6 +374,19 @@ TEST_F(Probes, DaylightFactorColumnWithASky)
     EXPECT_DOUBLE_EQ(df, DaylightFactor(values[i], sky)) << line;
   }
   EXPECT_DOUBLE_EQ(DaylightFactor(values[0], sky), 0.5);
+  // The file reads back as a reference (--reference FILE), DF ignored.
+  std::vector<RGB> back2;
+  ASSERT_TRUE(ReadProbeValues(out, probes, back2, error)) << error;
+  ASSERT_EQ(back2.size(), 2u);
+  EXPECT_EQ(back2[0], values[0]);
+  EXPECT_EQ(back2[1], values[1]);
+  // A seventh column of another name, or a DF that is not a number, is refused.
+  const std::string other = this->Write("other.csv", "x,y,z,E_r,E_g,E_b,UDI\n0,0,0,1,1,1,0.5\n1,1,1,1,1,1,0.5\n");
+  EXPECT_FALSE(ReadProbeValues(other, probes, back2, error));
+  EXPECT_NE(error.find(":1:"), std::string::npos) << error;
+  const std::string nan = this->Write("nan.csv", "x,y,z,E_r,E_g,E_b,DF\n0,0,0,1,1,1,nan\n1,1,1,1,1,1,0.5\n");
+  EXPECT_FALSE(ReadProbeValues(nan, probes, back2, error));
+  EXPECT_NE(error.find("DF"), std::string::npos) << error;
 }
 
 TEST_F(Probes, ErrorsNameTheLine)

@@ -76,11 +76,20 @@ file(WRITE "${WORK}/point.json" "{ \"lights\": [ { \"type\": \"point\", \"positi
 #   progressive   corners 2.2e-7 (bound 1e-5), inside 1.7e-2 (interpolation on elements of 0.25 m; bound 0.04)
 #   hierarchical  2.5e-5 (1e-4) every probe (the quadratic interpolants)
 #   meshless      4.6e-3 (0.015) every probe (the Shepard field)
-foreach (spec "progressive;1e-5;0.04" "hierarchical;1e-4;1e-4" "meshless;0.015;0.015")
+#   facecluster   3.2e-2 (0.1) every probe, with --max-bisections 8 (the
+#                 two input triangles halved; with the paper's leaves, 0
+#                 bisections, the two triangles' linear bases are 75% off)
+foreach (spec "progressive;1e-5;0.04" "hierarchical;1e-4;1e-4" "meshless;0.015;0.015"
+    "facecluster;0.1;0.1;--max-bisections;8")
   list(GET spec 0 method)
   list(GET spec 1 corner_bound)
   list(GET spec 2 inside_bound)
-  expect_exit(0 "${PROGRAM}" solve "${WORK}/floor.obj" --method ${method} --lights "${WORK}/point.json"
+  set(extra)
+  list(LENGTH spec n)
+  if (n GREATER 3)
+    list(SUBLIST spec 3 -1 extra)
+  endif ()
+  expect_exit(0 "${PROGRAM}" solve "${WORK}/floor.obj" --method ${method} ${extra} --lights "${WORK}/point.json"
     --probes "${WORK}/probes.csv" --probe-output "${WORK}/point-${method}.csv"
     --report "${WORK}/point-${method}.json")
   if (last_stderr MATCHES "no emitter")

@@ -66,9 +66,12 @@ struct CsvRow
 /// Reads a CSV with exactly the header `names` (spaces around fields, a UTF-8
 /// byte order mark and CRLF line ends tolerated) and rows of 6 finite numbers;
 /// blank lines are skipped. `error` names the file, the line and its text.
+/// With `seventh`, a header of the six and `seventh` is accepted too, its
+/// rows of 7 finite numbers, the seventh checked and ignored.
 bool ReadSixColumns(const std::string& csv, const char* const names[6], const std::string& what,
-  std::vector<CsvRow>& rows, std::string& error)
+  std::vector<CsvRow>& rows, std::string& error, const char* seventh = nullptr)
 {
+  std::size_t columns = 6;
   rows.clear();
   std::ifstream in(csv);
   std::string headerText;
@@ -103,11 +106,12 @@ bool ReadSixColumns(const std::string& csv, const char* const names[6], const st
     const std::vector<std::string> fields = SplitFields(line);
     if (!header)
     {
-      bool ok = fields.size() == 6;
+      bool ok = fields.size() == 6 || (seventh && fields.size() == 7 && fields[6] == seventh);
       for (std::size_t i = 0; ok && i < 6; ++i)
       {
         ok = fields[i] == names[i];
       }
+      columns = fields.size();
       if (!ok)
       {
         return fail("expected the header '" + headerText + "'");
@@ -115,9 +119,14 @@ bool ReadSixColumns(const std::string& csv, const char* const names[6], const st
       header = true;
       continue;
     }
-    if (fields.size() != 6)
+    if (fields.size() != columns)
     {
-      return fail("expected 6 values, found " + std::to_string(fields.size()));
+      return fail("expected " + std::to_string(columns) + " values, found " + std::to_string(fields.size()));
+    }
+    double ignored = 0.0;
+    if (columns == 7 && !ParseFinite(fields[6], ignored))
+    {
+      return fail(std::string("column ") + seventh + " is not a finite number ('" + fields[6] + "')");
     }
     CsvRow row;
     row.Line = number;
@@ -176,7 +185,8 @@ bool ReadProbeValues(const std::string& csv, const std::vector<Probe>& probes,
   values.clear();
   static const char* const names[6] = { "x", "y", "z", "E_r", "E_g", "E_b" };
   std::vector<CsvRow> rows;
-  if (!ReadSixColumns(csv, names, "reference", rows, error))
+  // A probe output with a sky has the daylight factor too (WriteProbeValues).
+  if (!ReadSixColumns(csv, names, "reference", rows, error, "DF"))
   {
     return false;
   }

@@ -22,9 +22,10 @@ namespace cli
 bool ReadProbes(const std::string& csv, std::vector<Probe>& probes, std::string& error);
 
 /**
- * Reads reference values in the --probe-output format `x,y,z,E_r,E_g,E_b`, one
- * row per probe, in the order of `probes` and at their positions (else an
- * error naming the line).
+ * Reads reference values in the --probe-output format `x,y,z,E_r,E_g,E_b`
+ * (or `x,y,z,E_r,E_g,E_b,DF`, as written with a sky; DF is ignored), one row
+ * per probe, in the order of `probes` and at their positions (else an error
+ * naming the line).
  */
 bool ReadProbeValues(const std::string& csv, const std::vector<Probe>& probes,
   std::vector<RGB>& values, std::string& error);
