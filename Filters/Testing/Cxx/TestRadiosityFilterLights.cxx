@@ -15,6 +15,7 @@
 #include "vtkFloatingPointExceptions.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -206,6 +207,16 @@ int TestRadiosityFilterLights(int argc, char* argv[])
   ok &= Check(filter->GetLastLighting().Lights.size() == 3 &&
       Near(filter->GetLastLighting().Lights[1].Intensity.x, 9.0),
     "the re-solve did not take the light's new intensity");
+
+  // A light's TransformMatrix places it (world coordinates: GetTransformedPosition).
+  vtkNew<vtkMatrix4x4> move;
+  move->SetElement(0, 3, 1.0); // x + 1
+  move->SetElement(2, 3, 0.5); // z + 0.5
+  point->SetTransformMatrix(move);
+  ok &= Check(filter->GetExecutive()->Update() == 1 &&
+      NearVec(filter->GetLastLighting().Lights[1].Position, 1.0, 0.0, 1.5),
+    "the point light's transform was not applied: " + Text(filter->GetLastLighting().Lights[1].Position));
+  point->SetTransformMatrix(nullptr);
 
   // A light switched off is left out; SetLights replaces the list.
   sun->SwitchOff();
