@@ -218,7 +218,10 @@ public:
    *   under irradiance E has B = E, so L = E / pi; with E = LightScale x
    *   Intensity at normal incidence, L = 1 needs LightScale = pi. L = 1 is
    *   also the one value that 1^(1/Gamma) and the tone mapping pass's
-   *   decoding leave unchanged, so the two agree whatever Gamma.
+   *   decoding (c^2.2) leave unchanged, so the two agree whatever Gamma:
+   *   drawn without a tone mapping pass both are 1, and under the same
+   *   vtkToneMappingPass both become its operator's value of 1
+   *   (vtkRadiosityView's default, Reinhard, gives 0.5 to both).
    *
    * Away from normal incidence VTK's colour is cos(theta) unencoded while the
    * mappers encode L = cos(theta) with 1/Gamma (physically displayed), so
