@@ -136,6 +136,19 @@ expect_within("light 0 emitted power against 4 pi I, relative" "${emitted_error}
 # 7.42 W; the rule is coarse on two triangles); only its presence and sign here.
 expect_within("light 0 received power" "${received}" 1 25.13275)
 
+# The references see the lights too: --reference analytic knows a point
+# light over a plane (the error figure is of the peak, every probe: measured
+# 8.5e-3, the interpolated probe 4's 1.7e-2 of its own value).
+expect_exit(0 "${PROGRAM}" solve "${WORK}/floor.obj" --lights "${WORK}/point.json"
+  --probes "${WORK}/probes.csv" --reference analytic --report "${WORK}/point-analytic.json")
+file(READ "${WORK}/point-analytic.json" report)
+string(JSON kind GET "${report}" error reference)
+string(JSON max_error GET "${report}" error probe_output_max_relative_error)
+if (NOT kind MATCHES "^analytic: .*light")
+  message(FATAL_ERROR "--reference analytic with --lights: reference '${kind}'")
+endif ()
+expect_within("analytic reference of the point-lit floor, max error of the peak" "${max_error}" 0 0.02)
+
 # --- A CIE overcast sky (L_z = 100) and the point light: E_unobstructed and DF.
 file(WRITE "${WORK}/sky.json" "{ \"lights\": [ { \"type\": \"point\", \"position\": [0, 0, 1], \"intensity\": 2 },\n  { \"type\": \"sky\", \"model\": \"cie-overcast\", \"up\": [0, 0, 1], \"color\": [1, 0.5, 0.25], \"intensity\": 100 } ] }\n")
 expect_exit(0 "${PROGRAM}" solve "${WORK}/floor.obj" --lights "${WORK}/sky.json"
