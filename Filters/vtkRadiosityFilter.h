@@ -190,8 +190,8 @@ public:
    * light", vtkRadiositySceneConverter::ToLight). The filter keeps its own
    * list; the lights themselves are shared, so a change to one of them
    * (its MTime) solves again. SetLights replaces the list with the lights of
-   * `lights` (null: none). Lights switched off (GetSwitch) are skipped;
-   * they still count in the index an error message names
+   * `lights` (null: none). Lights switched off (GetSwitch) are left out
+   * of the solve but still checked, and count in the index an error names
    * ("vtkLights (AddLight, SetLights): light 2 (spot): field 'direction' ...").
    */
   void AddLight(vtkLight* light);
