@@ -6,11 +6,11 @@
 // point, spot or sun gives a sharp shadow edge wherever a method evaluates it.
 //
 // The sky is an integral over the hemisphere: H = int L(w) V(x, w) cos dw.
-// It is evaluated by a stratified cosine-weighted quadrature (Malley's method:
-// a stratified disc lifted onto the hemisphere, n x n strata at their
-// centres, so it is deterministic and smooth in x), each direction weighted
-// by the sky radiance where its ray escapes the scene. Every weight is pi / N,
-// so an unobstructed uniform sky gives pi L exactly.
+// It is evaluated by a cosine-weighted quasi-Monte Carlo quadrature
+// (Malley's method: the Fibonacci lattice of the unit square mapped onto the
+// disc and lifted onto the hemisphere; deterministic and smooth in x), each
+// direction weighted by the sky radiance where its ray escapes the scene.
+// Every weight is pi / N, so an unobstructed uniform sky gives pi L exactly.
 #ifndef Radiosity_DirectLighting_h
 #define Radiosity_DirectLighting_h
 
@@ -29,7 +29,7 @@ class Visibility;
 class DirectLighting
 {
 public:
-  /// `skySamples` is rounded to the nearest square (at least 4).
+  /// `skySamples` directions of the sky quadrature (at least 4).
   explicit DirectLighting(const Scene& scene, int skySamples = 256);
   ~DirectLighting();
   DirectLighting(const DirectLighting&) = delete;
@@ -40,7 +40,7 @@ public:
   bool HasPunctualLights() const { return !this->Set.Lights.empty(); }
   bool HasSky() const { return this->Set.SkyLight.Enabled(); }
   const LightSet& Lights() const { return this->Set; }
-  int SkySamples() const { return this->SkyStrata * this->SkyStrata; }
+  int SkySamples() const { return this->SkySampleCount; }
 
   /// Exact direct irradiance of the punctual lights at x (unit normal n).
   RGB Punctual(const Vec3& x, const Vec3& n) const;
@@ -92,7 +92,7 @@ public:
 private:
   const Scene& SourceScene;
   LightSet Set;
-  int SkyStrata = 16;
+  int SkySampleCount = 256;
   Vec3 Centre{ 0.0 };
   double Extent = 1.0;
   std::unique_ptr<Visibility> Occluders;

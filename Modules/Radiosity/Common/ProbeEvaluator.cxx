@@ -1,5 +1,6 @@
 #include "Radiosity/Common/ProbeEvaluator.h"
 
+#include "Radiosity/Common/DirectLighting.h"
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/MeshProbeTracker.h"
 #include "Radiosity/Common/Visibility.h"
@@ -43,6 +44,10 @@ ProbeEvaluator::ProbeEvaluator(const SolutionMesh& solution, const Scene& scene)
   const Scene geometry = AsScene(solution);
   this->Rays = std::make_unique<Visibility>(geometry, Visibility::AllTriangles(geometry));
   this->Tolerance = 1e-6 * std::max(geometry.Diagonal(), 1e-300);
+  if (!scene.Lighting.Empty())
+  {
+    this->Lights = std::make_unique<DirectLighting>(scene, 4096);
+  }
 }
 
 ProbeEvaluator::~ProbeEvaluator() = default;
@@ -126,6 +131,10 @@ RGB ProbeEvaluator::Gather(const Probe& probe) const
     {
       h += f * b;
     }
+  }
+  if (this->Lights)
+  {
+    h += this->Lights->Irradiance(probe.Position, probe.Normal);
   }
   return h;
 }

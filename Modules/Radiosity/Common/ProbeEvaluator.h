@@ -13,6 +13,7 @@
 namespace radiosity
 {
 class Visibility;
+class DirectLighting;
 
 struct Probe
 {
@@ -43,7 +44,8 @@ public:
    * On a surface (within 1e-6 of the scene size, normals within 25 degrees),
    * the element's own interpolant (corner and centre samples); elsewhere, a
    * gather of the solution's radiosity with exact point-to-polygon form
-   * factors and one visibility ray per element.
+   * factors and one visibility ray per element, plus the lights and the sky
+   * the sensor sees directly (DirectLighting: they are not surfaces).
    */
   std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
 
@@ -55,6 +57,7 @@ private:
   const SolutionMesh& Solution;
   const Scene& SourceScene;
   std::unique_ptr<Visibility> Rays;
+  std::unique_ptr<DirectLighting> Lights; ///< what a gathering sensor sees of the lights and sky
   double Tolerance = 0.0;
   mutable std::size_t Gathered = 0;
 };

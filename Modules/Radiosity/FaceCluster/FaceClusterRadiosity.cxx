@@ -181,9 +181,16 @@ bool FaceClusterRadiosity::CanSubdivide(const FaceClusterElement& e) const
   return !e.Data.IsLeaf() || (e.IsTriangle() && e.Bisections < this->Settings.MaxBisections && e.Data.Area > 0.0f);
 }
 
+bool FaceClusterRadiosity::CanSubdivideForLight(const FaceClusterElement& e) const
+{
+  const int most = std::max(this->Settings.MaxBisections, this->Settings.MaxLightBisections);
+  return !e.Data.IsLeaf() || (e.IsTriangle() && e.Bisections < most && e.Data.Area > 0.0f);
+}
+
 void FaceClusterRadiosity::Subdivide(std::int32_t e)
 {
-  if (!this->Nodes[e].IsLeaf() || !this->CanSubdivide(this->Nodes[e]))
+  if (!this->Nodes[e].IsLeaf() ||
+    !(this->CanSubdivide(this->Nodes[e]) || (this->Lights && this->Iteration == 0 && this->CanSubdivideForLight(this->Nodes[e]))))
   {
     return;
   }
@@ -399,8 +406,16 @@ void FaceClusterRadiosity::TransportLight(std::int32_t i, const std::vector<Irra
   if (this->Lights && this->Iteration == 0 && this->Nodes[i].IsLeaf())
   {
     double spread = 0.0;
-    lightAtNodes = this->LightAtNodes(i, &spread);
-    if (this->Nodes[i].IsLeaf() && spread > this->Epsilon && this->CanSubdivide(this->Nodes[i]))
+    if (this->Nodes[i].Data.IsLeaf())
+    {
+      lightAtNodes = this->LightAtNodes(i, &spread);
+    }
+    // A cluster is always opened down to its triangles: its few nodes can
+    // miss a spot's cone or a shadow altogether (a floor cluster whose nodes
+    // all lay outside a spot's cone received nothing).
+    const bool cluster = !this->Nodes[i].Data.IsLeaf();
+    if (this->Nodes[i].IsLeaf() && (cluster || spread > this->Epsilon) &&
+      this->CanSubdivideForLight(this->Nodes[i]))
     {
       this->Subdivide(i);
       lightAtNodes.clear();

@@ -59,7 +59,12 @@ struct FaceClusterSettings
   double MemoryBudgetBytes = 0.0;
   TransferRule Rule;
   FaceClusterOptions Clustering;
-  int SkySamples = 256; ///< sky quadrature directions per node (DirectLighting)
+  int SkySamples = 1024; ///< sky quadrature directions per node (DirectLighting)
+  /// How many times an input triangle may be halved where the lights' direct
+  /// irradiance varies over it by more than the transfer tolerance (a
+  /// lamp's falloff, a hard shadow edge): the lights are exact at every
+  /// node, and the basis can only follow them on elements small enough.
+  int MaxLightBisections = 10;
 };
 
 /// Irradiance vector: one vector per colour channel.
@@ -166,6 +171,8 @@ private:
   /// triangle (cluster) below the input.
   std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent, const Vec3* corners = nullptr);
   bool CanSubdivide(const FaceClusterElement& e) const;
+  /// CanSubdivide, with MaxLightBisections for the lights' refinement.
+  bool CanSubdivideForLight(const FaceClusterElement& e) const;
   void Subdivide(std::int32_t e);
   bool HasUnshot(const FaceClusterElement& e) const;
   void TransportLight(std::int32_t i, const std::vector<IrradianceVector>& up);

@@ -80,7 +80,7 @@ struct HierarchicalOptions
   /// Checked before the first allocation (the initial links of every facing
   /// pair of input triangles) and while links and nodes are refined.
   double MemoryBudgetBytes = 0.0;
-  int SkySamples = 256; ///< sky quadrature directions per light-link sample (DirectLighting)
+  int SkySamples = 1024; ///< sky quadrature directions per light-link sample (DirectLighting)
   std::vector<Probe> ErrorProbes;   ///< reference irradiance: error in every history row
   std::vector<RGB> ErrorReference;
 };

@@ -50,7 +50,7 @@ struct MeshlessOptions
   double SolidAngleThreshold = 3.14159265358979323846 / 10.0; ///< epsilon_Omega, steradians
   double VariationThreshold = 0.01;        ///< epsilon_E, relative to the largest direct irradiance
   int EmitterSamples = 16;                 ///< visibility rays per receiver and emitter triangle
-  int SkySamples = 256;                    ///< sky quadrature directions per point (DirectLighting)
+  int SkySamples = 1024;                    ///< sky quadrature directions per point (DirectLighting)
   int MaxBounces = 1000;
   double Tolerance = 1e-3;                 ///< stop when a bounce carries less than this of the direct light
   double MaxTimeSeconds = 0.0;             ///< 0: no limit

@@ -42,7 +42,7 @@ struct ProgressiveOptions
   double FormFactorTolerance = 2e-3;
   int VisibilitySamples = 16;      ///< rays per receiver sample from emitters: 1, 4 or 16
   int IndirectVisibilitySamples = 1; ///< rays per receiver sample from reflectors
-  int SkySamples = 256; ///< sky quadrature directions per receiver sample (DirectLighting)
+  int SkySamples = 1024; ///< sky quadrature directions per receiver sample (DirectLighting)
   /// Bytes the elements may use; 0: 75% of physical memory. Checked before
   /// the initial mesh is made and at every adaptive subdivision.
   double MemoryBudgetBytes = 0.0;
