@@ -20,6 +20,7 @@
 #include "vtkXMLGenericDataObjectReader.h"
 
 #include "Radiosity/Scenes/BunnyScene.h"
+#include "Radiosity/Scenes/OfficeScene.h"
 #include "Radiosity/Scenes/SceneGenerators.h"
 
 #include <algorithm>
@@ -272,7 +273,7 @@ vtkSmartPointer<vtkDataObject> ReadFile(const std::string& scene, const std::str
   }
   error = scene + ": unknown scene file type '" + (ext.empty() ? "" : "." + ext) + "'" +
     (ext == "gltf" || ext == "glb" ? " (glTF is not supported by the scene loader yet)" : "") +
-    ": use .vtp, .vtm, .vtk, .ply, .stl or .obj, or a built-in scene: cornell, shadow, contact, "
+    ": use .vtp, .vtm, .vtk, .ply, .stl or .obj, or a built-in scene: cornell, office, shadow, contact, "
     "sphere, closed-room-0.99, closed-room-0.999, bunny-235k, bunny-940k";
   return nullptr;
 }
@@ -307,6 +308,8 @@ vtkSmartPointer<vtkDataObject> LoadScene(const std::string& scene, std::string& 
     { "sphere", [] { return MakeSphereInterior(1.0, 3, 0.9, RGB(10.0)); } },
     { "closed-room-0.99", [] { return MakeClosedCube(1.0, 2, 0.99, 1.0); } },
     { "closed-room-0.999", [] { return MakeClosedCube(1.0, 2, 0.999, 1.0); } },
+    // Lit by its lamp and the sky (its lights come through ReadLights).
+    { "office", [] { return MakeOfficeScene(); } },
 #ifdef RADIOSITY_BUNNY_JS
     { "bunny-235k", [] { return MakeBunnyRoom(ReadNpmBunny(RADIOSITY_BUNNY_JS), 3); } },
     { "bunny-940k", [] { return MakeBunnyRoom(ReadNpmBunny(RADIOSITY_BUNNY_JS), 4); } },

@@ -29,6 +29,7 @@
 #include "Radiosity/Common/DirectLighting.h"
 #include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Common/Lights.h"
+#include "Radiosity/Scenes/OfficeScene.h"
 #include "Radiosity/Reference/PathTracer.h"
 #include "Radiosity/Scenes/SceneGenerators.h"
 #include "Radiosity/Common/SystemInfo.h"
@@ -219,7 +220,8 @@ LightSet ReadLights(const SolveArguments& args)
 {
   if (args.Lights.empty())
   {
-    return LightSet();
+    // The built-in office brings its own lamp and sky; --lights replaces them.
+    return args.Scene == "office" ? MakeOfficeScene().Lighting : LightSet();
   }
   try
   {

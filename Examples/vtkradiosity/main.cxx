@@ -374,7 +374,7 @@ int main(int argc, char* argv[])
   app.require_subcommand(1);
   SolveArguments solve;
   CLI::App* solveCommand = app.add_subcommand("solve", "solve a scene");
-  solveCommand->add_option("SCENE", solve.Scene, "scene file or 'cornell'")->required();
+  solveCommand->add_option("SCENE", solve.Scene, "scene file or a built-in scene: 'cornell', 'office' (lit by a lamp and the sky), ...")->required();
   solveCommand->add_option("--method", solve.Method, "progressive|hierarchical|meshless|facecluster|auto");
   solveCommand->add_option("--tolerance", solve.Tolerance, "relative unshot power to stop at")
     ->check(CLI::Range(1e-12, 1.0));

@@ -238,29 +238,64 @@ std::vector<RGB> DirectLighting::ReceivedPower() const
   }
   const Scene& scene = this->SourceScene;
   const std::size_t nt = scene.Triangles.size();
-  std::vector<std::vector<RGB>> perTriangle(nt);
-  tbb::parallel_for(std::size_t(0), nt,
-    [&](std::size_t tri)
+  // The centroids of each triangle's n x n midpoint subdivision (n = 8 for
+  // up to 2,000 triangles, 4 up to 20,000, else 1: the centroid rule put
+  // 12.3 W on a two-triangle floor that receives 7.4 W), and at most 20,000
+  // triangles, an even subset scaled by area beyond.
+  const std::size_t stride = std::max<std::size_t>(1, (nt + 19999) / 20000);
+  const int n = nt <= 2000 ? 8 : (nt <= 20000 ? 4 : 1);
+  std::vector<std::size_t> chosen;
+  for (std::size_t t = 0; t < nt; t += stride)
+  {
+    chosen.push_back(t);
+  }
+  std::vector<std::vector<RGB>> perTriangle(chosen.size());
+  tbb::parallel_for(std::size_t(0), chosen.size(),
+    [&](std::size_t k)
     {
-      const Vec3 c = scene.Centroid(tri), nrm = scene.Normal(tri);
-      const double a = scene.Area(tri);
-      std::vector<RGB>& row = perTriangle[tri];
+      const std::size_t tri = chosen[k];
+      const Vec3 a = scene.Vertex(tri, 0), e1 = scene.Vertex(tri, 1) - a, e2 = scene.Vertex(tri, 2) - a;
+      const Vec3 nrm = scene.Normal(tri);
+      const double w = scene.Area(tri) / (n * n);
+      std::vector<RGB>& row = perTriangle[k];
       row.assign(power.size(), RGB(0.0));
-      for (std::size_t l = 0; l < lights; ++l)
+      for (int i = 0; i < n; ++i)
       {
-        row[l] = a * this->PunctualOne(l, c, nrm);
-      }
-      if (this->HasSky())
-      {
-        row[lights] = a * this->SkyIrradiance(c, nrm);
+        for (int j = 0; i + j < n; ++j)
+        {
+          // The upright sub-triangle (i, j) and, where there is one, the inverted one beside it.
+          for (int flip = 0; flip < (i + j < n - 1 ? 2 : 1); ++flip)
+          {
+            const double u = (i + (flip ? 2.0 : 1.0) / 3.0) / n, v = (j + (flip ? 2.0 : 1.0) / 3.0) / n;
+            const Vec3 x = a + u * e1 + v * e2;
+            for (std::size_t l = 0; l < lights; ++l)
+            {
+              row[l] += w * this->PunctualOne(l, x, nrm);
+            }
+            if (this->HasSky())
+            {
+              row[lights] += w * this->SkyIrradiance(x, nrm);
+            }
+          }
+        }
       }
     });
-  for (const auto& row : perTriangle)
+  double sampledArea = 0.0, totalArea = 0.0;
+  for (std::size_t k = 0; k < chosen.size(); ++k)
   {
+    sampledArea += scene.Area(chosen[k]);
     for (std::size_t l = 0; l < power.size(); ++l)
     {
-      power[l] += row[l];
+      power[l] += perTriangle[k][l];
     }
+  }
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    totalArea += scene.Area(t);
+  }
+  for (RGB& p : power)
+  {
+    p *= sampledArea > 0.0 ? totalArea / sampledArea : 0.0;
   }
   return power;
 }

@@ -75,9 +75,10 @@ public:
   void Evaluate(const Vec3* x, const Vec3* n, std::size_t count, RGB* out) const;
 
   /**
-   * Power each punctual light delivers to the scene's front faces (centroid
-   * rule per triangle: the report's figure for a directional light, which has
-   * no power of its own), and the sky's (last entry, when there is a sky).
+   * Power each punctual light delivers to the scene's front faces (the
+   * centroids of each triangle's midpoint subdivision: the report's figure,
+   * and a directional light's only one, having no power of its own), and
+   * the sky's (last entry, when there is a sky).
    */
   std::vector<RGB> ReceivedPower() const;
 
