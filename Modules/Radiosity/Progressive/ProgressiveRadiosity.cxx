@@ -506,19 +506,7 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
       }
       if (res.Split)
       {
-        if (mesh.Elements().size() + 4 > this->ElementCapacity)
-        {
-          CheckMemoryBudget(static_cast<double>(mesh.Elements().size() + 4) * BytesPerElement, this->Budget,
-            "progressive radiosity: subdividing to " + std::to_string(mesh.Elements().size() + 4) + " elements",
-            "lower MaxSubdivisionLevels or raise SubdivisionThreshold or --element-size");
-        }
-        const std::uint32_t first = mesh.Subdivide(e);
-        ++stats.Subdivisions;
-        for (std::uint32_t c = 0; c < 4; ++c)
-        {
-          this->RegisterCorners(first + c);
-          next.push_back(first + c);
-        }
+        this->SplitReceiver(e, stats, next);
         continue;
       }
       Element& r = mesh[e];
@@ -550,6 +538,25 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
     this->ActiveShooters.push_back(shooter);
   }
   total += shot;
+}
+
+void ProgressiveRadiosity::SplitReceiver(
+  std::uint32_t e, SolverStatistics& stats, std::vector<std::uint32_t>& children)
+{
+  ElementMesh& mesh = *this->Elements;
+  if (mesh.Elements().size() + 4 > this->ElementCapacity)
+  {
+    CheckMemoryBudget(static_cast<double>(mesh.Elements().size() + 4) * BytesPerElement, this->Budget,
+      "progressive radiosity: subdividing to " + std::to_string(mesh.Elements().size() + 4) + " elements",
+      "lower MaxSubdivisionLevels or raise SubdivisionThreshold or --element-size");
+  }
+  const std::uint32_t first = mesh.Subdivide(e);
+  ++stats.Subdivisions;
+  for (std::uint32_t c = 0; c < 4; ++c)
+  {
+    this->RegisterCorners(first + c);
+    children.push_back(first + c);
+  }
 }
 
 double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
@@ -614,21 +621,7 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
       const std::uint32_t e = pending[i];
       if (split[i])
       {
-        if (mesh.Elements().size() + 4 > this->ElementCapacity)
-        {
-          CheckMemoryBudget(static_cast<double>(mesh.Elements().size() + 4) * BytesPerElement,
-            this->Budget,
-            "progressive radiosity: subdividing to " + std::to_string(mesh.Elements().size() + 4) +
-              " elements",
-            "lower MaxSubdivisionLevels or raise SubdivisionThreshold or --element-size");
-        }
-        const std::uint32_t first = mesh.Subdivide(e);
-        ++stats.Subdivisions;
-        for (std::uint32_t c = 0; c < 4; ++c)
-        {
-          this->RegisterCorners(first + c);
-          next.push_back(first + c);
-        }
+        this->SplitReceiver(e, stats, next);
         continue;
       }
       Element& r = mesh[e];

@@ -76,6 +76,9 @@ private:
   /// receivers splitting along shadow edges by the gradient criterion.
   /// Returns the power received by the surfaces.
   double ShootLights(SolverStatistics& stats);
+  /// Subdivides receiver e (within the memory budget), registers its
+  /// children's corner samples and appends them to `children`.
+  void SplitReceiver(std::uint32_t e, SolverStatistics& stats, std::vector<std::uint32_t>& children);
   /// One shot; `leaves` are the current leaves (the selection pass has them).
   void Shoot(std::uint32_t shooter, const RGB& shot, const std::vector<std::uint32_t>& leaves,
     SolverStatistics& stats);
