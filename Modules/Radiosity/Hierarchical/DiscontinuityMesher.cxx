@@ -247,6 +247,8 @@ struct LeafWork
 {
   std::vector<std::array<Vec3, 2>> Segments;
   std::vector<std::array<Vec3, 2>> HardSegments; ///< D0: the lights' shadow boundaries
+  std::vector<RGB> PunctualNodes;    ///< the punctual lights at each triangle's six nodes, from inside it
+  std::vector<RGB> PunctualVertices; ///< and at each vertex (the point output)
   PlanarTriangulation Mesh;
   std::vector<Vec3> LocalPoints;
   std::vector<RGB> LocalValues;
@@ -580,46 +582,15 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
           w.LocalPoints.push_back(x);
         }
       }
-      // A hard shadow boundary is a jump of the irradiance (D0): a sample on
-      // it belongs to each triangle beside it with that triangle's own limit,
-      // taken a little inside the triangle (a hundredth of the way to its
-      // centroid: far above the single-precision shadow rays' error, and
-      // 1% of the triangle's size changes a smooth field by next to nothing).
-      const double onHard = 1e-6 * mesh.LongestEdge(leaves[i]);
-      auto onHardSegment = [&](const Vec3& x) {
-        for (const auto& seg : w.HardSegments)
-        {
-          bool inside = false;
-          if (EdgeDistance(x, seg[0], seg[1], inside, 0.0) < onHard)
-          {
-            return true;
-          }
-        }
-        return false;
-      };
-      auto sideSample = [&](const Vec3& x, const Vec3& triangleCentre) {
-        const SampleRef ref{ false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
-        w.LocalPoints.push_back(x + 1e-2 * (triangleCentre - x));
-        return ref;
-      };
       for (const auto& t : w.Mesh.Triangles)
       {
         std::array<SampleRef, 6> r{};
-        const Vec3 triangleCentre = (w.Mesh.Points[t[0]] + w.Mesh.Points[t[1]] + w.Mesh.Points[t[2]]) / 3.0;
         for (int k = 0; k < 3; ++k)
         {
           const std::uint32_t a = t[k], b = t[(k + 1) % 3];
           r[2 * k] = w.VertexSamples[a];
           const Vec3 mid = 0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]);
-          if (!w.HardSegments.empty() && onHardSegment(w.Mesh.Points[a]))
-          {
-            r[2 * k] = sideSample(w.Mesh.Points[a], triangleCentre);
-          }
-          if (!w.HardSegments.empty() && onHardSegment(mid))
-          {
-            r[2 * k + 1] = sideSample(mid, triangleCentre);
-          }
-          else if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
+          if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
           {
             r[2 * k + 1] = shared(mid); // a piece of the leaf's boundary
           }
@@ -646,7 +617,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     }
     std::vector<RGB> sharedValues(sharedPoints.size());
     tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
-      if (owned[i].empty() && work[i].LocalPoints.empty())
+      if (owned[i].empty() && work[i].LocalPoints.empty() && !(lights && lights->HasPunctualLights()))
       {
         return;
       }
@@ -656,14 +627,42 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       for (std::uint32_t k : owned[i])
       {
         const Vec3 x = Inside(sharedPoints[k], c);
-        sharedValues[k] = ChainIrradiance(chain, x, n) + s.DirectLight(x, n);
+        sharedValues[k] = ChainIrradiance(chain, x, n) + (lights ? lights->SkyIrradiance(x, n) : RGB(0.0));
       }
       LeafWork& w = work[i];
       w.LocalValues.resize(w.LocalPoints.size());
       for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
       {
         const Vec3 x = Inside(w.LocalPoints[k], c);
-        w.LocalValues[k] = ChainIrradiance(chain, x, n) + s.DirectLight(x, n);
+        w.LocalValues[k] = ChainIrradiance(chain, x, n) + (lights ? lights->SkyIrradiance(x, n) : RGB(0.0));
+      }
+      if (lights && lights->HasPunctualLights())
+      {
+        // A hard shadow boundary is a jump of the irradiance (D0), and it
+        // may pass through a sample (a leaf's corner, a vertex on a
+        // boundary): the punctual lights are evaluated per triangle at its
+        // six nodes, each a thousandth of the way towards that triangle's
+        // centroid, so that every triangle takes its own side's limit (far
+        // above the single-precision shadow rays' error, 1e-7 of the scene;
+        // a hundredth moved the smooth falloff by 2e-4 of the peak).
+        w.PunctualNodes.resize(6 * w.Mesh.Triangles.size());
+        for (std::size_t t = 0; t < w.Mesh.Triangles.size(); ++t)
+        {
+          const auto& tri = w.Mesh.Triangles[t];
+          const Vec3 centre = (w.Mesh.Points[tri[0]] + w.Mesh.Points[tri[1]] + w.Mesh.Points[tri[2]]) / 3.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            const Vec3& a = w.Mesh.Points[tri[k]];
+            const Vec3 mid = 0.5 * (a + w.Mesh.Points[tri[(k + 1) % 3]]);
+            w.PunctualNodes[6 * t + 2 * k] = lights->Punctual(a + 1e-3 * (centre - a), n);
+            w.PunctualNodes[6 * t + 2 * k + 1] = lights->Punctual(mid + 1e-3 * (centre - mid), n);
+          }
+        }
+        w.PunctualVertices.resize(w.Mesh.Points.size());
+        for (std::size_t v = 0; v < w.Mesh.Points.size(); ++v)
+        {
+          w.PunctualVertices[v] = lights->Punctual(Inside(w.Mesh.Points[v], c), n);
+        }
       }
     });
     out.PointSamples = sharedPoints.size();
@@ -685,7 +684,8 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
       {
         out.Points.push_back(w.Mesh.Points[v]);
-        out.PointIrradiance.push_back(value(w, w.VertexSamples[v]));
+        out.PointIrradiance.push_back(
+          value(w, w.VertexSamples[v]) + (w.PunctualVertices.empty() ? RGB(0.0) : w.PunctualVertices[v]));
       }
       for (std::size_t t = 0; t < w.Mesh.Triangles.size(); ++t)
       {
@@ -696,7 +696,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
         std::array<RGB, 6> r;
         for (int k = 0; k < 6; ++k)
         {
-          r[k] = value(w, w.TriangleSamples[t][k]);
+          r[k] = value(w, w.TriangleSamples[t][k]) + (w.PunctualNodes.empty() ? RGB(0.0) : w.PunctualNodes[6 * t + k]);
         }
         out.Interpolants.push_back(QuadraticInterpolant::FromSamples(r));
         out.Leaf.push_back(leaves[i]);

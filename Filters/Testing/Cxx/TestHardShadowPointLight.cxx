@@ -1,0 +1,173 @@
+// A point light's hard shadow (SPEC "Lights and sky"): a black square plate
+// above a grey floor lit by one point light, no emitting triangle. One
+// window, two halves with the same camera (just under the plate's height,
+// looking straight down at a corner of the shadow): left, the progressive
+// solution (its elements split along the shadow edge by the gradient
+// criterion, Gouraud-shaded); right, hierarchical radiosity with
+// discontinuity meshing (the shadow's boundary inserted into the leaves'
+// triangulations, D0, drawn with the per-pixel quadratic interpolants).
+// Across the edge the interpolants follow the exact step; the elements blur it.
+#include "FilterTestSupport.h"
+#include "vtkFloatingPointExceptions.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityFilter.h"
+#include "Radiosity/Hierarchical/HierarchicalMethod.h"
+#include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityView.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include "Radiosity/Common/ProbeEvaluator.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+namespace
+{
+constexpr double PlateZ = 0.5, PlateHalf = 0.4, Intensity = 10.0;
+const radiosity::Vec3 LampAt(0.3, 0.1, 1.5);
+
+radiosity::Scene HardShadowScene()
+{
+  using radiosity::Vec3;
+  radiosity::Scene scene;
+  radiosity::Material floor, black;
+  floor.Reflectance = radiosity::RGB(0.75, 0.7, 0.6);
+  black.Reflectance = radiosity::RGB(0.0);
+  radiosity::AppendQuad(scene, Vec3(-2, -2, 0), Vec3(2, -2, 0), Vec3(2, 2, 0), Vec3(-2, 2, 0), floor, 4, "floor");
+  const double h = PlateHalf;
+  radiosity::AppendQuad(scene, Vec3(-h, -h, PlateZ), Vec3(h, -h, PlateZ), Vec3(h, h, PlateZ), Vec3(-h, h, PlateZ),
+    black, 1, "plate top");
+  radiosity::AppendQuad(scene, Vec3(-h, -h, PlateZ), Vec3(-h, h, PlateZ), Vec3(h, h, PlateZ), Vec3(h, -h, PlateZ),
+    black, 1, "plate bottom");
+  return scene;
+}
+
+/// The floor sees only the lamp (it is flat, the plate is black): I h / d^3
+/// where the segment to the lamp misses the plate, else 0.
+double Exact(const radiosity::Vec3& x)
+{
+  const radiosity::Vec3 crossing = x + (LampAt - x) * (PlateZ / LampAt.z);
+  if (std::fabs(crossing.x) <= PlateHalf && std::fabs(crossing.y) <= PlateHalf)
+  {
+    return 0.0;
+  }
+  const double d = glm::length(LampAt - x);
+  return Intensity * LampAt.z / (d * d * d);
+}
+}
+
+int TestHardShadowPointLight(int argc, char* argv[])
+{
+  vtkFloatingPointExceptions::Disable();
+  vtkSmartPointer<vtkPolyData> scene = vtkRadiositySceneConverter::FromScene(HardShadowScene());
+  radiosity::LightSet lights;
+  radiosity::Light lamp;
+  lamp.Type = radiosity::LightType::Point;
+  lamp.Position = LampAt;
+  lamp.Intensity = radiosity::RGB(Intensity);
+  lights.Lights.push_back(lamp);
+
+  vtkNew<vtkRadiosityFilter> progressive;
+  progressive->SetInputData(scene);
+  progressive->SetMethodToProgressive();
+  progressive->SetSceneLights(lights);
+  progressive->Update();
+  vtkNew<vtkRadiosityFilter> hierarchical;
+  hierarchical->SetInputData(scene);
+  hierarchical->SetMethodToHierarchical();
+  hierarchical->SetSceneLights(lights);
+  hierarchical->Update();
+  vtkPolyData* elements = progressive->GetOutput();
+  vtkPolyData* meshed = hierarchical->GetOutput(1); // the discontinuity mesh
+  if (!progressive->GetLastError().empty() || !hierarchical->GetLastError().empty() ||
+    meshed->GetNumberOfCells() == 0)
+  {
+    std::cerr << "solve failed: " << progressive->GetLastError() << hierarchical->GetLastError() << "\n";
+    return EXIT_FAILURE;
+  }
+  const radiosity::DiscontinuityMesh& dm =
+    std::dynamic_pointer_cast<const radiosity::HierarchicalMethod>(hierarchical->GetSolver())->LastMesh();
+
+  // Along y = 0 across both shadow edges (x = -0.75 and 0.45), probes 1e-3
+  // or more from the edges.
+  std::vector<radiosity::Probe> probes;
+  double peak = 0.0;
+  for (int i = 0; i <= 300; ++i)
+  {
+    const double x = -1.5 + 0.01 * i;
+    if (std::fabs(x + 0.75) < 1e-3 || std::fabs(x - 0.45) < 1e-3)
+    {
+      continue;
+    }
+    probes.push_back({ { x, 0.0, 0.0 }, { 0.0, 0.0, 1.0 } });
+    peak = std::max(peak, Exact(probes.back().Position));
+  }
+  const std::vector<radiosity::RGB> onMesh = radiosity::EvaluateInterpolants(dm, probes, 1e-6);
+  const radiosity::ProbeEvaluator onElements(*progressive->GetSolution(), progressive->GetScene());
+  const std::vector<radiosity::RGB> fromElements = onElements.Evaluate(probes);
+  double meshError = 0.0, elementError = 0.0;
+  for (std::size_t i = 0; i < probes.size(); ++i)
+  {
+    const double h = Exact(probes[i].Position);
+    const double m = std::fabs(onMesh[i].x - h) / peak, e = std::fabs(fromElements[i].x - h) / peak;
+    meshError = std::isfinite(m) ? std::max(meshError, m) : HUGE_VAL;
+    elementError = std::isfinite(e) ? std::max(elementError, e) : HUGE_VAL;
+  }
+  std::cout << elements->GetNumberOfCells() << " progressive elements, " << meshed->GetNumberOfCells()
+            << " interpolant triangles; across the shadow edges, largest error of the peak: interpolants "
+            << meshError << ", progressive elements " << elementError << "\n";
+  // Measured: interpolants 6.1e-5 of the peak (3,877 triangles), progressive 0.64 (891 elements).
+  if (!(meshError < 2e-4) || !(elementError > 0.3))
+  {
+    std::cerr << "the interpolants do not follow the exact hard shadow, or the elements do\n";
+    return EXIT_FAILURE;
+  }
+
+  // Straight down from just under the plate at the shadow's corner (-0.75, -0.65).
+  const double position[3] = { -0.75, -0.65, 0.45 };
+  const double focal[3] = { -0.75, -0.65, 0.0 };
+  const double up[3] = { 0.0, 1.0, 0.0 };
+  const int width = 400, height = 400;
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(2 * width, height);
+  vtkNew<vtkRadiosityView> gouraud;
+  gouraud->SetInputData(elements);
+  vtkNew<vtkRadiosityView> quadratic;
+  quadratic->SetInputData(meshed);
+  int half = 0;
+  for (vtkRadiosityView* view : { gouraud.Get(), quadratic.Get() })
+  {
+    view->SetRenderWindow(window);
+    view->SetSize(2 * width, height);
+    view->SetCamera(position, focal, up, 80.0);
+    view->SetExposure(1.5);
+    view->GetRenderer()->SetViewport(0.5 * half, 0.0, 0.5 * (half + 1), 1.0);
+    ++half;
+  }
+  if (gouraud->UsesInterpolantMapper() || !quadratic->UsesInterpolantMapper())
+  {
+    std::cerr << "wrong display paths\n";
+    return EXIT_FAILURE;
+  }
+  if (!gouraud->Render() || !quadratic->Render())
+  {
+    return EXIT_FAILURE;
+  }
+  const FilterTestSupport::Halves halves = FilterTestSupport::CompareHalves(window, width, height);
+  std::cout << "mean pixel difference between the halves " << halves.Difference << ", left mean "
+            << halves.LeftMean << "\n";
+  if (halves.LeftMean < 30.0 || halves.Difference < 2.0)
+  {
+    std::cerr << "the image is dark or the halves do not differ\n";
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
