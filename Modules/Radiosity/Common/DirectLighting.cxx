@@ -61,6 +61,25 @@ RGB DirectLighting::PunctualOne(std::size_t index, const Vec3& x, const Vec3& n)
   return visible ? h : RGB(0.0);
 }
 
+RGB DirectLighting::PunctualSeenFrom(const Vec3& x, const Vec3& visibilityPoint, const Vec3& n) const
+{
+  RGB sum(0.0);
+  const Vec3 origin = this->RayOrigin(visibilityPoint, n);
+  const double far = this->FarDistance(visibilityPoint);
+  for (const Light& light : this->Set.Lights)
+  {
+    const RGB h = UnshadowedIrradiance(light, x, n);
+    if (MaxComponent(h) > 0.0)
+    {
+      const Vec3 target = ShadowRayTarget(light, visibilityPoint, far);
+      unsigned char visible = 0;
+      this->Occluders->TestSegments(&origin, &target, 1, &visible);
+      sum += visible ? h : RGB(0.0);
+    }
+  }
+  return sum;
+}
+
 RGB DirectLighting::Punctual(const Vec3& x, const Vec3& n) const
 {
   const std::size_t count = this->Set.Lights.size();

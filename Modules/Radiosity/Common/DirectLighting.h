@@ -44,6 +44,10 @@ public:
 
   /// Exact direct irradiance of the punctual lights at x (unit normal n).
   RGB Punctual(const Vec3& x, const Vec3& n) const;
+  /// The closed form at x, with the visibility of each light seen from
+  /// `visibilityPoint` (a point a little inside one side of a shadow edge
+  /// through x, so that x takes that side's limit; see DiscontinuityMesher).
+  RGB PunctualSeenFrom(const Vec3& x, const Vec3& visibilityPoint, const Vec3& n) const;
   /// Exact direct irradiance of punctual light `light` alone, with its shadow ray.
   RGB PunctualOne(std::size_t light, const Vec3& x, const Vec3& n) const;
   /// Sky irradiance at x by the stratified quadrature.

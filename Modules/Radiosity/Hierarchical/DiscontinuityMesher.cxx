@@ -641,10 +641,11 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
         // A hard shadow boundary is a jump of the irradiance (D0), and it
         // may pass through a sample (a leaf's corner, a vertex on a
         // boundary): the punctual lights are evaluated per triangle at its
-        // six nodes, each a thousandth of the way towards that triangle's
-        // centroid, so that every triangle takes its own side's limit (far
-        // above the single-precision shadow rays' error, 1e-7 of the scene;
-        // a hundredth moved the smooth falloff by 2e-4 of the peak).
+        // six nodes, the closed form at the node itself and the visibility
+        // from a hundredth of the way towards that triangle's centroid, so
+        // that every triangle takes its own side's limit (far above the
+        // single-precision shadow rays' error, 1e-7 of the scene; moving the
+        // closed form too put 2e-4 of the peak on the smooth falloff).
         w.PunctualNodes.resize(6 * w.Mesh.Triangles.size());
         for (std::size_t t = 0; t < w.Mesh.Triangles.size(); ++t)
         {
@@ -654,8 +655,9 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
           {
             const Vec3& a = w.Mesh.Points[tri[k]];
             const Vec3 mid = 0.5 * (a + w.Mesh.Points[tri[(k + 1) % 3]]);
-            w.PunctualNodes[6 * t + 2 * k] = lights->Punctual(a + 1e-3 * (centre - a), n);
-            w.PunctualNodes[6 * t + 2 * k + 1] = lights->Punctual(mid + 1e-3 * (centre - mid), n);
+            w.PunctualNodes[6 * t + 2 * k] = lights->PunctualSeenFrom(Inside(a, c), a + 1e-2 * (centre - a), n);
+            w.PunctualNodes[6 * t + 2 * k + 1] =
+              lights->PunctualSeenFrom(Inside(mid, c), mid + 1e-2 * (centre - mid), n);
           }
         }
         w.PunctualVertices.resize(w.Mesh.Points.size());

@@ -762,6 +762,23 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       mesh[sel.Best].Unshot = -overshoot; // handed to the shooter's leaves after the shot
       this->Shoot(sel.Best, nodeUnshot + overshoot, leaves, stats);
     }
+    if (stats.Stop != StopReason::Converged && this->Settings.Overshooting)
+    {
+      // Overshooting shoots future light in advance and takes it back later
+      // as negative shots: stopped early (a time or iteration limit, an
+      // abort), a sample can be left below zero (a lit corpus file stopped
+      // at 5 s had -0.007 W/m^2). Irradiance is never negative: such samples
+      // are clamped to zero, the rest of the partial solution is kept.
+      for (std::uint32_t e : mesh.Leaves())
+      {
+        ElementSamples& h = mesh[e].Irradiance;
+        for (RGB& c : h.Corner)
+        {
+          c = glm::max(c, RGB(0.0));
+        }
+        h.Centre = glm::max(h.Centre, RGB(0.0));
+      }
+    }
     stats.Elements = mesh.NumberOfLeaves();
     stats.RaysCast += this->Rays->RaysCast();
     stats.AbsorbedPowerW = this->Absorbed;
