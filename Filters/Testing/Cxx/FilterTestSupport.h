@@ -3,7 +3,9 @@
 #define FilterTestSupport_h
 
 #include "vtkNew.h"
+#include "vtkRadiosityView.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
@@ -21,6 +23,30 @@ inline bool Check(bool ok, const std::string& what)
     std::cerr << "FAILED: " << what << "\n";
   }
   return ok;
+}
+
+// Two views side by side in one window of two width x height halves, with the
+// same camera (and `exposure`, when positive): the comparisons of two
+// displays of one scene.
+inline void SideBySide(vtkRenderWindow* window, vtkRadiosityView* left, vtkRadiosityView* right, int width,
+  int height, const double position[3], const double focal[3], const double up[3], double viewAngle,
+  double exposure = 0.0)
+{
+  window->SetMultiSamples(0);
+  window->SetSize(2 * width, height);
+  int half = 0;
+  for (vtkRadiosityView* view : { left, right })
+  {
+    view->SetRenderWindow(window);
+    view->SetSize(2 * width, height);
+    view->SetCamera(position, focal, up, viewAngle);
+    if (exposure > 0.0)
+    {
+      view->SetExposure(exposure);
+    }
+    view->GetRenderer()->SetViewport(0.5 * half, 0.0, 0.5 * (half + 1), 1.0);
+    ++half;
+  }
 }
 
 // For a window of two width x height halves side by side: the mean 8-bit

@@ -135,22 +135,11 @@ int TestHardShadowPointLight(int argc, char* argv[])
   const double up[3] = { 0.0, 1.0, 0.0 };
   const int width = 400, height = 400;
   vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
-  window->SetSize(2 * width, height);
   vtkNew<vtkRadiosityView> gouraud;
   gouraud->SetInputData(elements);
   vtkNew<vtkRadiosityView> quadratic;
   quadratic->SetInputData(meshed);
-  int half = 0;
-  for (vtkRadiosityView* view : { gouraud.Get(), quadratic.Get() })
-  {
-    view->SetRenderWindow(window);
-    view->SetSize(2 * width, height);
-    view->SetCamera(position, focal, up, 80.0);
-    view->SetExposure(1.5);
-    view->GetRenderer()->SetViewport(0.5 * half, 0.0, 0.5 * (half + 1), 1.0);
-    ++half;
-  }
+  FilterTestSupport::SideBySide(window, gouraud, quadratic, width, height, position, focal, up, 80.0, 1.5);
   if (gouraud->UsesInterpolantMapper() || !quadratic->UsesInterpolantMapper())
   {
     std::cerr << "wrong display paths\n";

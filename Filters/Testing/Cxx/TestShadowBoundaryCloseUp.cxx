@@ -129,22 +129,11 @@ int TestShadowBoundaryCloseUp(int argc, char* argv[])
   const double up[3] = { 0.0, 1.0, 0.0 };
   const int width = 400, height = 400;
   vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
-  window->SetSize(2 * width, height);
   vtkNew<vtkRadiosityView> gouraud;
   gouraud->SetInputData(leaves);
   vtkNew<vtkRadiosityView> quadratic;
   quadratic->SetInputData(meshed);
-  int half = 0;
-  for (vtkRadiosityView* view : { gouraud.Get(), quadratic.Get() })
-  {
-    view->SetRenderWindow(window);
-    view->SetSize(2 * width, height);
-    view->SetCamera(position, focal, up, 80.0);
-    view->SetExposure(4.0);
-    view->GetRenderer()->SetViewport(0.5 * half, 0.0, 0.5 * (half + 1), 1.0);
-    ++half;
-  }
+  FilterTestSupport::SideBySide(window, gouraud, quadratic, width, height, position, focal, up, 80.0, 4.0);
   if (gouraud->UsesInterpolantMapper() || !quadratic->UsesInterpolantMapper())
   {
     std::cerr << "wrong display paths\n";
