@@ -612,8 +612,34 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
         const ElementSamples& d = delta[i];
         const double departure = std::fabs(Luminance(d.Centre) -
           (Luminance(d.Corner[0]) + Luminance(d.Corner[1]) + Luminance(d.Corner[2])) / 3.0);
+        // A spot's falloff ramp (between its cones) can pass between the
+        // samples of an element that they all see dark: an element whose
+        // angular extent seen from the spot meets the ramp is split as well.
+        bool crossesCone = false;
+        for (const Light& light : this->SourceScene.Lighting.Lights)
+        {
+          if (light.Type != LightType::Spot || crossesCone)
+          {
+            continue;
+          }
+          const Vec3 towards = r.Centroid - light.Position;
+          const double distance = glm::length(towards);
+          double radius = 0.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            radius = std::max(radius, glm::length(mesh.Corner(e, k) - r.Centroid));
+          }
+          if (!(distance > radius))
+          {
+            crossesCone = true;
+            continue;
+          }
+          const double angle = std::acos(std::clamp(glm::dot(towards, light.Direction) / distance, -1.0, 1.0));
+          const double spread = std::asin(radius / distance);
+          crossesCone = angle - spread < light.OuterConeAngle && angle + spread > light.InnerConeAngle;
+        }
         split[i] = r.Level < this->MaxLevel[r.Source] &&
-          departure > threshold * std::fabs(Luminance(d.Mean()));
+          (departure > threshold * std::fabs(Luminance(d.Mean())) || crossesCone);
       });
     std::vector<std::uint32_t> next;
     for (std::size_t i = 0; i < pending.size(); ++i)
