@@ -1,0 +1,121 @@
+// The lights' shot of progressive refinement (SPEC "Lights and sky"; README
+// "Lights and sky"): the lights and the sky shoot first, exactly, and the
+// receivers split along shadow edges and spot cones.
+#include "Radiosity/Progressive/ProgressiveRadiosity.h"
+
+#include "Radiosity/Common/DirectLighting.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiosity
+{
+double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
+{
+  if (this->SourceScene.Lighting.Empty())
+  {
+    return 0.0;
+  }
+  ElementMesh& mesh = *this->Elements;
+  const DirectLighting lights(this->SourceScene, this->Settings.SkySamples);
+  const double threshold = this->Settings.SubdivisionThreshold;
+  std::vector<std::uint32_t> pending = mesh.Leaves();
+  std::vector<RGB> sampleLight;
+  std::vector<std::uint32_t> needed;
+  std::vector<ElementSamples> delta;
+  std::vector<unsigned char> split;
+  double received = 0.0;
+  while (!pending.empty())
+  {
+    // The corner samples are shared by the leaves meeting at a vertex: each is lit once.
+    ++this->Stamp;
+    needed.clear();
+    for (std::uint32_t e : pending)
+    {
+      for (std::uint32_t id : this->CornerSamples[e])
+      {
+        if (this->SampleStamp[id] != this->Stamp)
+        {
+          this->SampleStamp[id] = this->Stamp;
+          needed.push_back(id);
+        }
+      }
+    }
+    sampleLight.resize(this->Samples.size());
+    tbb::parallel_for(std::size_t(0), needed.size(), [&](std::size_t i)
+      {
+        const SharedSample& sample = this->Samples[needed[i]];
+        sampleLight[needed[i]] = lights.Irradiance(sample.Point, sample.Normal);
+      });
+    delta.assign(pending.size(), ElementSamples());
+    split.assign(pending.size(), 0);
+    tbb::parallel_for(std::size_t(0), pending.size(), [&](std::size_t i)
+      {
+        const std::uint32_t e = pending[i];
+        const Element& r = mesh[e];
+        for (int k = 0; k < 3; ++k)
+        {
+          delta[i].Corner[k] = sampleLight[this->CornerSamples[e][k]];
+        }
+        delta[i].Centre = lights.Irradiance(r.Centroid, r.Normal);
+        // The same gradient criterion as an element's shot (Shoot): a hard
+        // shadow edge across the element moves its centre off the corners' mean.
+        const ElementSamples& d = delta[i];
+        const double departure = std::fabs(Luminance(d.Centre) -
+          (Luminance(d.Corner[0]) + Luminance(d.Corner[1]) + Luminance(d.Corner[2])) / 3.0);
+        // A spot's falloff ramp (between its cones) can pass between the
+        // samples of an element that they all see dark: an element whose
+        // angular extent seen from the spot meets the ramp is split as well.
+        bool crossesCone = false;
+        for (const Light& light : this->SourceScene.Lighting.Lights)
+        {
+          if (light.Type != LightType::Spot || crossesCone)
+          {
+            continue;
+          }
+          const Vec3 towards = r.Centroid - light.Position;
+          const double distance = glm::length(towards);
+          double radius = 0.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            radius = std::max(radius, glm::length(mesh.Corner(e, k) - r.Centroid));
+          }
+          if (!(distance > radius))
+          {
+            crossesCone = true;
+            continue;
+          }
+          const double angle = std::acos(std::clamp(glm::dot(towards, light.Direction) / distance, -1.0, 1.0));
+          const double spread = std::asin(radius / distance);
+          crossesCone = angle - spread < light.OuterConeAngle && angle + spread > light.InnerConeAngle;
+        }
+        split[i] = r.Level < this->MaxLevel[r.Source] &&
+          (departure > threshold * std::fabs(Luminance(d.Mean())) || crossesCone);
+      });
+    std::vector<std::uint32_t> next;
+    for (std::size_t i = 0; i < pending.size(); ++i)
+    {
+      const std::uint32_t e = pending[i];
+      if (split[i])
+      {
+        this->SplitReceiver(e, stats, next);
+        continue;
+      }
+      Element& r = mesh[e];
+      const RGB rho = mesh.MaterialOf(e).Reflectance;
+      r.Irradiance += delta[i];
+      const RGB meanDelta = delta[i].Mean();
+      r.Unshot += rho * meanDelta;
+      this->Absorbed += Mean((RGB(1.0) - rho) * meanDelta) * r.Area;
+      received += Mean(meanDelta) * r.Area;
+    }
+    pending.swap(next);
+    this->SampleFactor.resize(this->Samples.size());
+    this->SampleStamp.resize(this->Samples.size(), 0);
+  }
+  stats.RaysCast += lights.RaysCast();
+  return received;
+}
+} // namespace radiosity
