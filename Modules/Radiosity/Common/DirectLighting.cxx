@@ -82,39 +82,7 @@ RGB DirectLighting::PunctualSeenFrom(const Vec3& x, const Vec3& visibilityPoint,
 
 RGB DirectLighting::Punctual(const Vec3& x, const Vec3& n) const
 {
-  const std::size_t count = this->Set.Lights.size();
-  if (count == 0)
-  {
-    return RGB(0.0);
-  }
-  std::vector<Vec3> from, to;
-  std::vector<RGB> contribution;
-  from.reserve(count);
-  to.reserve(count);
-  contribution.reserve(count);
-  const double far = this->FarDistance(x);
-  const Vec3 origin = this->RayOrigin(x, n);
-  for (const Light& light : this->Set.Lights)
-  {
-    const RGB h = UnshadowedIrradiance(light, x, n);
-    if (MaxComponent(h) > 0.0)
-    {
-      from.push_back(origin);
-      to.push_back(ShadowRayTarget(light, x, far));
-      contribution.push_back(h);
-    }
-  }
-  std::vector<unsigned char> visible(from.size(), 0);
-  this->Occluders->TestSegments(from.data(), to.data(), from.size(), visible.data());
-  RGB sum(0.0);
-  for (std::size_t i = 0; i < from.size(); ++i)
-  {
-    if (visible[i])
-    {
-      sum += contribution[i];
-    }
-  }
-  return sum;
+  return this->PunctualSeenFrom(x, x, n);
 }
 
 RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
