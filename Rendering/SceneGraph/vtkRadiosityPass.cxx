@@ -1,0 +1,344 @@
+#include "vtkRadiosityPass.h"
+
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkProp.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiosityPassDisplay.h"
+#include "vtkRadiosityRendererNode.h"
+#include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityViewNodeFactory.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+#include "vtkViewNode.h"
+
+#include "Radiosity/Common/Lights.h"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkRadiosityPass);
+
+vtkRadiosityPass::vtkRadiosityPass()
+  : Filter(vtkSmartPointer<vtkRadiosityFilter>::New())
+  , Factory(vtkSmartPointer<vtkRadiosityViewNodeFactory>::New())
+  , Display(vtkSmartPointer<vtkRadiosityPassDisplay>::New())
+  , DefaultPass(vtkSmartPointer<vtkRenderStepsPass>::New())
+  , ProgressObserver(vtkSmartPointer<vtkCallbackCommand>::New())
+{
+  this->DelegatePass = this->DefaultPass;
+  this->ProgressObserver->SetCallback(&vtkRadiosityPass::ForwardProgress);
+  this->ProgressObserver->SetClientData(this);
+  this->Filter->AddObserver(vtkCommand::ProgressEvent, this->ProgressObserver);
+}
+
+vtkRadiosityPass::~vtkRadiosityPass()
+{
+  this->Filter->RemoveObserver(this->ProgressObserver);
+}
+
+void vtkRadiosityPass::ForwardProgress(vtkObject*, unsigned long, void* self, void* data)
+{
+  static_cast<vtkRadiosityPass*>(self)->InvokeEvent(vtkCommand::ProgressEvent, data);
+}
+
+vtkRadiosityFilter* vtkRadiosityPass::GetFilter()
+{
+  return this->Filter;
+}
+
+vtkViewNodeFactory* vtkRadiosityPass::GetFactory()
+{
+  return this->Factory;
+}
+
+vtkRadiosityRendererNode* vtkRadiosityPass::GetSceneGraph()
+{
+  return this->SceneGraph;
+}
+
+bool vtkRadiosityPass::HasSolution() const
+{
+  return this->SceneGraph && this->SceneGraph->HasSolution() && this->Display->GetActor();
+}
+
+vtkMTimeType vtkRadiosityPass::GetMTime()
+{
+  return std::max(this->Superclass::GetMTime(), this->Filter->GetMTime());
+}
+
+void vtkRadiosityPass::SetMethod(int method)
+{
+  this->Filter->SetMethod(method);
+}
+int vtkRadiosityPass::GetMethod()
+{
+  return this->Filter->GetMethod();
+}
+void vtkRadiosityPass::SetLightScale(double scale)
+{
+  this->Filter->SetLightScale(scale);
+}
+double vtkRadiosityPass::GetLightScale()
+{
+  return this->Filter->GetLightScale();
+}
+void vtkRadiosityPass::SetSkyModel(int model)
+{
+  this->Filter->SetSkyModel(model);
+}
+int vtkRadiosityPass::GetSkyModel()
+{
+  return this->Filter->GetSkyModel();
+}
+void vtkRadiosityPass::SetSkyRadiance(double r, double g, double b)
+{
+  this->Filter->SetSkyRadiance(r, g, b);
+}
+void vtkRadiosityPass::SetSkyRadiance(const double radiance[3])
+{
+  this->Filter->SetSkyRadiance(radiance[0], radiance[1], radiance[2]);
+}
+double* vtkRadiosityPass::GetSkyRadiance()
+{
+  return this->Filter->GetSkyRadiance();
+}
+void vtkRadiosityPass::SetSkyUp(double x, double y, double z)
+{
+  this->Filter->SetSkyUp(x, y, z);
+}
+void vtkRadiosityPass::SetSkyUp(const double up[3])
+{
+  this->Filter->SetSkyUp(up[0], up[1], up[2]);
+}
+double* vtkRadiosityPass::GetSkyUp()
+{
+  return this->Filter->GetSkyUp();
+}
+
+void vtkRadiosityPass::SetDelegatePass(vtkRenderPass* pass)
+{
+  vtkRenderPass* next = pass ? pass : this->DefaultPass.GetPointer();
+  if (this->DelegatePass != next)
+  {
+    this->DelegatePass = next;
+    this->Modified();
+  }
+}
+
+vtkRenderPass* vtkRadiosityPass::GetDelegatePass()
+{
+  return this->DelegatePass;
+}
+
+namespace
+{
+/// The i-th scene light handed to the filter, as the renderer holds it.
+std::string LightLabel(vtkRenderer* renderer, vtkLight* light, int sceneIndex)
+{
+  int index = 0;
+  vtkCollectionSimpleIterator it;
+  renderer->GetLights()->InitTraversal(it);
+  while (vtkLight* l = renderer->GetLights()->GetNextLight(it))
+  {
+    if (l == light)
+    {
+      break;
+    }
+    ++index;
+  }
+  return "scene light " + std::to_string(sceneIndex) + " (light " + std::to_string(index) +
+    " of the renderer's lights, " + light->GetClassName() + ")";
+}
+}
+
+bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    vtkErrorMacro("UpdateSolution: no renderer");
+    return false;
+  }
+  if (!this->SceneGraph || this->SceneGraph->GetRenderable() != renderer)
+  {
+    vtkViewNode* node = this->Factory->CreateNode(renderer);
+    this->SceneGraph.TakeReference(vtkRadiosityRendererNode::SafeDownCast(node));
+    if (!this->SceneGraph)
+    {
+      if (node)
+      {
+        node->Delete();
+      }
+      vtkErrorMacro("UpdateSolution: no scene-graph node for " << renderer->GetClassName());
+      return false;
+    }
+    this->Display->Clear();
+  }
+  vtkRadiosityRendererNode* graph = this->SceneGraph;
+  graph->SetMaxReflectance(this->MaxReflectance);
+  graph->SetLightScale(this->Filter->GetLightScale());
+  graph->Traverse(vtkViewNode::build);
+  graph->Traverse(vtkViewNode::synchronize);
+
+  const vtkRadiosityRendererNode::Signature signature = graph->GetSignature();
+  if (graph->IsSolvedFor(signature, this->Filter->GetMTime()))
+  {
+    return graph->HasSolution();
+  }
+
+  // Something changed: solve again (or fail), and keep no half solution.
+  this->Display->Clear();
+  std::string error = graph->GetGatherError();
+  vtkLightCollection* lights = graph->GetSceneLights();
+  if (error.empty())
+  {
+    // Each light on its own, so that the error names it as the renderer holds it.
+    int i = 0;
+    vtkCollectionSimpleIterator it;
+    lights->InitTraversal(it);
+    while (vtkLight* light = lights->GetNextLight(it))
+    {
+      radiosity::LightSet one;
+      one.Lights.push_back(vtkRadiositySceneConverter::ToLight(light, this->Filter->GetLightScale()));
+      try
+      {
+        radiosity::ValidateLights(one);
+      }
+      catch (const std::exception& e)
+      {
+        error = LightLabel(renderer, light, i) + ": " + e.what();
+        break;
+      }
+      ++i;
+    }
+  }
+  if (error.empty() && graph->GetSceneInput()->GetNumberOfBlocks() == 0)
+  {
+    error = "the renderer has no solvable actor (visible, opaque, surface representation, with "
+            "polygons)";
+  }
+  this->Filter->SetInputData(graph->GetSceneInput());
+  this->Filter->SetLights(lights);
+  if (error.empty())
+  {
+    for (const std::string& w : graph->GetGatherWarnings())
+    {
+      vtkWarningMacro(<< w);
+    }
+    ++this->NumberOfSolves;
+    this->InvokeEvent(vtkCommand::StartEvent, nullptr);
+    this->Filter->Update();
+    if (!this->Filter->GetLastError().empty())
+    {
+      error = this->Filter->GetLastError();
+    }
+    else
+    {
+      vtkPolyData* surface = this->Filter->GetOutput(0);
+      vtkPolyData* product = this->Filter->GetOutput(1);
+      vtkSmartPointer<vtkPolyData> materials;
+      if (this->Filter->GetMethod() == vtkRadiosityFilter::FaceCluster)
+      {
+        materials = vtkRadiositySceneConverter::FromScene(this->Filter->GetScene());
+      }
+      graph->SetSolution(surface, product, signature, this->Filter->GetMTime());
+      if (!this->Display->SetSolution(
+            graph->GetSolutionSurface(), graph->GetSolutionProduct(), materials, error))
+      {
+        error = "the solution cannot be drawn: " + error;
+      }
+    }
+    const double one = 1.0;
+    this->InvokeEvent(vtkCommand::ProgressEvent, const_cast<double*>(&one));
+    this->InvokeEvent(vtkCommand::EndEvent, nullptr);
+  }
+  if (!error.empty())
+  {
+    this->Display->Clear();
+    graph->ClearSolution(signature, this->Filter->GetMTime());
+    vtkErrorMacro("cannot solve the renderer's scene: " << error);
+    return false;
+  }
+  return true;
+}
+
+void vtkRadiosityPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* renderer = s->GetRenderer();
+  if (renderer->GetSelector())
+  {
+    // Hardware selection: the renderer's own props, as VTK draws them.
+    this->DefaultPass->Render(s);
+    this->NumberOfRenderedProps = this->DefaultPass->GetNumberOfRenderedProps();
+    return;
+  }
+  this->UpdateSolution(renderer);
+  const bool solved = this->HasSolution();
+  std::vector<vtkProp*> props;
+  props.reserve(s->GetPropArrayCount() + 1);
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (!solved || !this->SceneGraph->IsGathered(prop))
+    {
+      props.push_back(prop);
+    }
+  }
+  if (solved)
+  {
+    this->Display->SetExposure(this->Exposure);
+    this->Display->SetToneMapping(this->ToneMapping);
+    this->Display->Update();
+    props.push_back(this->Display->GetActor());
+  }
+  vtkRenderState state(renderer);
+  state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  state.SetFrameBuffer(s->GetFrameBuffer());
+  this->DelegatePass->Render(&state);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+}
+
+void vtkRadiosityPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Display->ReleaseGraphicsResources(window);
+  this->DefaultPass->ReleaseGraphicsResources(window);
+  if (this->DelegatePass != this->DefaultPass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(window);
+  }
+}
+
+void vtkRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << vtkRadiosityFilter::GetMethodName(this->Filter->GetMethod()) << "\n";
+  os << indent << "MaxReflectance: " << this->MaxReflectance << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "ToneMapping: " << this->ToneMapping << "\n";
+  os << indent << "NumberOfSolves: " << this->NumberOfSolves << "\n";
+  os << indent << "HasSolution: " << (this->HasSolution() ? "true" : "false") << "\n";
+  os << indent << "Display: " << this->Display->GetPathName() << "\n";
+  os << indent << "DelegatePass: " << this->DelegatePass.GetPointer()
+     << (this->DelegatePass == this->DefaultPass ? " (default vtkRenderStepsPass)" : "") << "\n";
+  os << indent << "Filter:\n";
+  this->Filter->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "SceneGraph: ";
+  if (this->SceneGraph)
+  {
+    os << "\n";
+    this->SceneGraph->PrintSelf(os, indent.GetNextIndent());
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+}

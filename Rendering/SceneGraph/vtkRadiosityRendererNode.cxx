@@ -1,0 +1,193 @@
+#include "vtkRadiosityRendererNode.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkRadiosityActorNode.h"
+#include "vtkRadiosityLightNode.h"
+#include "vtkRadiosityPolyDataMapperNode.h"
+#include "vtkRenderer.h"
+
+#include <map>
+
+vtkStandardNewMacro(vtkRadiosityRendererNode);
+
+vtkRadiosityRendererNode::vtkRadiosityRendererNode()
+  : SceneInput(vtkSmartPointer<vtkMultiBlockDataSet>::New())
+  , SceneLights(vtkSmartPointer<vtkLightCollection>::New())
+{
+}
+
+vtkRadiosityRendererNode::~vtkRadiosityRendererNode() = default;
+
+bool vtkRadiosityRendererNode::GetTwoSided()
+{
+  auto* renderer = vtkRenderer::SafeDownCast(this->GetRenderable());
+  return renderer && renderer->GetTwoSidedLighting();
+}
+
+void vtkRadiosityRendererNode::Synchronize(bool prepass)
+{
+  auto* renderer = vtkRenderer::SafeDownCast(this->GetRenderable());
+  if (!renderer)
+  {
+    return;
+  }
+  if (!prepass)
+  {
+    this->Gather();
+    return;
+  }
+  // Names for errors: the actor's index among the renderer's actors.
+  std::map<vtkObject*, int> index;
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  int i = 0;
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    index[actor] = i++;
+  }
+  for (vtkViewNode* child : this->GetChildren())
+  {
+    if (auto* node = vtkRadiosityActorNode::SafeDownCast(child))
+    {
+      vtkObject* actor = node->GetRenderable();
+      const auto found = index.find(actor);
+      node->SetLabel("actor " + std::to_string(found == index.end() ? -1 : found->second) + " (" +
+        actor->GetClassName() + ")");
+    }
+  }
+}
+
+void vtkRadiosityRendererNode::Gather()
+{
+  this->SceneInput = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  this->SceneLights = vtkSmartPointer<vtkLightCollection>::New();
+  this->GatherError.clear();
+  this->GatherWarnings.clear();
+  this->Gathered.clear();
+  this->CurrentSignature.clear();
+  this->NumberOfTriangles = 0;
+  unsigned int block = 0;
+  for (vtkViewNode* child : this->GetChildren())
+  {
+    if (auto* actorNode = vtkRadiosityActorNode::SafeDownCast(child))
+    {
+      vtkRadiosityPolyDataMapperNode* mapperNode = actorNode->GetMapperNode();
+      if (!actorNode->GetSolvable() || !mapperNode)
+      {
+        continue;
+      }
+      if (!mapperNode->GetError().empty() && this->GatherError.empty())
+      {
+        this->GatherError = mapperNode->GetError();
+      }
+      this->GatherWarnings.insert(this->GatherWarnings.end(), mapperNode->GetWarnings().begin(),
+        mapperNode->GetWarnings().end());
+      if (mapperNode->GetObjects().empty() && mapperNode->GetError().empty())
+      {
+        continue; // nothing to solve (no polygons): drawn as VTK draws it
+      }
+      this->Gathered.insert(vtkProp::SafeDownCast(actorNode->GetRenderable()));
+      this->CurrentSignature.emplace_back(actorNode->GetRenderable(), mapperNode->GetConvertedMTime());
+      for (const vtkRadiosityPolyDataMapperNode::Object& object : mapperNode->GetObjects())
+      {
+        this->SceneInput->SetBlock(block, object.Data);
+        this->SceneInput->GetMetaData(block)->Set(vtkCompositeDataSet::NAME(), object.Name.c_str());
+        this->NumberOfTriangles += object.Data->GetNumberOfCells();
+        ++block;
+      }
+    }
+  }
+  // The lights in the renderer's order (the order of its light collection).
+  vtkLightCollection* lights = vtkRenderer::SafeDownCast(this->GetRenderable())->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    auto* node = vtkRadiosityLightNode::SafeDownCast(this->GetViewNodeFor(light));
+    if (node && node->GetSolved())
+    {
+      this->SceneLights->AddItem(light);
+      this->CurrentSignature.emplace_back(light, node->GetSceneMTime());
+    }
+  }
+}
+
+vtkMultiBlockDataSet* vtkRadiosityRendererNode::GetSceneInput()
+{
+  return this->SceneInput;
+}
+
+vtkLightCollection* vtkRadiosityRendererNode::GetSceneLights()
+{
+  return this->SceneLights;
+}
+
+vtkPolyData* vtkRadiosityRendererNode::GetSolutionSurface()
+{
+  return this->SolutionSurface;
+}
+
+vtkPolyData* vtkRadiosityRendererNode::GetSolutionProduct()
+{
+  return this->SolutionProduct;
+}
+
+bool vtkRadiosityRendererNode::IsGathered(vtkProp* prop) const
+{
+  return this->Gathered.count(prop) > 0;
+}
+
+void vtkRadiosityRendererNode::SetSolution(vtkPolyData* surface, vtkPolyData* product,
+  const Signature& signature, vtkMTimeType filterTime)
+{
+  this->SolutionSurface = vtkSmartPointer<vtkPolyData>::New();
+  this->SolutionSurface->ShallowCopy(surface);
+  this->SolutionProduct = vtkSmartPointer<vtkPolyData>::New();
+  if (product)
+  {
+    this->SolutionProduct->ShallowCopy(product);
+  }
+  this->SolvedSignature = signature;
+  this->SolvedFilterTime = filterTime;
+  this->Solved = true;
+}
+
+void vtkRadiosityRendererNode::ClearSolution(const Signature& signature, vtkMTimeType filterTime)
+{
+  this->SolutionSurface = nullptr;
+  this->SolutionProduct = nullptr;
+  this->SolvedSignature = signature;
+  this->SolvedFilterTime = filterTime;
+  this->Solved = true;
+}
+
+bool vtkRadiosityRendererNode::IsSolvedFor(const Signature& signature, vtkMTimeType filterTime) const
+{
+  return this->Solved && signature == this->SolvedSignature && filterTime <= this->SolvedFilterTime;
+}
+
+void vtkRadiosityRendererNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaxReflectance: " << this->MaxReflectance << "\n";
+  os << indent << "LightScale: " << this->LightScale << "\n";
+  os << indent << "Objects: " << this->SceneInput->GetNumberOfBlocks() << " ("
+     << this->NumberOfTriangles << " triangles) of " << this->Gathered.size() << " actors\n";
+  os << indent << "SceneLights: " << this->SceneLights->GetNumberOfItems() << "\n";
+  os << indent << "GatherError: " << (this->GatherError.empty() ? "(none)" : this->GatherError) << "\n";
+  os << indent << "GatherWarnings: " << this->GatherWarnings.size() << "\n";
+  os << indent << "Signature: " << this->CurrentSignature.size() << " entries\n";
+  os << indent << "Solution: "
+     << (this->SolutionSurface ? std::to_string(this->SolutionSurface->GetNumberOfCells()) + " cells"
+                               : std::string("(none)"))
+     << "\n";
+}
