@@ -1,0 +1,323 @@
+#include "ImportedScene.h"
+
+#include "GltfFileCheck.h"
+#include "SceneFileCheck.h"
+
+#include "vtk3DSImporter.h"
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCamera.h"
+#include "vtkGLTFImporter.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMapper.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
+#include "vtkPolyData.h"
+#include "vtkVRMLImporter.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiosity
+{
+namespace cli
+{
+namespace
+{
+std::string LowerExtension(const std::string& file)
+{
+  const auto slash = file.find_last_of('/');
+  const auto dot = file.rfind('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return "";
+  }
+  std::string ext = file.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+// VTK's error and warning messages during an import, collected instead of
+// printed (the refusal is one line naming the file).
+class ImportMessages : public vtkOutputWindow
+{
+public:
+  static ImportMessages* New();
+  vtkTypeMacro(ImportMessages, vtkOutputWindow);
+  void DisplayErrorText(const char* text) override { this->Errors.push_back(Message(text)); }
+  void DisplayWarningText(const char* text) override { this->Warnings.push_back(Message(text)); }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayText(const char* text) override { this->Warnings.push_back(Message(text)); }
+  void DisplayDebugText(const char*) override {}
+  std::vector<std::string> Errors, Warnings;
+
+private:
+  // "ERROR: In file.cxx, line 12\nvtkGLTFImporter (0x55...): the message\n\n" -> the message.
+  static std::string Message(const char* text)
+  {
+    std::string s = text ? text : "";
+    const auto object = s.find("): ");
+    if (object != std::string::npos)
+    {
+      s = s.substr(object + 3);
+    }
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    while (!s.empty() && s.back() == ' ')
+    {
+      s.pop_back();
+    }
+    return s;
+  }
+};
+vtkStandardNewMacro(ImportMessages);
+
+// Runs the importer with VTK's messages collected.
+bool RunImporter(vtkImporter* importer, const std::string& file, ImportedScene& scene, std::string& error,
+  std::vector<std::string>& warnings)
+{
+  scene.Window = vtkSmartPointer<vtkRenderWindow>::New();
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Window->AddRenderer(scene.Renderer);
+  importer->SetRenderWindow(scene.Window);
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkNew<ImportMessages> messages;
+  vtkOutputWindow::SetInstance(messages);
+  importer->Read();
+  vtkOutputWindow::SetInstance(previous);
+  for (const std::string& w : messages->Warnings)
+  {
+    warnings.push_back(file + ": " + scene.Importer + ": " + w);
+  }
+  if (!messages->Errors.empty())
+  {
+    error = file + ": VTK's importer (" + scene.Importer + ") cannot read it: " + messages->Errors.front();
+    return false;
+  }
+  return true;
+}
+
+// Content checks of the formats without a checker of their own: what makes
+// VTK's parsers read past the bytes they have.
+bool Check3ds(const std::string& file, const std::string& bytes, std::string& error)
+{
+  // The main chunk: id 0x4D4D and a length no larger than the file.
+  if (bytes.size() < 6 || static_cast<unsigned char>(bytes[0]) != 0x4D ||
+    static_cast<unsigned char>(bytes[1]) != 0x4D)
+  {
+    error = file + ": not a 3D Studio file (it does not start with the main chunk 0x4D4D)";
+    return false;
+  }
+  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
+  const unsigned long length = b[2] | b[3] << 8 | b[4] << 16 | static_cast<unsigned long>(b[5]) << 24;
+  if (length > bytes.size() || length < 6)
+  {
+    error = file + ": the main chunk says " + std::to_string(length) + " bytes but the file holds " +
+      std::to_string(bytes.size()) + (length > bytes.size() ? " (truncated)" : "");
+    return false;
+  }
+  return true;
+}
+
+bool CheckVrml(const std::string& file, const std::string& bytes, std::string& error)
+{
+  // vtkVRMLImporter reads VRML 2.0 text (it refuses nothing itself: a file of
+  // another kind parses to nothing or to an error).
+  if (bytes.compare(0, 15, "#VRML V2.0 utf8") != 0)
+  {
+    error = file + ": not a VRML 2.0 file (it does not start with '#VRML V2.0 utf8'; VTK reads VRML 2.0)";
+    return false;
+  }
+  return true;
+}
+
+void TakeCamera(vtkCamera* camera, ViewCamera& view)
+{
+  camera->GetPosition(view.Position);
+  camera->GetFocalPoint(view.FocalPoint);
+  camera->GetViewUp(view.ViewUp);
+  view.ViewAngle = camera->GetViewAngle();
+}
+
+// The corrections to VTK 9.2's glTF lights (ImportedScene.h) and the lights a
+// vtkLight cannot carry.
+void FixGltfLights(const std::string& file, const GltfSummary& summary, ImportedScene& scene,
+  std::vector<std::string>& warnings, std::vector<std::string>& notes)
+{
+  vtkLightCollection* lights = scene.Renderer->GetLights();
+  std::vector<vtkLight*> imported;
+  lights->InitTraversal();
+  while (vtkLight* light = lights->GetNextItem())
+  {
+    imported.push_back(light);
+  }
+  if (imported.size() != summary.ImportedLightOrder.size())
+  {
+    warnings.push_back(file + ": VTK imported " + std::to_string(imported.size()) + " lights, the file places " +
+      std::to_string(summary.ImportedLightOrder.size()) + ": the lights are taken as VTK imported them");
+    return;
+  }
+  for (std::size_t k = 0; k < imported.size(); ++k)
+  {
+    vtkLight* light = imported[k];
+    const GltfLight& defined = summary.Lights[summary.ImportedLightOrder[k]];
+    light->SetPosition(0.0, 0.0, 0.0);
+    light->SetFocalPoint(0.0, 0.0, -1.0);
+    if (defined.Type == "spot" && defined.InnerConeAngle > 0.0)
+    {
+      double p[3], f[3];
+      light->GetTransformedPosition(p);
+      light->GetTransformedFocalPoint(f);
+      Light spot;
+      spot.Type = LightType::Spot;
+      spot.Position = Vec3(p[0], p[1], p[2]);
+      spot.Direction = Vec3(f[0] - p[0], f[1] - p[1], f[2] - p[2]);
+      spot.Intensity = RGB(defined.Intensity * defined.Color[0], defined.Intensity * defined.Color[1],
+        defined.Intensity * defined.Color[2]);
+      spot.InnerConeAngle = defined.InnerConeAngle;
+      spot.OuterConeAngle = defined.OuterConeAngle;
+      spot.Name = defined.Name;
+      scene.ExtraLights.Lights.push_back(spot);
+      scene.Renderer->RemoveLight(light);
+      notes.push_back(file + ": light " + std::to_string(summary.ImportedLightOrder[k]) +
+        " (spot, innerConeAngle " + std::to_string(defined.InnerConeAngle) +
+        ") is solved from the file's values: a vtkLight has no inner cone");
+    }
+  }
+}
+
+bool ImportGltf(const std::string& file, const std::string& bytes, ImportedScene& scene, std::string& error,
+  std::vector<std::string>& warnings, std::vector<std::string>& notes)
+{
+  GltfSummary summary;
+  if (!CheckGltf(file, bytes, summary, error, warnings))
+  {
+    return false;
+  }
+  scene.Importer = "vtkGLTFImporter";
+  vtkNew<vtkGLTFImporter> importer;
+  importer->SetFileName(file.c_str());
+  if (summary.Cameras > 0)
+  {
+    importer->SetCamera(0); // SPEC: the first camera for --image
+  }
+  if (!RunImporter(importer, file, scene, error, warnings))
+  {
+    return false;
+  }
+  scene.LightScale = 1.0; // the file's intensity one to one (ImportedScene.h)
+  scene.FileLights = summary.ImportedLightOrder.size();
+  FixGltfLights(file, summary, scene, warnings, notes);
+  if (summary.Cameras > 0)
+  {
+    scene.HasCamera = true;
+    TakeCamera(scene.Renderer->GetActiveCamera(), scene.Camera);
+  }
+  return true;
+}
+} // namespace
+
+bool IsImporterFile(const std::string& file)
+{
+  const std::string ext = LowerExtension(file);
+  return ext == "gltf" || ext == "glb" || ext == "3ds" || ext == "wrl" || ext == "vrml";
+}
+
+bool ImportScene(const std::string& file, ImportedScene& scene, std::string& error,
+  std::vector<std::string>& warnings, std::vector<std::string>& notes)
+{
+  scene = ImportedScene();
+  std::string bytes;
+  if (!ReadFileBytes(file, bytes, error))
+  {
+    return false;
+  }
+  if (bytes.empty())
+  {
+    error = file + ": the file is empty";
+    return false;
+  }
+  const std::string ext = LowerExtension(file);
+  if (ext == "gltf" || ext == "glb")
+  {
+    if (!ImportGltf(file, bytes, scene, error, warnings, notes))
+    {
+      return false;
+    }
+  }
+  else if (ext == "3ds")
+  {
+    if (!Check3ds(file, bytes, error))
+    {
+      return false;
+    }
+    scene.Importer = "vtk3DSImporter";
+    vtkNew<vtk3DSImporter> importer;
+    importer->SetFileName(file.c_str());
+    if (!RunImporter(importer, file, scene, error, warnings))
+    {
+      return false;
+    }
+  }
+  else if (ext == "wrl" || ext == "vrml")
+  {
+    if (!CheckVrml(file, bytes, error))
+    {
+      return false;
+    }
+    scene.Importer = "vtkVRMLImporter";
+    vtkNew<vtkVRMLImporter> importer;
+    importer->SetFileName(file.c_str());
+    if (!RunImporter(importer, file, scene, error, warnings))
+    {
+      return false;
+    }
+  }
+  else
+  {
+    error = file + ": not a file VTK's importers read (.gltf, .glb, .3ds, .wrl)";
+    return false;
+  }
+  if (scene.Importer != "vtkGLTFImporter")
+  {
+    scene.FileLights = static_cast<std::size_t>(scene.Renderer->GetLights()->GetNumberOfItems());
+    // An importer that set a camera made the renderer's active camera.
+    if (scene.Renderer->IsActiveCameraCreated())
+    {
+      scene.HasCamera = true;
+      TakeCamera(scene.Renderer->GetActiveCamera(), scene.Camera);
+    }
+  }
+  // What was imported: the surface actors and their polygons.
+  vtkActorCollection* actors = scene.Renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    vtkMapper* mapper = actor->GetMapper();
+    if (!mapper)
+    {
+      continue;
+    }
+    mapper->Update();
+    auto* pd = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+    if (pd && pd->GetNumberOfPolys() + pd->GetNumberOfStrips() > 0)
+    {
+      ++scene.Actors;
+      scene.Polygons += static_cast<std::size_t>(pd->GetNumberOfPolys() + pd->GetNumberOfStrips());
+    }
+  }
+  if (scene.Actors == 0)
+  {
+    error = file + ": no surfaces: " + scene.Importer + " imported " +
+      std::to_string(actors->GetNumberOfItems()) + " actors and none holds polygons";
+    return false;
+  }
+  notes.push_back("imported " + file + " with " + scene.Importer + ": " + std::to_string(scene.Actors) +
+    " surface actors, " + std::to_string(scene.Polygons) + " polygons, " + std::to_string(scene.FileLights) +
+    " lights, " + (scene.HasCamera ? "the file's camera" : "no camera"));
+  return true;
+}
+}
+}
