@@ -133,7 +133,7 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
   return (Pi / m) * sum;
 }
 
-std::array<Vec3, 3> DirectLighting::IrradianceVector(const Vec3& x, const Vec3& n) const
+std::array<Vec3, 3> DirectLighting::IrradianceVector(const Vec3& x, const Vec3& n, bool withSky) const
 {
   std::array<Vec3, 3> out{ Vec3(0.0), Vec3(0.0), Vec3(0.0) };
   for (std::size_t l = 0; l < this->Set.Lights.size(); ++l)
@@ -152,7 +152,7 @@ std::array<Vec3, 3> DirectLighting::IrradianceVector(const Vec3& x, const Vec3& 
       out[k] += (h[k] / c) * towards;
     }
   }
-  if (this->HasSky())
+  if (withSky && this->HasSky())
   {
     const RGB sky = this->SkyIrradiance(x, n);
     for (int k = 0; k < 3; ++k)

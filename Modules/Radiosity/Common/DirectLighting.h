@@ -62,9 +62,10 @@ public:
    * each visible punctual light in front of the surface contributes its
    * I falloff / d^2 along the direction towards it (so n . E is the scalar
    * irradiance, and a glossy display sees where the lamp is); the sky, which
-   * has no single direction, contributes its irradiance along n.
+   * has no single direction, contributes its irradiance along n (`withSky`
+   * off: the punctual lights alone).
    */
-  std::array<Vec3, 3> IrradianceVector(const Vec3& x, const Vec3& n) const;
+  std::array<Vec3, 3> IrradianceVector(const Vec3& x, const Vec3& n, bool withSky = true) const;
 
   struct PowerEstimate
   {

@@ -25,6 +25,24 @@ double DistanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
   return glm::length(p - (a + s * ab));
 }
 
+/// The punctual lights at an element's corners and centre, where the
+/// methods sample them (the points of ElementSamples).
+ElementSamples PunctualSamples(const DirectLighting& lights, const SolutionMesh& solution, std::size_t t)
+{
+  const auto& tri = solution.Triangles[t];
+  const Vec3& n = solution.Normals[t];
+  ElementSamples s;
+  Vec3 centre(0.0);
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3& x = solution.Points[tri.V[k]];
+    s.Corner[k] = lights.Punctual(x, n);
+    centre += x / 3.0;
+  }
+  s.Centre = lights.Punctual(centre, n);
+  return s;
+}
+
 Scene AsScene(const SolutionMesh& solution)
 {
   Scene s;
@@ -100,6 +118,11 @@ std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes) cons
       ProjectOnTriangle(probe.Position, this->Solution.Points[tri.V[0]], this->Solution.Points[tri.V[1]],
         this->Solution.Points[tri.V[2]], u, v, w);
       values[i] = InterpolateSamples(this->Solution.Samples[t], u, v, w);
+      if (this->ExactPunctual && this->Lights && this->Lights->HasPunctualLights())
+      {
+        values[i] += this->Lights->Punctual(probe.Position, this->Solution.Normals[t]) -
+          InterpolateSamples(PunctualSamples(*this->Lights, this->Solution, t), u, v, w);
+      }
     });
   this->Gathered = gathered;
   return values;

@@ -49,6 +49,19 @@ public:
    */
   std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
 
+  /**
+   * On (the default for sensors): on a surface, the punctual lights' direct
+   * light is taken exactly at the sensor (DirectLighting::Punctual: the
+   * closed form and one shadow ray per light), and the element's interpolant
+   * carries the rest: its samples less the punctual light at the sample
+   * points, so that a hard shadow edge or a spot's cone edge inside an
+   * element is where it is, not where the interpolation smears it
+   * (Lehtinen et al. 2007, figure 1, and section 6.5: direct light per
+   * pixel, the finite elements for what is smooth). Off: the interpolant
+   * alone, as the Gouraud display draws it.
+   */
+  void SetExactPunctualLight(bool on) { this->ExactPunctual = on; }
+
   /// How many of the last probes were gathered rather than interpolated.
   std::size_t GatheredCount() const { return this->Gathered; }
 
@@ -59,6 +72,7 @@ private:
   std::unique_ptr<Visibility> Rays;
   std::unique_ptr<DirectLighting> Lights; ///< what a gathering sensor sees of the lights and sky
   double Tolerance = 0.0;
+  bool ExactPunctual = true;
   mutable std::size_t Gathered = 0;
 };
 } // namespace radiosity

@@ -8,6 +8,7 @@
 #ifndef Radiosity_RadiositySolver_h
 #define Radiosity_RadiositySolver_h
 
+#include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/Scene.h"
 #include "Radiosity/Common/SolutionMesh.h"
 #include "Radiosity/Common/SolverTypes.h"
@@ -81,6 +82,26 @@ public:
   /// Point arrays of the surface beyond the SPEC fields (face cluster: the
   /// irradiance vectors for vtkVectorIrradianceMapper); none by default.
   virtual std::vector<ProductArray> SurfacePointArrays() const { return {}; }
+  /**
+   * Irradiance at sensors (SPEC: --probes) from the method's own solution
+   * representation, the punctual lights' direct light taken exactly at each
+   * sensor (ProbeEvaluator::SetExactPunctualLight). By default from the
+   * surface (ProbeEvaluator); the hierarchical method evaluates its
+   * quadratic interpolants, the meshless one its Shepard field, the face
+   * cluster one its vector irradiance bases. `gathered`: how many sensors
+   * lay on no surface and were gathered from the solution instead.
+   */
+  virtual std::vector<RGB> EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered = nullptr) const
+  {
+    const SolutionMesh surface = this->Surface();
+    const ProbeEvaluator evaluator(surface, *this->SceneRef);
+    std::vector<RGB> values = evaluator.Evaluate(probes);
+    if (gathered)
+    {
+      *gathered = evaluator.GatheredCount();
+    }
+    return values;
+  }
   /// The method's own product (may take time: progress and abort apply).
   virtual SolverProduct Product(const ProgressCallback& progress) const = 0;
   const Scene& GetScene() const { return *this->SceneRef; }

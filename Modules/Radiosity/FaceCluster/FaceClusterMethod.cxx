@@ -26,6 +26,15 @@ std::vector<ProductArray> FaceClusterMethod::SurfacePointArrays() const
   return { std::move(array) };
 }
 
+std::vector<RGB> FaceClusterMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const
+{
+  if (gathered)
+  {
+    *gathered = 0;
+  }
+  return this->Solver.Evaluate(probes);
+}
+
 SolverProduct FaceClusterMethod::Product(const ProgressCallback&) const
 {
   using Type = ProductArray::ValueType;

@@ -19,6 +19,8 @@ public:
     std::shared_ptr<const FaceClusterHierarchy> hierarchy = nullptr);
   const char* MethodName() const override { return "facecluster"; }
   SolutionMesh Surface() const override;
+  /// From the vector irradiance bases (FaceClusterRadiosity::Evaluate).
+  std::vector<RGB> EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered = nullptr) const override;
   /// `IrradianceVector` (9 values: the R, G, B vectors) at every scene point.
   std::vector<ProductArray> SurfacePointArrays() const override;
   /// Kind "LeafClusters": the input triangles with `LeafElement` (the leaf

@@ -121,7 +121,9 @@ public:
 
   /// The irradiance vector at x on triangle t, from the leaf element there.
   IrradianceVector IrradianceVectorAt(std::uint32_t t, const Vec3& x) const;
-  /// Irradiance (W/m^2) at x with normal n on triangle t: (n . E_c)_+.
+  /// Irradiance (W/m^2) at x with normal n on triangle t: (n . E_c)_+,
+  /// the punctual lights' part exact at x (DirectLighting::Punctual) and
+  /// the expansion carrying the rest (the sensors' value, SPEC --probes).
   RGB IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const;
   /// Per scene point: the irradiance vector (9 values: R, G, B vectors),
   /// the mean over the triangles using the point of their leaf elements'
@@ -164,7 +166,11 @@ private:
 
   /// The irradiance vector of element e's expansion at x (zero for e < 0),
   /// limited to the range it takes at the element's nodes.
-  IrradianceVector Expansion(std::int32_t e, const Vec3& x) const;
+  /// Leaf e's expansion at x; `limit` off: without the limiter.
+  IrradianceVector Expansion(std::int32_t e, const Vec3& x, bool limit = true) const;
+  /// The punctual lights' vector irradiance at leaf e's nodes fitted by its
+  /// basis, as the first iteration fits them (TransportLight), at x.
+  IrradianceVector PunctualExpansion(std::int32_t e, const Vec3& x) const;
   /// Lowest and Highest of every leaf.
   void BoundLeafExpansions();
   /// An element of `cluster`, or with `corners`, of a part of that

@@ -69,7 +69,7 @@ std::int32_t FaceClusterRadiosity::PartAt(std::int32_t e, const Vec3& x) const
   return e;
 }
 
-IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x) const
+IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x, bool limit) const
 {
   IrradianceVector v{};
   if (e < 0)
@@ -94,7 +94,7 @@ IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x) 
   // back until every component lies within its range at the nodes, widened
   // by half of it.
   double theta = 1.0;
-  for (int c = 0; c < 3; ++c)
+  for (int c = 0; c < 3 && limit; ++c)
   {
     const Vec3 mean = phi[0] * leaf.Irradiance[0][c];
     for (int k = 0; k < 3; ++k)
@@ -161,9 +161,57 @@ IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const
   return this->Expansion(this->LeafAt(t, x), x);
 }
 
+IrradianceVector FaceClusterRadiosity::PunctualExpansion(std::int32_t e, const Vec3& x) const
+{
+  IrradianceVector v{};
+  if (e < 0 || !this->Lights || !this->Nodes[e].Data.IsLeaf())
+  {
+    return v; // clusters receive the lights only once opened (TransportLight)
+  }
+  const FaceClusterElement& leaf = this->Nodes[e];
+  const int ne = this->IrradianceBasis.Size();
+  std::array<IrradianceVector, PolynomialBasis::MaximumSize> coefficients{};
+  for (std::size_t q = 0; q < leaf.Rule.Size(); ++q)
+  {
+    const IrradianceVector atNode = this->Lights->IrradianceVector(leaf.Rule.Points[q], leaf.Rule.Normals[q], false);
+    for (int a = 0; a < ne; ++a)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        coefficients[a][c] += leaf.Rule.Dual[q * ne + a] * atNode[c];
+      }
+    }
+  }
+  const glm::dvec2 uv = glm::clamp(BoxCoordinates(leaf.Data, x), glm::dvec2(0.0), glm::dvec2(1.0));
+  double phi[PolynomialBasis::MaximumSize];
+  this->IrradianceBasis.Evaluate(uv.x, uv.y, phi);
+  for (int a = 0; a < ne; ++a)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] += phi[a] * coefficients[a][c];
+    }
+  }
+  return v;
+}
+
 RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const
 {
-  return Received(this->IrradianceVectorAt(t, x), n);
+  const std::int32_t leaf = this->LeafAt(t, x);
+  if (!this->Lights || !this->Lights->HasPunctualLights() || leaf < 0)
+  {
+    return Received(this->Expansion(leaf, x), n);
+  }
+  // The expansion less its fit of the punctual lights (linear, so without
+  // the limiter), plus the punctual lights at x itself.
+  const IrradianceVector total = this->Expansion(leaf, x, false);
+  const IrradianceVector punctual = this->PunctualExpansion(leaf, x);
+  IrradianceVector rest;
+  for (int c = 0; c < 3; ++c)
+  {
+    rest[c] = total[c] - punctual[c];
+  }
+  return Received(rest, n) + this->Lights->Punctual(x, n);
 }
 
 std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors() const

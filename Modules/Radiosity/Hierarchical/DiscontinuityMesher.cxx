@@ -701,6 +701,15 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
           r[k] = value(w, w.TriangleSamples[t][k]) + (w.PunctualNodes.empty() ? RGB(0.0) : w.PunctualNodes[6 * t + k]);
         }
         out.Interpolants.push_back(QuadraticInterpolant::FromSamples(r));
+        if (!w.PunctualNodes.empty())
+        {
+          std::array<RGB, 6> p;
+          for (int k = 0; k < 6; ++k)
+          {
+            p[k] = w.PunctualNodes[6 * t + k];
+          }
+          out.PunctualInterpolants.push_back(QuadraticInterpolant::FromSamples(p));
+        }
         out.Leaf.push_back(leaves[i]);
         out.SourceTriangle.push_back(el.Source);
         out.Level.push_back(el.Level);
@@ -713,9 +722,11 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
   });
 }
 
-std::vector<RGB> EvaluateInterpolants(
-  const DiscontinuityMesh& mesh, const std::vector<Probe>& probes, double tolerance)
+std::vector<RGB> EvaluateInterpolants(const DiscontinuityMesh& mesh, const std::vector<Probe>& probes,
+  double tolerance, const DirectLighting* exactPunctual)
 {
+  const bool split = exactPunctual && exactPunctual->HasPunctualLights() &&
+    mesh.PunctualInterpolants.size() == mesh.Interpolants.size();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<RGB> values(probes.size(), RGB(nan));
   const double cosLimit = std::cos(25.0 * 3.14159265358979323846 / 180.0);
@@ -739,6 +750,11 @@ std::vector<RGB> EvaluateInterpolants(
       {
         best = dist;
         values[i] = mesh.Interpolants[t].Evaluate(v, w);
+        if (split)
+        {
+          values[i] -= mesh.PunctualInterpolants[t].Evaluate(v, w);
+          values[i] += exactPunctual->Punctual(probe.Position, mesh.Normals[t]);
+        }
       }
     }
   });

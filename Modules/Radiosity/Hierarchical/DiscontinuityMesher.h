@@ -26,6 +26,7 @@
 
 namespace radiosity
 {
+class DirectLighting;
 struct DiscontinuityMeshOptions
 {
   /// Mesh the discontinuities; off: one interpolant per leaf (no CGAL work).
@@ -47,6 +48,9 @@ struct DiscontinuityMesh
   std::vector<Vec3> Points;
   std::vector<Triangle> Triangles;
   std::vector<QuadraticInterpolant> Interpolants; ///< irradiance, per triangle
+  /// The punctual lights' part of each interpolant (through their values at
+  /// the six nodes); empty without punctual lights.
+  std::vector<QuadraticInterpolant> PunctualInterpolants;
   std::vector<RGB> PointIrradiance;               ///< the sample at each point
   std::vector<std::uint32_t> Leaf;                ///< quadtree leaf of each triangle
   std::vector<std::uint32_t> SourceTriangle;      ///< input triangle of each triangle
@@ -74,8 +78,11 @@ RGB AccuratePointIrradiance(
 
 /// Irradiance at probes from the interpolants: each probe is located on the
 /// mesh (within `tolerance`, normals within 25 degrees); NaN where none is found.
-std::vector<RGB> EvaluateInterpolants(
-  const DiscontinuityMesh& mesh, const std::vector<Probe>& probes, double tolerance);
+/// With `exactPunctual`, the punctual lights' direct light is taken exactly
+/// at each probe and the interpolant carries the rest (the interpolant less
+/// its punctual part), as ProbeEvaluator does for the sensors.
+std::vector<RGB> EvaluateInterpolants(const DiscontinuityMesh& mesh, const std::vector<Probe>& probes,
+  double tolerance, const DirectLighting* exactPunctual = nullptr);
 } // namespace radiosity
 
 #endif

@@ -1,5 +1,7 @@
 #include "Radiosity/Hierarchical/HierarchicalMethod.h"
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 namespace radiosity
@@ -14,6 +16,50 @@ HierarchicalMethod::HierarchicalMethod(std::shared_ptr<const Scene> scene,
 SolutionMesh HierarchicalMethod::Surface() const
 {
   return ExtractSolution(this->Solver.Mesh());
+}
+
+std::vector<RGB> HierarchicalMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const
+{
+  std::vector<RGB> values(probes.size(), RGB(std::numeric_limits<double>::quiet_NaN()));
+  if (this->Meshing.Discontinuities)
+  {
+    if (this->Mesh.Triangles.empty())
+    {
+      this->Mesh = BuildDiscontinuityMesh(this->Solver, this->Meshing);
+    }
+    values = EvaluateInterpolants(
+      this->Mesh, probes, 1e-6 * this->Solver.Analysis().Diagonal, this->Solver.GetDirectLighting());
+  }
+  // The probes on no interpolant's triangle: from the leaves.
+  std::vector<Probe> rest;
+  std::vector<std::size_t> restIndex;
+  for (std::size_t i = 0; i < probes.size(); ++i)
+  {
+    if (!std::isfinite(Luminance(values[i])))
+    {
+      rest.push_back(probes[i]);
+      restIndex.push_back(i);
+    }
+  }
+  if (gathered)
+  {
+    *gathered = 0;
+  }
+  if (!rest.empty())
+  {
+    const SolutionMesh leaves = this->Surface();
+    const ProbeEvaluator evaluator(leaves, this->GetScene());
+    const std::vector<RGB> fromLeaves = evaluator.Evaluate(rest);
+    for (std::size_t i = 0; i < rest.size(); ++i)
+    {
+      values[restIndex[i]] = fromLeaves[i];
+    }
+    if (gathered)
+    {
+      *gathered = evaluator.GatheredCount();
+    }
+  }
+  return values;
 }
 
 SolverProduct HierarchicalMethod::Product(const ProgressCallback& progress) const

@@ -18,6 +18,10 @@ public:
     const DiscontinuityMeshOptions& meshing);
   const char* MethodName() const override { return "hierarchical"; }
   SolutionMesh Surface() const override;
+  /// From the quadratic interpolants of the discontinuity mesh (built here
+  /// if Product() has not been), the probes on no mesh triangle from the
+  /// leaves; with discontinuity meshing off, from the leaves.
+  std::vector<RGB> EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered = nullptr) const override;
   /// Kind "DiscontinuityMesh": the triangles with `QuadraticInterpolant`
   /// (18 values: six coefficients per channel), the SPEC fields, `ElementId`
   /// (quadtree leaf), `Level` and `ObjectId`; point `Irradiance` and `Radiosity`.

@@ -12,6 +12,15 @@ SolutionMesh MeshlessMethod::Surface() const
   return this->Solver.Surface();
 }
 
+std::vector<RGB> MeshlessMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const
+{
+  if (gathered)
+  {
+    *gathered = 0;
+  }
+  return this->Solver.Evaluate(probes);
+}
+
 SolverProduct MeshlessMethod::Product(const ProgressCallback&) const
 {
   using Type = ProductArray::ValueType;

@@ -16,6 +16,8 @@ public:
   MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options);
   const char* MethodName() const override { return "meshless"; }
   SolutionMesh Surface() const override;
+  /// From the Shepard field (MeshlessRadiosity::Evaluate).
+  std::vector<RGB> EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered = nullptr) const override;
   /// Kind "ShepardField": vertices with `Level`, `Radius`, `Normal`,
   /// `Group`, `Coefficient` (total irradiance), `DirectCoefficient`,
   /// `Irradiance` (the field evaluated at the point) and `Gathered`.

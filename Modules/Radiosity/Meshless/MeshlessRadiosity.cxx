@@ -56,7 +56,39 @@ struct MeshlessRadiosity::Bounce
   std::vector<unsigned char> Computed;
   std::unique_ptr<ShepardField> Field;
   double Magnitude = 0.0; ///< sum of the coarsest level's values (largest channel)
+  /// The receivers in the order their coefficients were set (each sorted by
+  /// index, so by level): the fit is linear in the values, and replaying it
+  /// with other values gives their approximation on the same functions.
+  std::vector<std::vector<std::uint32_t>> Batches;
 };
+
+namespace
+{
+/// Eq. 10 for receivers sorted by level: each coefficient is its point's
+/// value less the approximation of the coarser levels there.
+void FitBatch(const PointHierarchy& points, const std::vector<std::uint32_t>& set,
+  const std::vector<RGB>& value, ShepardField& field)
+{
+  const auto& all = points.Points();
+  std::vector<RGB>& alpha = field.Coefficients();
+  std::size_t begin = 0;
+  while (begin < set.size())
+  {
+    const int level = all[set[begin]].Level;
+    std::size_t end = begin;
+    while (end < set.size() && all[set[end]].Level == level)
+    {
+      ++end;
+    }
+    tbb::parallel_for(begin, end, [&](std::size_t k) {
+      const std::uint32_t j = set[k];
+      const MeshlessPoint& p = all[j];
+      alpha[j] = level == 0 ? value[j] : value[j] - field.Evaluate(p.Position, p.Normal, p.Group, level - 1);
+    });
+    begin = end;
+  }
+}
+}
 
 MeshlessRadiosity::MeshlessRadiosity(const Scene& scene, const MeshlessOptions& options)
   : SourceScene(scene)
@@ -219,29 +251,13 @@ void MeshlessRadiosity::Refine(Bounce& out, const ValueAt& valueAt)
     tbb::parallel_for(std::size_t(0), set.size(), [&](std::size_t k) {
       out.Value[set[k]] = valueAt(set[k]);
     });
-    std::size_t begin = 0;
-    while (begin < set.size())
+    FitBatch(points, set, out.Value, *out.Field);
+    for (std::uint32_t j : set)
     {
-      const int level = all[set[begin]].Level;
-      std::size_t end = begin;
-      while (end < set.size() && all[set[end]].Level == level)
-      {
-        ++end;
-      }
-      tbb::parallel_for(begin, end, [&](std::size_t k) {
-        const std::uint32_t j = set[k];
-        const MeshlessPoint& p = all[j];
-        alpha[j] = level == 0
-          ? out.Value[j]
-          : out.Value[j] - out.Field->Evaluate(p.Position, p.Normal, p.Group, level - 1);
-      });
-      for (std::size_t k = begin; k < end; ++k)
-      {
-        out.Computed[set[k]] = 1;
-        this->Touched[set[k]] = 1;
-      }
-      begin = end;
+      out.Computed[j] = 1;
+      this->Touched[j] = 1;
     }
+    out.Batches.push_back(set);
     this->Stats.GatherOperations += set.size();
   };
 
@@ -358,8 +374,14 @@ RGB MeshlessRadiosity::IrradianceAt(const Vec3& x, const Vec3& n, std::uint32_t 
   {
     return RGB(0.0); // no emitter, or aborted before the points were placed: the zero solution
   }
-  return this->Solution->Evaluate(
-    x, n, static_cast<std::uint32_t>(this->SourceScene.ObjectIds[triangle]));
+  const auto group = static_cast<std::uint32_t>(this->SourceScene.ObjectIds[triangle]);
+  if (this->Punctual)
+  {
+    // The punctual lights exact at x, the field carrying the rest.
+    return this->Solution->Evaluate(x, n, group) - this->Punctual->Evaluate(x, n, group) +
+      this->Lights->Punctual(x, n);
+  }
+  return this->Solution->Evaluate(x, n, group);
 }
 
 SolutionMesh MeshlessRadiosity::Surface() const
@@ -472,6 +494,22 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     this->Direct = std::make_unique<ShepardField>(points);
     this->Direct->Coefficients() = direct.Field->Coefficients();
     this->Solution->Coefficients() = direct.Field->Coefficients();
+    this->Punctual.reset();
+    if (this->Lights && this->Lights->HasPunctualLights())
+    {
+      // The punctual lights' share of the direct field: the same fit
+      // replayed with their exact values at the same points.
+      this->Punctual = std::make_unique<ShepardField>(points);
+      std::vector<RGB> value(points.Points().size(), RGB(0.0));
+      for (const std::vector<std::uint32_t>& set : direct.Batches)
+      {
+        tbb::parallel_for(std::size_t(0), set.size(), [&](std::size_t k) {
+          const MeshlessPoint& p = points.Points()[set[k]];
+          value[set[k]] = this->Lights->Punctual(p.Position, p.Normal);
+        });
+        FitBatch(points, set, value, *this->Punctual);
+      }
+    }
     this->Stats.DirectSeconds = clock.Seconds() - this->Stats.PlacementSeconds;
     const double base = std::max(direct.Magnitude, 1e-300);
     const double perPoint = area / static_cast<double>(points.LevelEnd(0));

@@ -105,7 +105,9 @@ public:
   /// Whether point j's coefficient was computed in some bounce (sparsity).
   bool WasGatheredTo(std::size_t j) const { return j < this->Touched.size() && this->Touched[j]; }
 
-  /// Irradiance at (x, n) on input triangle `triangle` (its object is the group).
+  /// Irradiance at (x, n) on input triangle `triangle` (its object is the
+  /// group); the punctual lights' direct light exact at x, the field
+  /// carrying the rest (Lehtinen et al., figure 1: direct light per pixel).
   RGB IrradianceAt(const Vec3& x, const Vec3& n, std::uint32_t triangle) const;
   /// The field on the input surfaces: the triangles split uniformly to
   /// SurfaceElementSize, each element's corners and centre evaluated from the
@@ -132,6 +134,9 @@ private:
   std::unique_ptr<DirectLighting> Lights; ///< punctual lights and sky (null without)
   std::unique_ptr<PointHierarchy> Hierarchy;
   std::unique_ptr<ShepardField> Direct, Solution;
+  /// The punctual lights' part of Direct (null without punctual lights):
+  /// IrradianceAt replaces it by their exact value at the point.
+  std::unique_ptr<ShepardField> Punctual;
   std::vector<std::uint32_t> Emitters;
   std::vector<unsigned char> Touched; ///< per point: gathered to at least once
   double Scale = 0.0;                 ///< largest coarse direct irradiance (one channel)
