@@ -8,6 +8,7 @@
 #include "ProgressBar.h"
 #include "Report.h"
 #include "SceneLoader.h"
+#include "SolveTarget.h"
 
 #include "vtkCamera.h"
 #include "vtkCornellBoxSource.h"
@@ -51,17 +52,16 @@ namespace solve
 /// discontinuity meshing (SPEC), through vtkRadiosityFilter: port 0 the
 /// constant leaves, port 1 the discontinuity mesh.
 int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
-  const std::vector<RGB>& reference, const std::string& referenceKind, const LightSet& lights,
-  vtkDataObject* input, double loadSeconds, Clock::time_point start)
+  std::vector<RGB>& reference, std::string& referenceKind, const LightSet& lights,
+  SolveTarget& target, double loadSeconds, Clock::time_point start)
 {
   if (!(args.LinkTolerance > 0.0))
   {
     throw BadInput("--link-tolerance must be positive");
   }
   // The VTK pipeline: the radiosity filter (hierarchical) solves and meshes.
-  vtkNew<vtkRadiosityFilter> filter;
-  filter->SetInputData(input);
-  filter->SetMethodToHierarchical();
+  vtkRadiosityFilter* filter = target.Filter();
+  target.SetMethod(vtkRadiosityFilter::Hierarchical);
   filter->SetLinkTolerance(args.LinkTolerance);
   filter->SetMinElementSize(args.MinElementSize);
   filter->SetMaxRefinementRounds(args.MaxRefinementRounds);
@@ -69,7 +69,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   filter->SetMaxDiscontinuitiesPerLeaf(args.DiscontinuitiesPerLeaf);
   filter->SetMinDiscontinuityWeight(args.MinDiscontinuityWeight);
   cli::ProgressBar bar;
-  RunRadiosityFilter(filter, args, probes, reference, lights, bar);
+  RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar);
   const std::vector<std::string>& warnings = filter->GetWarnings();
   const SceneCleanupReport& cleanup = filter->GetCleanupReport();
   const Scene& scene = filter->GetScene();
@@ -103,7 +103,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   }
   const auto renderStart = Clock::now();
   RenderOutputs(args, solved,
-    meshing ? cli::InterpolantSolution(mesh, scene) : leaves, scene);
+    meshing ? cli::InterpolantSolution(mesh, scene) : leaves, scene, nullptr, target.Camera());
   phases["render_s"] = Since(renderStart);
 
   // Probes: from the interpolants (meshing) or the constant leaves; a probe
@@ -201,6 +201,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       report["discontinuity_mesh"] = nullptr;
     }
     report["lights"] = LightsReport(scene);
+    report["scene"]["import"] = target.ImportReport();
     ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {

@@ -10,6 +10,7 @@
 #include "vtkGLTFImporter.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkLogger.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -82,18 +83,15 @@ bool RunImporter(vtkImporter* importer, const std::string& file, ImportedScene& 
   scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
   scene.Window->AddRenderer(scene.Renderer);
   importer->SetRenderWindow(scene.Window);
-  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
-  vtkNew<ImportMessages> messages;
-  vtkOutputWindow::SetInstance(messages);
+  VtkMessages messages;
   importer->Read();
-  vtkOutputWindow::SetInstance(previous);
-  for (const std::string& w : messages->Warnings)
+  for (const std::string& w : messages.Warnings())
   {
     warnings.push_back(file + ": " + scene.Importer + ": " + w);
   }
-  if (!messages->Errors.empty())
+  if (!messages.Errors().empty())
   {
-    error = file + ": VTK's importer (" + scene.Importer + ") cannot read it: " + messages->Errors.front();
+    error = file + ": VTK's importer (" + scene.Importer + ") cannot read it: " + messages.Errors().front();
     return false;
   }
   return true;
@@ -219,6 +217,40 @@ bool ImportGltf(const std::string& file, const std::string& bytes, ImportedScene
 }
 } // namespace
 
+struct VtkMessages::Internals
+{
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  vtkNew<ImportMessages> Collector;
+  vtkLogger::Verbosity Stderr;
+};
+
+VtkMessages::VtkMessages()
+  : Data(new Internals)
+{
+  this->Data->Previous = vtkOutputWindow::GetInstance();
+  vtkOutputWindow::SetInstance(this->Data->Collector);
+  // VTK also logs every error and warning to stderr through vtkLogger.
+  this->Data->Stderr = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+}
+
+VtkMessages::~VtkMessages()
+{
+  vtkLogger::SetStderrVerbosity(this->Data->Stderr);
+  vtkOutputWindow::SetInstance(this->Data->Previous);
+  delete this->Data;
+}
+
+const std::vector<std::string>& VtkMessages::Errors() const
+{
+  return this->Data->Collector->Errors;
+}
+
+const std::vector<std::string>& VtkMessages::Warnings() const
+{
+  return this->Data->Collector->Warnings;
+}
+
 bool IsImporterFile(const std::string& file)
 {
   const std::string ext = LowerExtension(file);
@@ -229,6 +261,7 @@ bool ImportScene(const std::string& file, ImportedScene& scene, std::string& err
   std::vector<std::string>& warnings, std::vector<std::string>& notes)
 {
   scene = ImportedScene();
+  scene.File = file;
   std::string bytes;
   if (!ReadFileBytes(file, bytes, error))
   {

@@ -56,6 +56,7 @@ struct ViewCamera
 
 struct ImportedScene
 {
+  std::string File;     ///< as given
   std::string Importer; ///< VTK's class: "vtkGLTFImporter", "vtk3DSImporter", "vtkVRMLImporter"
   vtkSmartPointer<vtkRenderWindow> Window; ///< the importer's, never rendered
   vtkSmartPointer<vtkRenderer> Renderer;   ///< the imported actors, lights and camera
@@ -68,6 +69,24 @@ struct ImportedScene
   std::size_t Actors = 0;      ///< surface actors imported
   std::size_t Polygons = 0;    ///< their polygons and strips
   std::size_t FileLights = 0;  ///< lights the file defines (glTF) or VTK imported
+};
+
+/// VTK's error and warning messages (vtkErrorMacro, vtkWarningMacro) while
+/// it lives, collected instead of printed: "the message" without VTK's file,
+/// line and object prefix.
+class VtkMessages
+{
+public:
+  VtkMessages();
+  ~VtkMessages();
+  VtkMessages(const VtkMessages&) = delete;
+  VtkMessages& operator=(const VtkMessages&) = delete;
+  const std::vector<std::string>& Errors() const;
+  const std::vector<std::string>& Warnings() const;
+
+private:
+  struct Internals;
+  Internals* Data;
 };
 
 /// True for the extensions read by VTK's importers: .gltf, .glb, .3ds, .wrl, .vrml.

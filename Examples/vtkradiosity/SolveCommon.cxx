@@ -7,6 +7,7 @@
 #include "ProgressBar.h"
 #include "Report.h"
 #include "SceneLoader.h"
+#include "SolveTarget.h"
 
 #include "vtkCamera.h"
 #include "vtkCornellBoxSource.h"
@@ -137,7 +138,7 @@ void WriteVtp(vtkPolyData* data, const std::string& file)
 /// when given) and --exr by ray casting `radiance` from the same camera;
 /// --reference-exr path traces that view.
 void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
-  const Scene& scene, vtkPolyData* shepardField)
+  const Scene& scene, vtkPolyData* shepardField, const cli::ViewCamera* camera)
 {
   if (args.Image.empty() && args.Exr.empty())
   {
@@ -148,7 +149,11 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const Soluti
   view->SetInputData(solved);
   view->SetShepardField(shepardField);
   view->SetSize(args.Width, args.Height);
-  if (args.Scene == "cornell")
+  if (camera)
+  {
+    view->SetCamera(camera->Position, camera->FocalPoint, camera->ViewUp, camera->ViewAngle);
+  }
+  else if (args.Scene == "cornell")
   {
     double position[3], focal[3], up[3], angle;
     vtkCornellBoxSource::GetCamera(position, focal, up, angle);
@@ -321,11 +326,49 @@ std::string EmitterSummary(const Scene& scene)
   return text;
 }
 
-void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
-  const std::vector<Probe>& probes, const std::vector<RGB>& reference, const LightSet& lights,
-  cli::ProgressBar& bar)
+void ComputeReference(const SolveArguments& args, const Scene& scene, const std::vector<Probe>& probes,
+  std::vector<RGB>& reference, std::string& referenceKind)
 {
-  filter->SetSceneLights(lights);
+  std::string error;
+  reference.clear();
+  if (args.Reference == "analytic")
+  {
+    AnalyticReference analytic;
+    if (!ComputeAnalyticReference(scene, probes, analytic, error))
+    {
+      throw BadInput("--reference analytic: " + error);
+    }
+    reference = analytic.Irradiance;
+    referenceKind = "analytic: " + analytic.Kind;
+  }
+  else if (args.Reference == "pathtraced")
+  {
+    PathTracerOptions options;
+    options.SamplesPerProbe = args.ReferenceSamples;
+    const PathTracer tracer(scene, options);
+    double worst = 0.0;
+    for (const ReferenceValue& v : tracer.Irradiance(probes))
+    {
+      reference.push_back(v.Value);
+      if (Luminance(v.Value) > 0)
+      {
+        worst = std::max(worst, Luminance(v.StandardError) / Luminance(v.Value));
+      }
+    }
+    char kind[160];
+    std::snprintf(kind, sizeof kind,
+      "path traced: %zu paths per probe, largest relative standard error %.2e",
+      args.ReferenceSamples, worst);
+    referenceKind = kind;
+  }
+}
+
+void RunRadiosityFilter(SolveTarget& target, const SolveArguments& args,
+  const std::vector<Probe>& probes, std::vector<RGB>& reference, std::string& referenceKind,
+  const LightSet& lights, cli::ProgressBar& bar)
+{
+  vtkRadiosityFilter* filter = target.Filter();
+  filter->SetSceneLights(target.SceneLights(lights));
   filter->SetTolerance(args.Tolerance);
   filter->SetMaxIterations(args.MaxIterations);
   filter->SetMaxTime(args.MaxTime);
@@ -334,9 +377,30 @@ void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
   filter->SetErrorReference(reference.empty() ? std::vector<Probe>() : probes, reference);
   filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
   filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
-  filter->Update();
+  target.Update();
   filter->GlobalWarningDisplayOn();
-  ThrowFilterError(filter->GetLastError());
+  try
+  {
+    ThrowFilterError(filter->GetLastError());
+  }
+  catch (const BadInput& e)
+  {
+    // The pass names the actor, the array or the light; the file is ours to name.
+    if (target.IsImported())
+    {
+      throw BadInput(args.Scene + ": " + e.what());
+    }
+    throw;
+  }
+  if (target.IsImported() && reference.empty() &&
+    (args.Reference == "analytic" || args.Reference == "pathtraced"))
+  {
+    ComputeReference(args, filter->GetScene(), probes, reference, referenceKind);
+  }
+  for (const auto& w : target.PassWarnings())
+  {
+    std::cerr << "warning: " << w << "\n";
+  }
   for (const auto& w : filter->GetWarnings())
   {
     std::cerr << "warning: " << w << "\n";

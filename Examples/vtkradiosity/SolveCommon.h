@@ -27,6 +27,14 @@
 class vtkDataObject;
 class vtkRadiosityFilter;
 
+namespace radiosity
+{
+namespace cli
+{
+struct ViewCamera;
+}
+}
+
 namespace solve
 {
 using Clock = std::chrono::steady_clock;
@@ -87,18 +95,30 @@ void Check(bool ok, const std::string& error);
 void ThrowFilterError(const std::string& message);
 std::vector<Probe> CornellDemoProbes();
 void WriteVtp(vtkPolyData* data, const std::string& file);
+/// `camera`: the view of --image and --exr (an imported file's camera);
+/// null: the Cornell box's for `cornell`, else framing the scene.
 void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
-  const Scene& scene, vtkPolyData* shepardField = nullptr);
+  const Scene& scene, vtkPolyData* shepardField = nullptr,
+  const cli::ViewCamera* camera = nullptr);
 void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
   const std::string& title);
 nlohmann::json Finite(double v);
+class SolveTarget;
 /// Sets the settings every method shares (tolerance, limits, threads, the
-/// error reference), runs the filter with the progress bar, refuses bad input
-/// (BadInput) and prints the warnings; the caller sets the method's own.
+/// error reference) on the target's filter, solves with the progress bar,
+/// refuses bad input (BadInput; for an imported scene the message starts
+/// with the file) and prints the warnings; the caller sets the method's own.
 /// `lights` (--lights, read by ReadLights) go to the filter's SetSceneLights.
-void RunRadiosityFilter(vtkRadiosityFilter* filter, const SolveArguments& args,
-  const std::vector<Probe>& probes, const std::vector<RGB>& reference, const LightSet& lights,
-  cli::ProgressBar& bar);
+/// An imported scene is known only once gathered: its --reference analytic
+/// or pathtraced is computed after the solve from the scene solved (into
+/// `reference` and `referenceKind`; the history then has no error columns).
+void RunRadiosityFilter(SolveTarget& target, const SolveArguments& args,
+  const std::vector<Probe>& probes, std::vector<RGB>& reference, std::string& referenceKind,
+  const LightSet& lights, cli::ProgressBar& bar);
+/// --reference analytic or pathtraced at `probes` for `scene` (its lights
+/// included); BadInput when the scene has no closed form.
+void ComputeReference(const SolveArguments& args, const Scene& scene, const std::vector<Probe>& probes,
+  std::vector<RGB>& reference, std::string& referenceKind);
 /// --lights: the file read and checked (before anything is solved or
 /// written); a bad file or light is BadInput naming the file, the light's
 /// index and the field. Empty without --lights.
@@ -129,8 +149,8 @@ void AddProbeOutputErrors(nlohmann::json& e, const ErrorFigures& all);
 /// `solve --method hierarchical` (called by the solve command once the
 /// probes, the reference and the scene are read and checked).
 int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
-  const std::vector<RGB>& reference, const std::string& referenceKind, const LightSet& lights,
-  vtkDataObject* input, double loadSeconds, Clock::time_point start);
+  std::vector<RGB>& reference, std::string& referenceKind, const LightSet& lights,
+  SolveTarget& target, double loadSeconds, Clock::time_point start);
 } // namespace solve
 
 #endif

@@ -9,7 +9,9 @@
 #include "ProbeIO.h"
 #include "ProgressBar.h"
 #include "Report.h"
+#include "ImportedScene.h"
 #include "SceneLoader.h"
+#include "SolveTarget.h"
 
 #include "vtkCamera.h"
 #include "vtkCornellBoxSource.h"
@@ -123,13 +125,26 @@ int RunSolve(const SolveArguments& args)
   // --lights: read and checked before the scene is loaded or anything solved.
   const LightSet lights = ReadLights(args);
   std::vector<std::string> loadWarnings, loadNotes;
-  cli::LoadOptions loadOptions;
-  loadOptions.MaxReflectance = args.MaxReflectance;
-  vtkSmartPointer<vtkDataObject> input =
-    cli::LoadScene(args.Scene, error, loadWarnings, loadNotes, loadOptions);
-  if (!input)
+  // An importer format goes into a renderer and is solved through
+  // vtkRadiosityPass (ImportedScene.h, SolveTarget.h); the rest is loaded.
+  cli::ImportedScene imported;
+  vtkSmartPointer<vtkDataObject> input;
+  if (cli::IsImporterFile(args.Scene))
   {
-    throw BadInput(error);
+    if (!cli::ImportScene(args.Scene, imported, error, loadWarnings, loadNotes))
+    {
+      throw BadInput(error);
+    }
+  }
+  else
+  {
+    cli::LoadOptions loadOptions;
+    loadOptions.MaxReflectance = args.MaxReflectance;
+    input = cli::LoadScene(args.Scene, error, loadWarnings, loadNotes, loadOptions);
+    if (!input)
+    {
+      throw BadInput(error);
+    }
   }
   for (const auto& n : loadNotes)
   {
@@ -140,13 +155,15 @@ int RunSolve(const SolveArguments& args)
     std::cerr << "warning: " << w << "\n";
   }
   const double loadSeconds = Since(start);
+  SolveTarget target = input ? SolveTarget(input) : SolveTarget(imported, args.MaxReflectance);
 
-  // The reference: a file of values at the probes, or a closed form the scene has.
+  // The reference: a file of values at the probes, or a closed form the scene
+  // has (an imported scene's once the pass has gathered it, RunRadiosityFilter).
   std::vector<RGB> reference;
   std::string referenceKind;
-  // The scene as the core sees it, for the references (the filter converts its own).
-  const auto coreScene = [&input, &lights]()
+  if ((args.Reference == "analytic" || args.Reference == "pathtraced") && input)
   {
+    // The scene as the core sees it, for the references (the filter converts its own).
     std::vector<std::string> ignored;
     std::string why;
     Scene scene;
@@ -164,41 +181,9 @@ int RunSolve(const SolveArguments& args)
     }
     DropDegenerateTriangles(scene);
     scene.Lighting = lights;
-    return scene;
-  };
-  if (args.Reference == "analytic")
-  {
-    const Scene scene = coreScene();
-    AnalyticReference analytic;
-    if (!ComputeAnalyticReference(scene, probes, analytic, error))
-    {
-      throw BadInput("--reference analytic: " + error);
-    }
-    reference = analytic.Irradiance;
-    referenceKind = "analytic: " + analytic.Kind;
+    ComputeReference(args, scene, probes, reference, referenceKind);
   }
-  else if (args.Reference == "pathtraced")
-  {
-    const Scene scene = coreScene();
-    PathTracerOptions options;
-    options.SamplesPerProbe = args.ReferenceSamples;
-    const PathTracer tracer(scene, options);
-    double worst = 0.0;
-    for (const ReferenceValue& v : tracer.Irradiance(probes))
-    {
-      reference.push_back(v.Value);
-      if (Luminance(v.Value) > 0)
-      {
-        worst = std::max(worst, Luminance(v.StandardError) / Luminance(v.Value));
-      }
-    }
-    char kind[160];
-    std::snprintf(kind, sizeof kind,
-      "path traced: %zu paths per probe, largest relative standard error %.2e",
-      args.ReferenceSamples, worst);
-    referenceKind = kind;
-  }
-  else if (!args.Reference.empty())
+  else if (!args.Reference.empty() && args.Reference != "analytic" && args.Reference != "pathtraced")
   {
     if (!cli::ReadProbeValues(args.Reference, probes, reference, error))
     {
@@ -210,12 +195,11 @@ int RunSolve(const SolveArguments& args)
   if (args.Method == "hierarchical")
   {
     return RunHierarchicalSolve(
-      args, probes, reference, referenceKind, lights, input, loadSeconds, start);
+      args, probes, reference, referenceKind, lights, target, loadSeconds, start);
   }
 
-  vtkNew<vtkRadiosityFilter> filter;
-  filter->SetInputData(input);
-  filter->SetMethod(meshless ? vtkRadiosityFilter::Meshless
+  vtkRadiosityFilter* filter = target.Filter();
+  target.SetMethod(meshless ? vtkRadiosityFilter::Meshless
       : faceCluster        ? vtkRadiosityFilter::FaceCluster
                            : vtkRadiosityFilter::Progressive);
   filter->SetIrradianceBasis(irradianceBasis);
@@ -230,7 +214,7 @@ int RunSolve(const SolveArguments& args)
   filter->SetInitialElementSize(args.ElementSize);
   filter->SetShooterElementSize(args.ShooterSize);
   cli::ProgressBar bar;
-  RunRadiosityFilter(filter, args, probes, reference, lights, bar);
+  RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar);
   const SolverStatistics& stats = filter->GetStatistics();
   bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
 
@@ -248,7 +232,7 @@ int RunSolve(const SolveArguments& args)
   const auto renderStart = Clock::now();
   // The meshless field is drawn per pixel by splatting its basis functions.
   RenderOutputs(args, solved, solution, filter->GetScene(),
-    meshless && !args.Image.empty() ? filter->GetOutput(1) : nullptr);
+    meshless && !args.Image.empty() ? filter->GetOutput(1) : nullptr, target.Camera());
   phases["render_s"] = Since(renderStart);
 
   std::size_t gathered = 0;
@@ -339,6 +323,7 @@ int RunSolve(const SolveArguments& args)
       phases["hierarchy_s"] = f.HierarchySeconds;
     }
     report["lights"] = LightsReport(scene);
+    report["scene"]["import"] = target.ImportReport();
     ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Real-world corpus test: every .obj, .ply, .stl, .gltf and .glb of Debian's
-assimp-testmodels (/usr/share/assimp/models, invalid/ included) through
-`vtkradiosity solve`. Each file must either
+"""Real-world corpus test: every .obj, .ply, .stl, .gltf, .glb, .3ds and .wrl
+of Debian's assimp-testmodels (/usr/share/assimp/models, invalid/ included)
+through `vtkradiosity solve` (the last four through VTK's importers and
+vtkRadiosityPass). Each file must either
 
 - solve: exit 0, and the output's Irradiance (points and cells) finite and
   non-negative (checked by CorpusOutputCheck, which reads the .vtp with VTK);
@@ -43,7 +44,7 @@ import time
 
 SKIP = 77
 TIMEOUT_S = 60  # per file: reading, cleaning and a 5 s solve take under 10 s here
-EXTENSIONS = (".obj", ".ply", ".stl", ".gltf", ".glb")
+EXTENSIONS = (".obj", ".ply", ".stl", ".gltf", ".glb", ".3ds", ".wrl")
 
 
 def light_above(verdict):
