@@ -1,5 +1,10 @@
 // Wavefront .obj with its .mtl materials (SPEC, Scenes): vtkOBJReader keeps
 // neither the materials nor the objects, and both are the scene's meaning here.
+// Kept rather than VTK's vtkOBJImporter (which the other importer formats go
+// through, ImportedScene.h): VTK 9.2's importer reads Ka, Kd, Ks, Ns, d,
+// illum and map_Kd but not Ke, the emission SPEC asks for; it gives faces
+// without a material white instead of SPEC's 0.5 grey, keeps no o/g objects
+// (the clustering and reconstruction groups) and names no line in its errors.
 #ifndef vtkradiosity_ObjMtlReader_h
 #define vtkradiosity_ObjMtlReader_h
 
