@@ -5,6 +5,9 @@
 // vtkRadiosityPass::UpdateSolution like any VTK application's renderer.
 // Nothing is rendered here: the importer's render window is created (VTK's
 // importers always make one) but never shown, so no display is needed.
+// VTK's importers crash on some malformed files (a truncated .3ds, a corrupted
+// PNG inside a .glb): each import is tried first in a child process, and a
+// crash or a hang there is a refusal naming the file (ImportedScene.cxx).
 //
 // A .obj keeps the scene loader's own reader (ObjMtlReader.h): VTK 9.2's
 // vtkOBJImporter reads Ka, Kd, Ks, Ns, d, illum and map_Kd but not Ke (the
