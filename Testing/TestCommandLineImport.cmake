@@ -166,6 +166,31 @@ file(WRITE "${WORK}/empty.3ds" "")
 bad_case(empty.3ds "the file is empty")
 file(WRITE "${WORK}/v1.wrl" "#VRML V1.0 ascii\nSeparator { }\n")
 bad_case(v1.wrl "not a VRML 2.0 file")
+# A face index past the vertices crashes vtk3DSImporter (VTK 9.2): the import
+# tried in a child process first turns that into a refusal.
+configure_file("${DATA}/3ds_face_out_of_range.3ds" "${WORK}/face-out-of-range.3ds" COPYONLY)
+bad_case(face-out-of-range.3ds "vtk3DSImporter crashed reading it \\(signal 11\\): the file is malformed")
+
+# --- A .3ds (Testing/Data/make_3ds_files.py: one triangle in z = 0) through
+# vtk3DSImporter and the pass, lit by --lights (SI: no LightScale): I h / d^3
+# at two probes, measured 3.3e-15 and 5e-16 of the peak; bound 1e-4.
+file(WRITE "${WORK}/3ds-light.json" "{ \"lights\": [ { \"type\": \"point\", \"position\": [0.25, 0.25, 1], \"intensity\": 1 } ] }\n")
+file(WRITE "${WORK}/3ds-probes.csv" "x,y,z,nx,ny,nz\n0.25,0.25,0,0,0,1\n0.5,0.25,0,0,0,1\n")
+expect_exit(0 ${CMAKE_COMMAND} -E env --unset=DISPLAY "${PROGRAM}" solve "${DATA}/3ds_triangle.3ds"
+  --lights "${WORK}/3ds-light.json" --probes "${WORK}/3ds-probes.csv" --probe-output "${WORK}/3ds.csv"
+  --report "${WORK}/3ds.json")
+file(READ "${WORK}/3ds.json" report)
+string(JSON importer GET "${report}" scene import importer)
+if (NOT importer STREQUAL "vtk3DSImporter")
+  message(FATAL_ERROR "3ds_triangle.3ds: importer '${importer}'")
+endif ()
+read_probe_values("${WORK}/3ds.csv" probe)
+foreach (k 0 1)
+  list(GET probe_${k} 0 x)
+  list(GET probe_${k} 3 e)
+  float_eval(error "abs((${e}) - 1 / (((${x}) - 0.25)^2 + 1)^1.5)")
+  expect_within("3ds_triangle probe ${k} against I h / d^3, of the peak" "${error}" 0 1e-4)
+endforeach ()
 
 # --- The exported room: --image from the file's camera against the baseline,
 # the probes against the path tracer. Measured (progressive, 16384 paths per

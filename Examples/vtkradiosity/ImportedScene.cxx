@@ -26,6 +26,7 @@
 #include <cstdio>
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -108,6 +109,8 @@ bool ImportSurvives(vtkImporter* importer, const std::string& file, const std::s
       ::dup2(null, 1);
       ::dup2(null, 2);
     }
+    const struct rlimit noCore = { 0, 0 }; // a crash here is expected: no core file
+    ::setrlimit(RLIMIT_CORE, &noCore);
     ::alarm(ImportSeconds);
     importer->Read();
     // The importers' pipelines run when a mapper updates (vtk3DSImporter's
