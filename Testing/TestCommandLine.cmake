@@ -444,4 +444,4 @@ expect_refusal("${WORK}/billion.vtk" "billion.vtk: line 5 declares 1000000000 po
 file(WRITE "${WORK}/huge.ply" "ply\nformat binary_little_endian 1.0\nelement vertex 4294967295\nproperty float x\nproperty float y\nproperty float z\nend_header\n0123456789")
 expect_refusal("${WORK}/huge.ply" "huge.ply: header line 3 declares 4294967295 vertices of 12 bytes \\(51.5 GB\\) but the file holds 10 bytes after the header")
 file(WRITE "${WORK}/scene.gltf" "{}")
-expect_refusal("${WORK}/scene.gltf" "unknown scene file type '.gltf'")
+expect_refusal("${WORK}/scene.gltf" "scene.gltf: no asset.version \\(a glTF 2.0 file has one\\)")

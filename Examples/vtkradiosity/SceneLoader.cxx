@@ -272,9 +272,13 @@ vtkSmartPointer<vtkDataObject> ReadFile(const std::string& scene, const std::str
     return Run(reader, scene, "VTK's STL reader", error, warnings);
   }
   error = scene + ": unknown scene file type '" + (ext.empty() ? "" : "." + ext) + "'" +
-    (ext == "gltf" || ext == "glb" ? " (glTF is not supported by the scene loader yet)" : "") +
-    ": use .vtp, .vtm, .vtk, .ply, .stl or .obj, or a built-in scene: cornell, office, shadow, contact, "
-    "sphere, closed-room-0.99, closed-room-0.999, bunny-235k, bunny-940k";
+    (ext == "gltf" || ext == "glb" || ext == "3ds" || ext == "wrl"
+        ? " (glTF, .3ds and .wrl are read by VTK's importers into a renderer: vtkradiosity solve "
+          "imports them, ImportedScene.h)"
+        : "") +
+    ": use .vtp, .vtm, .vtk, .ply, .stl or .obj, an importer format (.gltf, .glb, .3ds, .wrl), or a "
+    "built-in scene: cornell, office, shadow, contact, sphere, closed-room-0.99, closed-room-0.999, "
+    "bunny-235k, bunny-940k";
   return nullptr;
 }
 } // namespace

@@ -2,7 +2,9 @@
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkHardwareSelector.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMultiBlockDataSet.h"
@@ -185,6 +187,7 @@ bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
   vtkRadiosityRendererNode* graph = this->SceneGraph;
   graph->SetMaxReflectance(this->MaxReflectance);
   graph->SetLightScale(this->Filter->GetLightScale());
+  graph->SetTwoSided(this->TwoSided);
   graph->Traverse(vtkViewNode::build);
   graph->Traverse(vtkViewNode::synchronize);
 
@@ -274,11 +277,15 @@ void vtkRadiosityPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   vtkRenderer* renderer = s->GetRenderer();
-  if (renderer->GetSelector())
+  if (vtkHardwareSelector* selector = renderer->GetSelector())
   {
-    // Hardware selection: the renderer's own props, as VTK draws them.
-    this->DefaultPass->Render(s);
-    this->NumberOfRenderedProps = this->DefaultPass->GetNumberOfRenderedProps();
+    // Hardware selection: the renderer's own props, drawn by the selector as
+    // a renderer without a pass has them drawn (camera, clear, the selector's
+    // passes over the props); no solve.
+    renderer->GetActiveCamera()->Render(renderer);
+    renderer->Clear();
+    this->NumberOfRenderedProps =
+      selector->Render(renderer, s->GetPropArray(), s->GetPropArrayCount());
     return;
   }
   this->UpdateSolution(renderer);
@@ -322,6 +329,7 @@ void vtkRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Method: " << vtkRadiosityFilter::GetMethodName(this->Filter->GetMethod()) << "\n";
   os << indent << "MaxReflectance: " << this->MaxReflectance << "\n";
+  os << indent << "TwoSided: " << (this->TwoSided ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << this->ToneMapping << "\n";
   os << indent << "NumberOfSolves: " << this->NumberOfSolves << "\n";

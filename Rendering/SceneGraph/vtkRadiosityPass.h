@@ -35,11 +35,12 @@
  *   white, as VTK draws it).
  * - Specular x SpecularColor and SpecularPower become the `Specular` and
  *   `Shininess` of the glossy display (FaceCluster's mapper draws them).
- * - sides: a VTK surface is lit on both sides (the renderer's two-sided
- *   lighting), so it is solved two-sided (SPEC `TwoSided`) unless the
- *   property culls a side (BackfaceCulling: only the front side, the right-
- *   hand normal's; FrontfaceCulling: only the back side) or the renderer's
- *   TwoSidedLighting is off.
+ * - sides: surfaces are one-sided (SPEC "Scenes"): the side the triangle's
+ *   right-hand normal points to is solved, or only the back side when the
+ *   property culls front faces (FrontfaceCulling). TwoSided on solves every
+ *   surface on both sides (SPEC `TwoSided`: twice the triangles), as VTK's
+ *   two-sided lighting shows them. The solution is drawn with back faces
+ *   culled, so a one-sided surface seen from behind is not drawn.
  * - composite input (vtkCompositePolyDataMapper2): each visible leaf one
  *   object with its block colour; blocks with an opacity below 1 are left
  *   out of the solve and, since the actor is drawn by the solution, not
@@ -66,7 +67,8 @@
  * renderer's actors and its class), the array or the light; no partial
  * solution is kept, and until the input changes the solved actors are drawn
  * as VTK draws them. During hardware selection (vtkHardwareSelector) the
- * pass delegates to a vtkRenderStepsPass over the renderer's own props.
+ * selector draws the renderer's own props, as for a renderer without a
+ * pass, and nothing is solved.
  */
 #ifndef vtkRadiosityPass_h
 #define vtkRadiosityPass_h
@@ -148,6 +150,14 @@ public:
   ///@}
 
   ///@{
+  /// Whether every solved surface is solved on both sides (see the class
+  /// doc). Default off.
+  vtkSetMacro(TwoSided, bool);
+  vtkGetMacro(TwoSided, bool);
+  vtkBooleanMacro(TwoSided, bool);
+  ///@}
+
+  ///@{
   /// Scale of the drawn radiance B / pi (the mappers' Exposure). Default 1,
   /// clamped to [0, 1e12]. Redraws; does not solve again.
   vtkSetClampMacro(Exposure, double, 0.0, 1e12);
@@ -188,6 +198,7 @@ protected:
   ~vtkRadiosityPass() override;
 
   double MaxReflectance = 0.95;
+  bool TwoSided = false;
   double Exposure = 1.0;
   int ToneMapping = 0;
   int NumberOfSolves = 0;

@@ -270,9 +270,9 @@ bool vtkRadiosityPolyDataMapperNode::ConvertPolyData(vtkPolyData* input, vtkActo
   }
 
   // Only the back side is seen: solve that one (the triangles reversed).
-  const bool backOnly = property->GetFrontfaceCulling() && !property->GetBackfaceCulling();
-  const bool twoSided =
-    rendererNode->GetTwoSided() && !property->GetFrontfaceCulling() && !property->GetBackfaceCulling();
+  const bool twoSided = rendererNode->GetTwoSided();
+  const bool backOnly =
+    !twoSided && property->GetFrontfaceCulling() && !property->GetBackfaceCulling();
   const bool reverse = mirrored != backOnly;
 
   vtkNew<vtkCellArray> cells;

@@ -26,12 +26,6 @@ vtkRadiosityRendererNode::vtkRadiosityRendererNode()
 
 vtkRadiosityRendererNode::~vtkRadiosityRendererNode() = default;
 
-bool vtkRadiosityRendererNode::GetTwoSided()
-{
-  auto* renderer = vtkRenderer::SafeDownCast(this->GetRenderable());
-  return renderer && renderer->GetTwoSidedLighting();
-}
-
 void vtkRadiosityRendererNode::Synchronize(bool prepass)
 {
   auto* renderer = vtkRenderer::SafeDownCast(this->GetRenderable());
@@ -180,6 +174,7 @@ void vtkRadiosityRendererNode::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MaxReflectance: " << this->MaxReflectance << "\n";
   os << indent << "LightScale: " << this->LightScale << "\n";
+  os << indent << "TwoSided: " << (this->TwoSided ? "On" : "Off") << "\n";
   os << indent << "Objects: " << this->SceneInput->GetNumberOfBlocks() << " ("
      << this->NumberOfTriangles << " triangles) of " << this->Gathered.size() << " actors\n";
   os << indent << "SceneLights: " << this->SceneLights->GetNumberOfItems() << "\n";

@@ -50,8 +50,9 @@ public:
   vtkGetMacro(LightScale, double);
   ///@}
 
-  /// Whether surfaces are solved two-sided: the renderer's TwoSidedLighting.
-  bool GetTwoSided();
+  /// Whether every surface is solved on both sides (vtkRadiosityPass::TwoSided).
+  vtkSetMacro(TwoSided, bool);
+  vtkGetMacro(TwoSided, bool);
 
   /// The scene gathered by the last Synchronize: one block per object.
   vtkMultiBlockDataSet* GetSceneInput();
@@ -96,6 +97,7 @@ protected:
 
   double MaxReflectance = 0.95;
   double LightScale = 3.14159265358979323846;
+  bool TwoSided = false;
 
 private:
   vtkRadiosityRendererNode(const vtkRadiosityRendererNode&) = delete;
