@@ -126,9 +126,9 @@ void vtkRadiosityPolyDataMapperNode::Synchronize(bool prepass)
   }
   if (this->ClampedColours > 0)
   {
-    this->Warnings.push_back(actorNode->GetLabel() + ": " + std::to_string(this->ClampedColours) +
-      " display colours at or above MaxReflectance " +
-      std::to_string(rendererNode->GetMaxReflectance()) + " clamped to it");
+    this->Warnings.push_back(actorNode->GetLabel() + ": display colours at or above MaxReflectance " +
+      std::to_string(rendererNode->GetMaxReflectance()) + " clamped to it (" +
+      std::to_string(this->ClampedColours) + " objects)");
   }
   // After the conversion: creating the default lookup table or setting its
   // range moves the mapper's MTime once, and that is not a change to solve.
