@@ -59,7 +59,8 @@
  * actors' and their properties', mappers', inputs' (each block's),
  * transforms' and composite display attributes' MTimes, the set of solved
  * actors, the scene lights' MTimes, or the filter's settings (its MTime).
- * A camera move only redraws. During a solve the pass invokes StartEvent,
+ * A camera move only redraws. A pass keeps the scene graph of one renderer:
+ * give each renderer a pass of its own. During a solve the pass invokes StartEvent,
  * ProgressEvent (call data: a double* fraction in [0, 1]) and EndEvent.
  *
  * Bad input (a NaN colour, a bad Emission array, a bad light) fails

@@ -133,6 +133,7 @@ void vtkRadiosityPolyDataMapperNode::Synchronize(bool prepass)
   // After the conversion: creating the default lookup table or setting its
   // range moves the mapper's MTime once, and that is not a change to solve.
   this->ConvertedMTime = this->GetSceneMTime();
+  this->ConversionTime.Modified();
   this->ConvertedSolvable = solvable;
   this->ConvertedMaxReflectance = rendererNode->GetMaxReflectance();
   this->ConvertedLightScale = rendererNode->GetLightScale();

@@ -20,6 +20,7 @@
 #include "RadiosityRenderingSceneGraphModule.h" // for export macro
 #include "vtkPolyDataMapperNode.h"
 #include "vtkSmartPointer.h" // for members
+#include "vtkTimeStamp.h"    // for members
 
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -54,8 +55,11 @@ public:
 
   /// The largest MTime of what the conversion reads, now.
   virtual vtkMTimeType GetSceneMTime();
-  /// GetSceneMTime() after the last conversion: what the solve depends on.
+  /// GetSceneMTime() after the last conversion.
   vtkMTimeType GetConvertedMTime() const { return this->ConvertedMTime; }
+  /// When the objects were last converted (a global VTK time: it moves at
+  /// every conversion, also one for a changed MaxReflectance or LightScale).
+  vtkMTimeType GetConversionTime() const { return this->ConversionTime.GetMTime(); }
 
 protected:
   vtkRadiosityPolyDataMapperNode();
@@ -84,6 +88,7 @@ private:
   void operator=(const vtkRadiosityPolyDataMapperNode&) = delete;
 
   vtkMTimeType ConvertedMTime = 0;
+  vtkTimeStamp ConversionTime;
   // The settings of the last conversion: a change converts again.
   double ConvertedMaxReflectance = -1.0;
   double ConvertedLightScale = -1.0;

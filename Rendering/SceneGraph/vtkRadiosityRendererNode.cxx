@@ -90,7 +90,7 @@ void vtkRadiosityRendererNode::Gather()
         continue; // nothing to solve (no polygons): drawn as VTK draws it
       }
       this->Gathered.insert(vtkProp::SafeDownCast(actorNode->GetRenderable()));
-      this->CurrentSignature.emplace_back(actorNode->GetRenderable(), mapperNode->GetConvertedMTime());
+      this->CurrentSignature.emplace_back(actorNode->GetRenderable(), mapperNode->GetConversionTime());
       for (const vtkRadiosityPolyDataMapperNode::Object& object : mapperNode->GetObjects())
       {
         this->SceneInput->SetBlock(block, object.Data);

@@ -9,7 +9,8 @@
  * gathers: the objects of the solved actors as one vtkMultiBlockDataSet
  * (a block per object, named after its actor), the renderer's scene lights
  * as a vtkLightCollection, and the signature of all of it (each solved
- * actor's and light's MTime and identity). The node also keeps the cached
+ * actor's identity and the time its mapper node last converted it, each
+ * scene light's identity and MTime). The node also keeps the cached
  * solution (the filter's outputs of the last successful solve) and the
  * signature it was solved for, so that vtkRadiosityPass solves again only
  * when the signature moved.

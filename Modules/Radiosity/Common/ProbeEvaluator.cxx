@@ -72,6 +72,11 @@ ProbeEvaluator::~ProbeEvaluator() = default;
 
 std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes) const
 {
+  return this->Evaluate(probes, SurfaceValue());
+}
+
+std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes, const SurfaceValue& onSurface) const
+{
   std::vector<RGB> values(probes.size(), RGB(0.0));
   std::atomic<std::size_t> gathered{ 0 };
   const double edgeTolerance = 1e-6;
@@ -112,6 +117,13 @@ std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes) cons
       {
         values[i] = this->Gather(Probe{ probe.Position, n });
         ++gathered;
+        return;
+      }
+      if (onSurface)
+      {
+        const std::uint32_t source =
+          t < static_cast<std::int64_t>(this->Solution.SourceTriangle.size()) ? this->Solution.SourceTriangle[t] : 0;
+        values[i] = onSurface(source, probe.Position, n);
         return;
       }
       const auto& tri = this->Solution.Triangles[t];

@@ -49,6 +49,16 @@ public:
    */
   std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
 
+  /// The value of a method whose solution lives on the input triangles, at
+  /// x with normal n on input triangle `source` (SolutionMesh::SourceTriangle).
+  using SurfaceValue = std::function<RGB(std::uint32_t source, const Vec3& x, const Vec3& n)>;
+  /**
+   * As Evaluate, but a sensor on a surface takes `onSurface` there (the
+   * meshless Shepard field, the face cluster bases); a sensor in the air
+   * (a working plane) is gathered from the solution's elements as above.
+   */
+  std::vector<RGB> Evaluate(const std::vector<Probe>& probes, const SurfaceValue& onSurface) const;
+
   /**
    * On (the default for sensors): on a surface, the punctual lights' direct
    * light is taken exactly at the sensor (DirectLighting::Punctual: the

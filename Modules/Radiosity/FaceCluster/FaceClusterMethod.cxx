@@ -28,11 +28,17 @@ std::vector<ProductArray> FaceClusterMethod::SurfacePointArrays() const
 
 std::vector<RGB> FaceClusterMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const
 {
+  // On a surface the method's own value there; in the air (a working
+  // plane's sensor grid) a gather from the surface solution.
+  const SolutionMesh surface = this->Surface();
+  const ProbeEvaluator evaluator(surface, *this->SceneRef);
+  std::vector<RGB> values = evaluator.Evaluate(probes,
+    [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->Solver.IrradianceAt(t, x, n); });
   if (gathered)
   {
-    *gathered = 0;
+    *gathered = evaluator.GatheredCount();
   }
-  return this->Solver.Evaluate(probes);
+  return values;
 }
 
 SolverProduct FaceClusterMethod::Product(const ProgressCallback&) const

@@ -12,6 +12,36 @@
 
 namespace radiosity
 {
+namespace
+{
+/// The element's mean irradiance from the lights and sky by the composite
+/// degree-2 rule over its midpoint subdivision (3/4 of each quarter's
+/// centroid, 1/12 of each of its corners): what it reflects and what the
+/// gather reads. The element's own degree-2 rule (ElementSamples::Mean) on
+/// a floor element that a window's sky patch crosses overestimated the light
+/// entering the office by enough to put 10% on its ceiling.
+RGB LightMean(const DirectLighting& lights, const ElementMesh& mesh, std::uint32_t e, const ElementSamples& d)
+{
+  const Element& r = mesh[e];
+  const Vec3 c[3] = { mesh.Corner(e, 0), mesh.Corner(e, 1), mesh.Corner(e, 2) };
+  const Vec3 m[3] = { 0.5 * (c[0] + c[1]), 0.5 * (c[1] + c[2]), 0.5 * (c[2] + c[0]) };
+  RGB atMid[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    atMid[k] = lights.Irradiance(m[k], r.Normal);
+  }
+  // Quarters: (c0, m0, m2), (m0, c1, m1), (m2, m1, c2), (m0, m1, m2).
+  const RGB corners = d.Corner[0] + d.Corner[1] + d.Corner[2];
+  const RGB mids = atMid[0] + atMid[1] + atMid[2];
+  RGB centroids = lights.Irradiance((m[0] + m[1] + m[2]) / 3.0, r.Normal);
+  centroids += lights.Irradiance((c[0] + m[0] + m[2]) / 3.0, r.Normal);
+  centroids += lights.Irradiance((m[0] + c[1] + m[1]) / 3.0, r.Normal);
+  centroids += lights.Irradiance((m[2] + m[1] + c[2]) / 3.0, r.Normal);
+  // Each corner is in one quarter, each midpoint in three.
+  return 0.25 * (0.75 * centroids + (corners + 3.0 * mids) / 12.0);
+}
+}
+
 double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
 {
   if (this->SourceScene.Lighting.Empty())
@@ -26,6 +56,7 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
   std::vector<std::uint32_t> needed;
   std::vector<ElementSamples> delta;
   std::vector<unsigned char> split;
+  std::vector<RGB> power;
   double received = 0.0;
   while (!pending.empty())
   {
@@ -51,6 +82,7 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
       });
     delta.assign(pending.size(), ElementSamples());
     split.assign(pending.size(), 0);
+    power.assign(pending.size(), RGB(0.0));
     tbb::parallel_for(std::size_t(0), pending.size(), [&](std::size_t i)
       {
         const std::uint32_t e = pending[i];
@@ -91,8 +123,12 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
           const double spread = std::asin(radius / distance);
           crossesCone = angle - spread < light.OuterConeAngle && angle + spread > light.InnerConeAngle;
         }
-        split[i] = r.Level < this->MaxLevel[r.Source] &&
+        split[i] = r.Level < this->MaxLevel[r.Source] + std::max(0, this->Settings.LightSubdivisionLevels) &&
           (departure > threshold * std::fabs(Luminance(d.Mean())) || crossesCone);
+        if (!split[i])
+        {
+          power[i] = LightMean(lights, mesh, e, d);
+        }
       });
     std::vector<std::uint32_t> next;
     for (std::size_t i = 0; i < pending.size(); ++i)
@@ -106,7 +142,7 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
       Element& r = mesh[e];
       const RGB rho = mesh.MaterialOf(e).Reflectance;
       r.Irradiance += delta[i];
-      const RGB meanDelta = delta[i].Mean();
+      const RGB meanDelta = power[i];
       r.Unshot += rho * meanDelta;
       this->Absorbed += Mean((RGB(1.0) - rho) * meanDelta) * r.Area;
       received += Mean(meanDelta) * r.Area;

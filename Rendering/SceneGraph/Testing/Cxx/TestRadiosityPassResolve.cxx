@@ -4,7 +4,8 @@
 //   a translucent actor's colour: no solve;
 // - a property (the box's colour), a light (the spot's intensity), an
 //   actor's transform (the box moved), the input data (the sphere source's
-//   radius), a filter setting (the method): exactly one solve each;
+//   radius), a filter setting (the method), the pass's MaxReflectance:
+//   exactly one solve each;
 // - progress: every solve invokes StartEvent, ProgressEvent with fractions
 //   in [0, 1] ending at 1, and EndEvent on the pass;
 // - bad input: a light with a NaN intensity and an actor with a NaN colour
@@ -145,6 +146,8 @@ int TestRadiosityPassResolve(int, char*[])
   step("sphere source radius", 1);
   pass->SetMethod(vtkRadiosityFilter::Auto);
   step("method", 1);
+  pass->SetMaxReflectance(0.7); // the box's 0.8 now clamped: converted and solved again
+  step("MaxReflectance", 1);
   step("redraw", 0);
   ok &= PassTestScene::Check(events.Start == expected && events.End == expected,
     "a StartEvent and an EndEvent per solve: " + std::to_string(events.Start) + " and " +
