@@ -2,8 +2,11 @@
 // VTK sources, a spot light and the sun as vtkLights, solved by radiosity
 // and drawn per pixel, written as a PNG.
 //
-//   SceneGraphExample [OUT.png] [progressive|hierarchical|facecluster|meshless]
+//   SceneGraphExample [OUT.png] [meshless|progressive|hierarchical|facecluster]
 //
+// Meshless by default (about 20 s on 2 loaded cores at 800 x 600;
+// progressive and face cluster about 15 s, hierarchical with its
+// discontinuity mesh about 3 minutes).
 // Nothing here is radiosity-specific but the pass: the actors, properties,
 // transforms, lights and camera are what any VTK application has.
 #include "vtkActor.h"
@@ -72,7 +75,7 @@ int MethodOf(const char* name)
 int main(int argc, char* argv[])
 {
   const std::string output = argc > 1 ? argv[1] : "scenegraph.png";
-  const int method = argc > 2 ? MethodOf(argv[2]) : vtkRadiosityFilter::Hierarchical;
+  const int method = argc > 2 ? MethodOf(argv[2]) : vtkRadiosityFilter::Meshless;
   if (method < 0)
   {
     std::cerr << "unknown method " << argv[2]

@@ -23,7 +23,9 @@
  *   and 2D actors are not solved: they are drawn by the delegate pass as VTK
  *   draws them, over the solution; a solved actor's light does not reach
  *   them and they cast no shadow in the solution.
- * - world transforms: the actor's matrix (GetMatrix) applied to the points.
+ * - world transforms: the actor's matrix (GetMatrix) applied to the points
+ *   (a part of a vtkAssembly is taken with its own matrix only: the
+ *   assembly's is not applied).
  * - reflectance: Diffuse x DiffuseColor, or the mapped scalar colours
  *   (point colours averaged per triangle) when the mapper maps scalars; a
  *   composite block colour replaces DiffuseColor. With interpolation PBR the
