@@ -163,9 +163,28 @@ bool RunImporter(vtkImporter* importer, const std::string& file, ImportedScene& 
   {
     warnings.push_back(file + ": " + scene.Importer + ": " + w);
   }
-  if (!messages.Errors().empty())
+  // Textures are not read by the solve (a material's factors are): VTK's
+  // complaint about a valid file's texture colour space ("The materialTex
+  // texture is not in linear color space.", vtkProperty) is a warning here;
+  // a malformed texture reference ("Invalid textureInfo.index value") is
+  // still a refusal.
+  std::string refusal;
+  for (const std::string& e : messages.Errors())
   {
-    error = file + ": VTK's importer (" + scene.Importer + ") cannot read it: " + messages.Errors().front();
+    std::string lower = e;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (lower.find("texture") != std::string::npos && lower.find("color space") != std::string::npos)
+    {
+      warnings.push_back(file + ": " + scene.Importer + ": " + e + " (textures are not used by the solve)");
+    }
+    else if (refusal.empty())
+    {
+      refusal = e;
+    }
+  }
+  if (!refusal.empty())
+  {
+    error = file + ": VTK's importer (" + scene.Importer + ") cannot read it: " + refusal;
     return false;
   }
   return true;
