@@ -35,8 +35,10 @@
 #include "vtkRadiosityRendererNode.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkViewNode.h"
 
 #include <cmath>
+#include <sstream>
 #include <iostream>
 #include <string>
 
@@ -253,5 +255,20 @@ int TestRadiosityPassMaterials(int, char*[])
   std::cout << "solved in " << statistics.SolveSeconds << " s, largest red irradiance " << range[1]
             << " W/m^2\n";
   ok &= Check(range[1] > 0.0, "the emissive PBR surface lights nothing");
+
+  // Every node prints (PrintSelf of the pass, its filter and scene graph).
+  std::ostringstream printed;
+  pass->Print(printed);
+  for (vtkViewNode* child : graph->GetChildren())
+  {
+    child->Print(printed);
+    for (vtkViewNode* grandchild : child->GetChildren())
+    {
+      grandchild->Print(printed);
+    }
+  }
+  ok &= Check(printed.str().find("NumberOfSolves: 1") != std::string::npos &&
+      printed.str().find("Solvable: wireframe") != std::string::npos,
+    "PrintSelf");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
