@@ -3,8 +3,9 @@
 // sun as vtkLights): left progressive refinement (radiosity per vertex),
 // right hierarchical radiosity with discontinuity meshing (quadratic
 // interpolants per pixel), each renderer with a pass of its own, the same
-// actors and lights. A translucent sphere (Opacity 0.4) in front of the box
-// is not solved but drawn over the solution by the delegate pass. Checked
+// actors and lights. A translucent sphere (Opacity 0.4) in front of the box,
+// a wireframe box over the sphere and a 2D text actor are not solved but
+// drawn with the solution by the delegate pass. Checked
 // against the baseline image, and each half must show light (its mean
 // brighter than 20 of 255) and both methods must agree on the mean within
 // 15% (they solve the same scene).
@@ -16,6 +17,8 @@
 #include "vtkRadiosityPass.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
@@ -58,6 +61,19 @@ int TestRadiosityPass(int argc, char* argv[])
   glass->GetProperty()->SetColor(1.0, 1.0, 1.0);
   glass->GetProperty()->SetOpacity(0.4);
   renderers[0]->AddActor(glass);
+  vtkNew<vtkCubeSource> cageSource;
+  cageSource->SetCenter(-0.8, -0.4, 0.5);
+  cageSource->SetXLength(1.1);
+  cageSource->SetYLength(1.1);
+  cageSource->SetZLength(1.1);
+  vtkNew<vtkPolyDataMapper> cageMapper;
+  cageMapper->SetInputConnection(cageSource->GetOutputPort());
+  vtkNew<vtkActor> cage;
+  cage->SetMapper(cageMapper);
+  cage->GetProperty()->SetRepresentationToWireframe();
+  cage->GetProperty()->SetColor(1.0, 1.0, 0.0);
+  cage->GetProperty()->LightingOff();
+  renderers[0]->AddActor(cage);
 
   for (int i = 0; i < 2; ++i)
   {
@@ -76,6 +92,12 @@ int TestRadiosityPass(int argc, char* argv[])
       renderers[1]->SetActiveCamera(renderers[0]->GetActiveCamera());
     }
     renderers[i]->SetViewport(0.5 * i, 0.0, 0.5 * (i + 1), 1.0);
+    vtkNew<vtkTextActor> label;
+    label->SetInput(vtkRadiosityFilter::GetMethodName(methods[i]));
+    label->SetPosition(8, 8);
+    label->GetTextProperty()->SetFontSize(18);
+    label->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+    renderers[i]->AddViewProp(label);
     passes[i]->SetMethod(methods[i]);
     passes[i]->GetFilter()->SetNumberOfThreads(2);
     renderers[i]->SetPass(passes[i]);
