@@ -5,7 +5,8 @@
 // - a property (the box's colour), a light (the spot's intensity), an
 //   actor's transform (the box moved), the input data (the sphere source's
 //   radius), a filter setting (the method), the pass's MaxReflectance:
-//   exactly one solve each;
+//   adding an actor, removing it: exactly one solve each; a headlight
+//   added (it follows the camera): none;
 // - progress: every solve invokes StartEvent, ProgressEvent with fractions
 //   in [0, 1] ending at 1, and EndEvent on the pass;
 // - bad input: a light with a NaN intensity and an actor with a NaN colour
@@ -151,6 +152,26 @@ int TestRadiosityPassResolve(int, char*[])
   step("method", 1);
   pass->SetMaxReflectance(0.7); // the box's 0.8 now clamped: converted and solved again
   step("MaxReflectance", 1);
+  vtkNew<vtkLight> headlight; // moves with the camera: not part of the solve
+  headlight->SetLightTypeToHeadlight();
+  renderer->AddLight(headlight);
+  renderer->GetActiveCamera()->Azimuth(-10.0);
+  step("a headlight added, the camera moved", 0);
+  vtkNew<vtkActor> extra;
+  {
+    vtkNew<vtkCubeSource> source;
+    source->SetCenter(-1.2, 1.2, 0.2);
+    source->SetXLength(0.4);
+    source->SetYLength(0.4);
+    source->SetZLength(0.4);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(source->GetOutputPort());
+    extra->SetMapper(mapper);
+  }
+  renderer->AddActor(extra);
+  step("an actor added", 1);
+  renderer->RemoveActor(extra);
+  step("the actor removed", 1);
   step("redraw", 0);
   ok &= PassTestScene::Check(events.Start == expected && events.End == expected,
     "a StartEvent and an EndEvent per solve: " + std::to_string(events.Start) + " and " +
