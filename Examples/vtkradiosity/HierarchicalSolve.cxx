@@ -107,46 +107,18 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   phases["render_s"] = Since(renderStart);
 
   // Probes: from the interpolants (meshing) or the constant leaves; a probe
-  // on no surface is gathered from the leaves' radiosity.
+  // on no surface is gathered from the leaves' radiosity; the punctual
+  // lights exact at each sensor (HierarchicalMethod::EvaluateProbes).
   std::size_t gathered = 0, onMesh = 0;
   std::vector<RGB> probeValues;
   if (!args.ProbeOutput.empty() || !reference.empty())
   {
-    std::vector<Probe> rest;
-    std::vector<std::size_t> restIndex;
+    probeValues = method->EvaluateProbes(probes, &gathered);
     if (meshing)
     {
-      probeValues = EvaluateInterpolants(mesh, probes, 1e-6 * solver.Analysis().Diagonal);
-      for (std::size_t i = 0; i < probes.size(); ++i)
+      for (const RGB& v : EvaluateInterpolants(mesh, probes, 1e-6 * solver.Analysis().Diagonal))
       {
-        if (std::isfinite(Luminance(probeValues[i])))
-        {
-          ++onMesh;
-        }
-        else
-        {
-          rest.push_back(probes[i]);
-          restIndex.push_back(i);
-        }
-      }
-    }
-    else
-    {
-      probeValues.assign(probes.size(), RGB(0.0));
-      rest = probes;
-      for (std::size_t i = 0; i < probes.size(); ++i)
-      {
-        restIndex.push_back(i);
-      }
-    }
-    if (!rest.empty())
-    {
-      ProbeEvaluator evaluator(leaves, scene);
-      const std::vector<RGB> values = evaluator.Evaluate(rest);
-      gathered = evaluator.GatheredCount();
-      for (std::size_t i = 0; i < rest.size(); ++i)
-      {
-        probeValues[restIndex[i]] = values[i];
+        onMesh += std::isfinite(Luminance(v)) ? 1 : 0;
       }
     }
   }

@@ -237,21 +237,12 @@ int RunSolve(const SolveArguments& args)
 
   std::size_t gathered = 0;
   std::vector<RGB> probeValues;
-  if ((!args.ProbeOutput.empty() || !reference.empty()) && meshless)
+  if ((!args.ProbeOutput.empty() || !reference.empty()) && filter->GetSolver())
   {
-    // SPEC: the meshless method's probes come from its Shepard field.
-    probeValues = filter->GetMeshlessSolution()->Evaluate(probes);
-  }
-  else if ((!args.ProbeOutput.empty() || !reference.empty()) && faceCluster)
-  {
-    // SPEC: the face cluster method's from its vector irradiance bases.
-    probeValues = filter->GetFaceClusterSolution()->Evaluate(probes);
-  }
-  else if (!args.ProbeOutput.empty() || !reference.empty())
-  {
-    ProbeEvaluator evaluator(solution, filter->GetScene());
-    probeValues = evaluator.Evaluate(probes);
-    gathered = evaluator.GatheredCount();
+    // SPEC: each method's probes from its own representation (the meshless
+    // Shepard field, the face cluster bases, the elements), the punctual
+    // lights exact at each sensor (RadiositySolver::EvaluateProbes).
+    probeValues = filter->GetSolver()->EvaluateProbes(probes, &gathered);
   }
   WriteProbesAndHistory(args, probes, probeValues, stats.History,
     meshless ? ", meshless radiosity" : faceCluster ? ", face cluster radiosity" : ", progressive refinement",

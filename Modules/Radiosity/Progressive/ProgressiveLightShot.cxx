@@ -123,12 +123,17 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
           const double spread = std::asin(radius / distance);
           crossesCone = angle - spread < light.OuterConeAngle && angle + spread > light.InnerConeAngle;
         }
-        split[i] = r.Level < this->MaxLevel[r.Source] + std::max(0, this->Settings.LightSubdivisionLevels) &&
-          (departure > threshold * std::fabs(Luminance(d.Mean())) || crossesCone);
-        if (!split[i])
-        {
-          power[i] = LightMean(lights, mesh, e, d);
-        }
+        // Within the receivers' levels, the gradient criterion; below them (up
+        // to LightSubdivisionLevels further) only where the element's own
+        // 4-point rule misjudges the light it receives, which is what it
+        // reflects: a sharp edge or a window's sky patch across it.
+        power[i] = LightMean(lights, mesh, e, d);
+        const bool gradient = departure > threshold * std::fabs(Luminance(d.Mean())) || crossesCone;
+        const bool misjudged =
+          std::fabs(Luminance(power[i]) - Luminance(d.Mean())) > threshold * std::fabs(Luminance(power[i]));
+        const int level = r.Level, within = this->MaxLevel[r.Source];
+        split[i] = (level < within && gradient) ||
+          (level >= within && level < within + std::max(0, this->Settings.LightSubdivisionLevels) && misjudged);
       });
     std::vector<std::uint32_t> next;
     for (std::size_t i = 0; i < pending.size(); ++i)

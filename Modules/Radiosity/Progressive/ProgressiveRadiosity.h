@@ -36,10 +36,10 @@ struct ProgressiveOptions
   double ShooterElementSize = 0.25; ///< longest shooter edge / scene diagonal
   double InitialElementSize = 1.0 / 16.0; ///< longest initial receiver edge / scene diagonal
   int MaxSubdivisionLevels = 2;    ///< adaptive levels below the initial mesh
-  /// Further levels the lights' and the sky's shot may split receivers to:
-  /// a hard shadow, a spot's cone or a window's edge on the floor is sharper
-  /// than anything a reflector casts (the office's back: 7.4% of the daylight
-  /// factor with none, 2.4% with two).
+  /// Further levels the lights' and the sky's shot may split receivers to,
+  /// where an element's own 4-point rule misjudges the light it receives by
+  /// more than SubdivisionThreshold (a hard shadow, a spot's cone or a
+  /// window's sky patch across it): what it reflects is that light.
   int LightSubdivisionLevels = 2;
   double SubdivisionThreshold = 0.1;  ///< allowed departure from linear, relative
   /// Disc approximation where A/(pi r^2) is below this times (1 - mean
