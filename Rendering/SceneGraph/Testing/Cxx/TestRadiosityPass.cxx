@@ -100,6 +100,7 @@ int TestRadiosityPass(int argc, char* argv[])
     renderers[i]->AddViewProp(label);
     passes[i]->SetMethod(methods[i]);
     passes[i]->GetFilter()->SetNumberOfThreads(2);
+    passes[i]->GetFilter()->SetMaxSubdivisionLevels(1); // progressive's quadtrees: seconds, not a minute
     renderers[i]->SetPass(passes[i]);
     window->AddRenderer(renderers[i]);
   }

@@ -97,7 +97,7 @@ int TestRadiosityPassResolve(int, char*[])
   // Coarse and loose: this test counts solves, it does not measure them.
   pass->GetFilter()->SetTolerance(2e-2);
   pass->GetFilter()->SetInitialElementSize(0.125);
-  pass->GetFilter()->SetMaxSubdivisionLevels(1);
+  pass->GetFilter()->SetMaxSubdivisionLevels(0);
   pass->GetFilter()->SetNumberOfThreads(2);
   renderer->SetPass(pass);
   Events events;
