@@ -137,7 +137,8 @@ int main(int argc, char* argv[])
   md << "Each method at its settings on every light case; the path tracer (MIS, next-event "
         "estimation of every light, the sky on escaping paths) given about the same time per "
         "case as the method's fastest setting. Error: max |value - reference| / peak reference "
-        "over the probes (probes read from each method's surface, as `--probe-output` does).\n\n"
+        "over the probes (probes read from each method's own representation, the punctual lights exact at "
+        "each sensor: RadiositySolver::EvaluateProbes, as `--probe-output` does).\n\n"
         "| case | reference | method | setting | time (s) | max error | RMS error |\n"
         "|---|---|---|---|---|---|---|\n";
   for (const Case& c : cases)
@@ -148,9 +149,7 @@ int main(int argc, char* argv[])
       const Stopwatch clock;
       std::unique_ptr<RadiositySolver> solver = s.Make(c.Geometry);
       solver->Solve({});
-      const SolutionMesh surface = solver->Surface();
-      const ProbeEvaluator evaluator(surface, *c.Geometry);
-      const std::vector<RGB> values = evaluator.Evaluate(c.Probes);
+      const std::vector<RGB> values = solver->EvaluateProbes(c.Probes);
       const double seconds = clock.Seconds();
       fastest = std::min(fastest, seconds);
       const ErrorFigures e = RelativeErrors(values, c.Reference);
