@@ -222,4 +222,35 @@ std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vecto
   });
   return values;
 }
+
+std::vector<RGB> EvaluateSensorsOnInputTriangles(const SolutionMesh& surface, const Scene& scene,
+  const std::vector<Probe>& probes,
+  const std::function<std::vector<RGB>(const std::vector<Probe>&)>& onTriangles, std::size_t* gathered)
+{
+  // The sensors on a surface are marked (NaN) by the evaluator, then
+  // evaluated together by the method.
+  const ProbeEvaluator evaluator(surface, scene);
+  std::vector<RGB> values = evaluator.Evaluate(probes,
+    [](std::uint32_t, const Vec3&, const Vec3&) { return RGB(std::numeric_limits<double>::quiet_NaN()); });
+  std::vector<Probe> onSurface;
+  std::vector<std::size_t> index;
+  for (std::size_t i = 0; i < probes.size(); ++i)
+  {
+    if (std::isnan(values[i].x))
+    {
+      onSurface.push_back(probes[i]);
+      index.push_back(i);
+    }
+  }
+  const std::vector<RGB> fromMethod = onTriangles(onSurface);
+  for (std::size_t k = 0; k < index.size(); ++k)
+  {
+    values[index[k]] = fromMethod[k];
+  }
+  if (gathered)
+  {
+    *gathered = evaluator.GatheredCount();
+  }
+  return values;
+}
 } // namespace radiosity

@@ -34,6 +34,18 @@ std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vecto
   const std::function<RGB(std::uint32_t triangle, const Vec3& x, const Vec3& n)>& at,
   const Visibility* allTriangles = nullptr);
 
+class ProbeEvaluator;
+
+/**
+ * Sensors of a method whose solution lives on the input triangles (meshless,
+ * face cluster): a sensor on a surface takes `onTriangles` (the method's own
+ * nearest-triangle evaluation), a sensor in the air (a working plane) is
+ * gathered from `surface` (ProbeEvaluator). `gathered`: how many were.
+ */
+std::vector<RGB> EvaluateSensorsOnInputTriangles(const SolutionMesh& surface, const Scene& scene,
+  const std::vector<Probe>& probes,
+  const std::function<std::vector<RGB>(const std::vector<Probe>&)>& onTriangles, std::size_t* gathered);
+
 class ProbeEvaluator
 {
 public:

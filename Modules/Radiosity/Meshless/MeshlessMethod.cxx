@@ -1,8 +1,5 @@
 #include "Radiosity/Meshless/MeshlessMethod.h"
 
-#include <cmath>
-#include <limits>
-
 namespace radiosity
 {
 MeshlessMethod::MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options)
@@ -17,35 +14,8 @@ SolutionMesh MeshlessMethod::Surface() const
 
 std::vector<RGB> MeshlessMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const
 {
-  // On a surface the method's own value there; in the air (a working
-  // plane's sensor grid) a gather from the surface solution.
-  // The sensors on a surface are marked (NaN) by the evaluator and then
-  // evaluated on their nearest input triangle, as the method's Evaluate does.
-  const SolutionMesh surface = this->Surface();
-  const ProbeEvaluator evaluator(surface, *this->SceneRef);
-  std::vector<RGB> values = evaluator.Evaluate(probes, [](std::uint32_t, const Vec3&, const Vec3&) {
-    return RGB(std::numeric_limits<double>::quiet_NaN());
-  });
-  std::vector<Probe> onSurface;
-  std::vector<std::size_t> index;
-  for (std::size_t i = 0; i < probes.size(); ++i)
-  {
-    if (std::isnan(values[i].x))
-    {
-      onSurface.push_back(probes[i]);
-      index.push_back(i);
-    }
-  }
-  const std::vector<RGB> fromMethod = this->Solver.Evaluate(onSurface);
-  for (std::size_t k = 0; k < index.size(); ++k)
-  {
-    values[index[k]] = fromMethod[k];
-  }
-  if (gathered)
-  {
-    *gathered = evaluator.GatheredCount();
-  }
-  return values;
+  return EvaluateSensorsOnInputTriangles(this->Surface(), *this->SceneRef, probes,
+    [this](const std::vector<Probe>& onSurface) { return this->Solver.Evaluate(onSurface); }, gathered);
 }
 
 SolverProduct MeshlessMethod::Product(const ProgressCallback&) const
