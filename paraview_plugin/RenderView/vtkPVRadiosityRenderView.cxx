@@ -1,0 +1,125 @@
+#include "vtkPVRadiosityRenderView.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkPVProgressHandler.h"
+#include "vtkPVSession.h"
+#include "vtkPVSynchronizedRenderer.h"
+#include "vtkRadiosityFilter.h"
+#include "vtkRadiosityPass.h"
+#include "vtkRenderer.h"
+
+vtkStandardNewMacro(vtkPVRadiosityRenderView);
+
+vtkPVRadiosityRenderView::vtkPVRadiosityRenderView()
+{
+  // The pass draws inside ParaView's camera pass; its own delegate (a
+  // vtkRenderStepsPass) draws the solution and the props not solved.
+  this->SynchronizedRenderers->SetRenderPass(this->RadiosityPass);
+  vtkRadiosityFilter* filter = this->RadiosityPass->GetFilter();
+  filter->SetProgressText("Radiosity solve");
+  // Progress of a solve reaches the progress bar as a filter's does.
+  if (vtkPVSession* session = this->GetSession())
+  {
+    if (vtkPVProgressHandler* handler = session->GetProgressHandler())
+    {
+      handler->RegisterProgressEvent(filter, 0);
+    }
+  }
+}
+
+vtkPVRadiosityRenderView::~vtkPVRadiosityRenderView()
+{
+  this->SynchronizedRenderers->SetRenderPass(nullptr);
+}
+
+vtkRadiosityPass* vtkPVRadiosityRenderView::GetRadiosityPass()
+{
+  return this->RadiosityPass;
+}
+
+void vtkPVRadiosityRenderView::SetMethod(int method)
+{
+  this->RadiosityPass->SetMethod(method);
+}
+
+int vtkPVRadiosityRenderView::GetMethod()
+{
+  return this->RadiosityPass->GetMethod();
+}
+
+void vtkPVRadiosityRenderView::SetTolerance(double tolerance)
+{
+  this->RadiosityPass->GetFilter()->SetTolerance(tolerance);
+}
+
+double vtkPVRadiosityRenderView::GetTolerance()
+{
+  return this->RadiosityPass->GetFilter()->GetTolerance();
+}
+
+void vtkPVRadiosityRenderView::SetRadiosityLightScale(double scale)
+{
+  this->RadiosityPass->SetLightScale(scale);
+}
+
+double vtkPVRadiosityRenderView::GetRadiosityLightScale()
+{
+  return this->RadiosityPass->GetLightScale();
+}
+
+void vtkPVRadiosityRenderView::SetSkyModel(int model)
+{
+  this->RadiosityPass->SetSkyModel(model);
+}
+
+int vtkPVRadiosityRenderView::GetSkyModel()
+{
+  return this->RadiosityPass->GetSkyModel();
+}
+
+void vtkPVRadiosityRenderView::SetSkyRadiance(double r, double g, double b)
+{
+  this->RadiosityPass->SetSkyRadiance(r, g, b);
+}
+
+void vtkPVRadiosityRenderView::SetSkyUp(double x, double y, double z)
+{
+  this->RadiosityPass->SetSkyUp(x, y, z);
+}
+
+void vtkPVRadiosityRenderView::SetRadiosityExposure(double exposure)
+{
+  this->RadiosityPass->SetExposure(exposure);
+}
+
+double vtkPVRadiosityRenderView::GetRadiosityExposure()
+{
+  return this->RadiosityPass->GetExposure();
+}
+
+void vtkPVRadiosityRenderView::SetRadiosityToneMapping(int mode)
+{
+  this->RadiosityPass->SetToneMapping(mode);
+}
+
+int vtkPVRadiosityRenderView::GetRadiosityToneMapping()
+{
+  return this->RadiosityPass->GetToneMapping();
+}
+
+void vtkPVRadiosityRenderView::SetTwoSided(bool twoSided)
+{
+  this->RadiosityPass->SetTwoSided(twoSided);
+}
+
+int vtkPVRadiosityRenderView::GetNumberOfSolves()
+{
+  return this->RadiosityPass->GetNumberOfSolves();
+}
+
+void vtkPVRadiosityRenderView::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RadiosityPass:\n";
+  this->RadiosityPass->PrintSelf(os, indent.GetNextIndent());
+}
