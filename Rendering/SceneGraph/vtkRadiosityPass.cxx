@@ -5,6 +5,9 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkHardwareSelector.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMultiBlockDataSet.h"
@@ -185,6 +188,7 @@ bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
     this->Display->Clear();
   }
   vtkRadiosityRendererNode* graph = this->SceneGraph;
+  this->PublishSettings(renderer);
   graph->SetMaxReflectance(this->MaxReflectance);
   graph->SetLightScale(this->Filter->GetLightScale());
   graph->SetTwoSided(this->TwoSided);
@@ -263,6 +267,7 @@ bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
     this->InvokeEvent(vtkCommand::ProgressEvent, const_cast<double*>(&one));
     this->InvokeEvent(vtkCommand::EndEvent, nullptr);
   }
+  this->PublishSettings(renderer); // the count of solves
   if (!error.empty())
   {
     this->Display->Clear();
@@ -271,6 +276,21 @@ bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
     return false;
   }
   return true;
+}
+
+void vtkRadiosityPass::PublishSettings(vtkRenderer* renderer)
+{
+  vtkInformation* info = renderer->GetInformation();
+  using Node = vtkRadiosityRendererNode;
+  info->Set(Node::METHOD(), this->Filter->GetMethod());
+  info->Set(Node::TOLERANCE(), this->Filter->GetTolerance());
+  info->Set(Node::LIGHT_SCALE(), this->Filter->GetLightScale());
+  info->Set(Node::SKY_MODEL(), this->Filter->GetSkyModel());
+  info->Set(Node::MAX_REFLECTANCE(), this->MaxReflectance);
+  info->Set(Node::TWO_SIDED(), this->TwoSided ? 1 : 0);
+  info->Set(Node::EXPOSURE(), this->Exposure);
+  info->Set(Node::TONE_MAPPING(), this->ToneMapping);
+  info->Set(Node::NUMBER_OF_SOLVES(), this->NumberOfSolves);
 }
 
 void vtkRadiosityPass::Render(const vtkRenderState* s)

@@ -207,6 +207,9 @@ protected:
   int NumberOfSolves = 0;
 
 private:
+  /// Writes the settings into the renderer's information (vtkRadiosityRendererNode's keys).
+  void PublishSettings(vtkRenderer* renderer);
+
   vtkRadiosityPass(const vtkRadiosityPass&) = delete;
   void operator=(const vtkRadiosityPass&) = delete;
 

@@ -4,6 +4,9 @@
 #include "vtkActorCollection.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkInformationKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMultiBlockDataSet.h"
@@ -17,6 +20,66 @@
 #include <map>
 
 vtkStandardNewMacro(vtkRadiosityRendererNode);
+
+vtkInformationKeyMacro(vtkRadiosityRendererNode, METHOD, Integer);
+vtkInformationKeyMacro(vtkRadiosityRendererNode, TOLERANCE, Double);
+vtkInformationKeyMacro(vtkRadiosityRendererNode, LIGHT_SCALE, Double);
+vtkInformationKeyMacro(vtkRadiosityRendererNode, SKY_MODEL, Integer);
+vtkInformationKeyMacro(vtkRadiosityRendererNode, MAX_REFLECTANCE, Double);
+vtkInformationKeyMacro(vtkRadiosityRendererNode, TWO_SIDED, Integer);
+vtkInformationKeyMacro(vtkRadiosityRendererNode, EXPOSURE, Double);
+vtkInformationKeyMacro(vtkRadiosityRendererNode, TONE_MAPPING, Integer);
+vtkInformationKeyMacro(vtkRadiosityRendererNode, NUMBER_OF_SOLVES, Integer);
+
+namespace
+{
+// A renderer's setting, or the pass's default when the renderer has none.
+template <typename Key, typename Value>
+Value ReadSetting(vtkRenderer* renderer, Key* key, Value fallback)
+{
+  vtkInformation* info = renderer ? renderer->GetInformation() : nullptr;
+  return info && info->Has(key) ? static_cast<Value>(info->Get(key)) : fallback;
+}
+}
+
+// The defaults are those of a new vtkRadiosityPass (its filter's: method
+// Auto, tolerance 1e-3, LightScale pi, no sky).
+int vtkRadiosityRendererNode::GetMethod(vtkRenderer* r)
+{
+  return ReadSetting(r, METHOD(), 0);
+}
+double vtkRadiosityRendererNode::GetTolerance(vtkRenderer* r)
+{
+  return ReadSetting(r, TOLERANCE(), 1e-3);
+}
+double vtkRadiosityRendererNode::GetLightScale(vtkRenderer* r)
+{
+  return ReadSetting(r, LIGHT_SCALE(), 3.14159265358979323846);
+}
+int vtkRadiosityRendererNode::GetSkyModel(vtkRenderer* r)
+{
+  return ReadSetting(r, SKY_MODEL(), 0);
+}
+double vtkRadiosityRendererNode::GetMaxReflectance(vtkRenderer* r)
+{
+  return ReadSetting(r, MAX_REFLECTANCE(), 0.95);
+}
+bool vtkRadiosityRendererNode::GetTwoSided(vtkRenderer* r)
+{
+  return ReadSetting(r, TWO_SIDED(), 0) != 0;
+}
+double vtkRadiosityRendererNode::GetExposure(vtkRenderer* r)
+{
+  return ReadSetting(r, EXPOSURE(), 1.0);
+}
+int vtkRadiosityRendererNode::GetToneMapping(vtkRenderer* r)
+{
+  return ReadSetting(r, TONE_MAPPING(), 0);
+}
+int vtkRadiosityRendererNode::GetNumberOfSolves(vtkRenderer* r)
+{
+  return ReadSetting(r, NUMBER_OF_SOLVES(), 0);
+}
 
 vtkRadiosityRendererNode::vtkRadiosityRendererNode()
   : SceneInput(vtkSmartPointer<vtkMultiBlockDataSet>::New())

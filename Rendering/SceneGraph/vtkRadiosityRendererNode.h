@@ -14,6 +14,15 @@
  * solution (the filter's outputs of the last successful solve) and the
  * signature it was solved for, so that vtkRadiosityPass solves again only
  * when the signature moved.
+ *
+ * The settings the solution was solved and drawn with are readable from
+ * the renderer's information, as vtkOSPRayRendererNode keeps OSPRay's:
+ * vtkRadiosityPass writes them at every UpdateSolution and Render (keys
+ * METHOD, TOLERANCE, LIGHT_SCALE, SKY_MODEL, MAX_REFLECTANCE, TWO_SIDED,
+ * EXPOSURE, TONE_MAPPING, NUMBER_OF_SOLVES), and the static getters read
+ * them from any renderer (the pass's default where a key is absent, so
+ * code that holds only the renderer, such as a view or an annotation, can
+ * say what it shows).
  */
 #ifndef vtkRadiosityRendererNode_h
 #define vtkRadiosityRendererNode_h
@@ -28,10 +37,13 @@
 #include <vector>  // for std::vector
 
 class vtkActor;
+class vtkInformationDoubleKey;
+class vtkInformationIntegerKey;
 class vtkLightCollection;
 class vtkMultiBlockDataSet;
 class vtkPolyData;
 class vtkProp;
+class vtkRenderer;
 
 class RADIOSITYRENDERINGSCENEGRAPH_EXPORT vtkRadiosityRendererNode : public vtkRendererNode
 {
@@ -39,6 +51,36 @@ public:
   static vtkRadiosityRendererNode* New();
   vtkTypeMacro(vtkRadiosityRendererNode, vtkRendererNode);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The keys of the pass's settings in the renderer's information (see the class doc).
+  static vtkInformationIntegerKey* METHOD();
+  static vtkInformationDoubleKey* TOLERANCE();
+  static vtkInformationDoubleKey* LIGHT_SCALE();
+  static vtkInformationIntegerKey* SKY_MODEL();
+  static vtkInformationDoubleKey* MAX_REFLECTANCE();
+  static vtkInformationIntegerKey* TWO_SIDED();
+  static vtkInformationDoubleKey* EXPOSURE();
+  static vtkInformationIntegerKey* TONE_MAPPING();
+  static vtkInformationIntegerKey* NUMBER_OF_SOLVES();
+  ///@}
+
+  ///@{
+  /**
+   * The settings a renderer's pass last wrote (vtkRadiosityFilter's method
+   * constants, the sky model's, ...); the pass's defaults when the renderer
+   * has none (a null renderer too).
+   */
+  static int GetMethod(vtkRenderer* renderer);
+  static double GetTolerance(vtkRenderer* renderer);
+  static double GetLightScale(vtkRenderer* renderer);
+  static int GetSkyModel(vtkRenderer* renderer);
+  static double GetMaxReflectance(vtkRenderer* renderer);
+  static bool GetTwoSided(vtkRenderer* renderer);
+  static double GetExposure(vtkRenderer* renderer);
+  static int GetToneMapping(vtkRenderer* renderer);
+  static int GetNumberOfSolves(vtkRenderer* renderer);
+  ///@}
 
   /// Prepass: names the actor nodes; postpass: gathers what the children converted.
   void Synchronize(bool prepass) override;

@@ -13,7 +13,10 @@
 //   fail UpdateSolution with an error naming the light ("scene light 0")
 //   and the actor ("actor 4"), keep no solution, and the scene solves again
 //   once they are repaired;
-// - hardware selection (vtkHardwareSelector) still picks the solved actors.
+// - hardware selection (vtkHardwareSelector) still picks the solved actors;
+// - the settings are readable from the renderer's information
+//   (vtkRadiosityRendererNode's keys): method, tolerance, exposure, the
+//   count of solves, each as the pass holds it after a render.
 #include "PassTestScene.h"
 
 #include "vtkCallbackCommand.h"
@@ -23,6 +26,7 @@
 #include "vtkProp.h"
 #include "vtkRadiosityFilter.h"
 #include "vtkRadiosityPass.h"
+#include "vtkRadiosityRendererNode.h"
 #include "vtkRenderWindow.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
@@ -173,6 +177,27 @@ int TestRadiosityPassResolve(int, char*[])
   renderer->RemoveActor(extra);
   step("the actor removed", 1);
   step("redraw", 0);
+  {
+    // The settings as the renderer's information holds them (a fresh
+    // renderer reads the defaults).
+    using Node = vtkRadiosityRendererNode;
+    vtkNew<vtkRenderer> other;
+    ok &= PassTestScene::Check(Node::GetMethod(renderer) == vtkRadiosityFilter::Auto &&
+        Node::GetTolerance(renderer) == 2e-2 && Node::GetExposure(renderer) == 1.5 &&
+        Node::GetMaxReflectance(renderer) == 0.7 && Node::GetNumberOfSolves(renderer) == expected &&
+        renderer->GetInformation()->Has(Node::METHOD()) && !other->GetInformation()->Has(Node::METHOD()) &&
+        Node::GetTolerance(other) == 1e-3 && Node::GetNumberOfSolves(other) == 0,
+      "renderer information: method " + std::to_string(Node::GetMethod(renderer)) + ", tolerance " +
+        std::to_string(Node::GetTolerance(renderer)) + ", exposure " +
+        std::to_string(Node::GetExposure(renderer)) + ", solves " +
+        std::to_string(Node::GetNumberOfSolves(renderer)) + " (expected " + std::to_string(expected) + ")");
+    pass->SetExposure(2.5);
+    window->Render();
+    ok &= PassTestScene::Check(Node::GetExposure(renderer) == 2.5 &&
+        Node::GetNumberOfSolves(renderer) == expected,
+      "renderer information after an exposure change: " + std::to_string(Node::GetExposure(renderer)));
+    pass->SetExposure(1.5);
+  }
   ok &= PassTestScene::Check(events.Start == expected && events.End == expected,
     "a StartEvent and an EndEvent per solve: " + std::to_string(events.Start) + " and " +
       std::to_string(events.End) + " for " + std::to_string(expected) + " solves");
