@@ -22,9 +22,72 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 vtkStandardNewMacro(vtkRadiosityPolyDataMapperNode);
+
+namespace
+{
+// Whether two arrays hold the same values bit for bit (name, type, shape).
+bool SameArray(vtkDataArray* a, vtkDataArray* b)
+{
+  if (!a || !b)
+  {
+    return a == b;
+  }
+  const char* na = a->GetName();
+  const char* nb = b->GetName();
+  if (a->GetDataType() != b->GetDataType() || a->GetNumberOfComponents() != b->GetNumberOfComponents() ||
+    a->GetNumberOfTuples() != b->GetNumberOfTuples() || (na == nullptr) != (nb == nullptr) ||
+    (na && std::strcmp(na, nb) != 0))
+  {
+    return false;
+  }
+  const std::size_t bytes = static_cast<std::size_t>(a->GetNumberOfValues()) *
+    static_cast<std::size_t>(a->GetDataTypeSize());
+  return bytes == 0 || std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0), bytes) == 0;
+}
+
+// Whether two conversions gave the same scene: same objects, points,
+// triangles and material arrays. A moved MTime that changes none of it
+// (ParaView's first render sets mapper and lookup-table state once) is not
+// a change to solve.
+bool SameObjects(const std::vector<vtkRadiosityPolyDataMapperNode::Object>& a,
+  const std::vector<vtkRadiosityPolyDataMapperNode::Object>& b)
+{
+  if (a.size() != b.size())
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    vtkPolyData* pa = a[i].Data;
+    vtkPolyData* pb = b[i].Data;
+    if (a[i].Name != b[i].Name || !pa || !pb || !pa->GetPoints() || !pb->GetPoints() ||
+      !SameArray(pa->GetPoints()->GetData(), pb->GetPoints()->GetData()) ||
+      !SameArray(pa->GetPolys()->GetOffsetsArray(), pb->GetPolys()->GetOffsetsArray()) ||
+      !SameArray(pa->GetPolys()->GetConnectivityArray(), pb->GetPolys()->GetConnectivityArray()))
+    {
+      return false;
+    }
+    vtkCellData* ca = pa->GetCellData();
+    vtkCellData* cb = pb->GetCellData();
+    if (ca->GetNumberOfArrays() != cb->GetNumberOfArrays())
+    {
+      return false;
+    }
+    for (int k = 0; k < ca->GetNumberOfArrays(); ++k)
+    {
+      if (!SameArray(ca->GetArray(k), cb->GetArray(k)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+}
 
 vtkRadiosityPolyDataMapperNode::vtkRadiosityPolyDataMapperNode() = default;
 vtkRadiosityPolyDataMapperNode::~vtkRadiosityPolyDataMapperNode() = default;
@@ -116,7 +179,10 @@ void vtkRadiosityPolyDataMapperNode::Synchronize(bool prepass)
   {
     return;
   }
-  this->Objects.clear();
+  std::vector<Object> previous;
+  previous.swap(this->Objects);
+  const std::string previousError = this->Error;
+  const bool converted = this->ConversionTime.GetMTime() > 0;
   this->Error.clear();
   this->Warnings.clear();
   this->ClampedColours = 0;
@@ -133,7 +199,10 @@ void vtkRadiosityPolyDataMapperNode::Synchronize(bool prepass)
   // After the conversion: creating the default lookup table or setting its
   // range moves the mapper's MTime once, and that is not a change to solve.
   this->ConvertedMTime = this->GetSceneMTime();
-  this->ConversionTime.Modified();
+  if (!converted || this->Error != previousError || !SameObjects(previous, this->Objects))
+  {
+    this->ConversionTime.Modified();
+  }
   this->ConvertedSolvable = solvable;
   this->ConvertedMaxReflectance = rendererNode->GetMaxReflectance();
   this->ConvertedLightScale = rendererNode->GetLightScale();

@@ -57,8 +57,10 @@ public:
   virtual vtkMTimeType GetSceneMTime();
   /// GetSceneMTime() after the last conversion.
   vtkMTimeType GetConvertedMTime() const { return this->ConvertedMTime; }
-  /// When the objects were last converted (a global VTK time: it moves at
-  /// every conversion, also one for a changed MaxReflectance or LightScale).
+  /// When the objects last changed (a global VTK time: it moves at every
+  /// conversion that gave other objects, points, triangles or material
+  /// arrays, also one for a changed MaxReflectance or LightScale; a moved
+  /// MTime that changes none of it leaves it, so nothing is solved again).
   vtkMTimeType GetConversionTime() const { return this->ConversionTime.GetMTime(); }
 
 protected:
