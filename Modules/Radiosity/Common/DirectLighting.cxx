@@ -4,6 +4,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace radiosity
@@ -285,6 +286,18 @@ std::vector<RGB> DirectLighting::ReceivedPower() const
     p *= sampledArea > 0.0 ? totalArea / sampledArea : 0.0;
   }
   return power;
+}
+
+Vec3 DirectLighting::VisibilityPoint(const Vec3& x, const Vec3& inner) const
+{
+  const double distance = glm::length(inner - x);
+  if (!(distance > 0.0))
+  {
+    return x;
+  }
+  const double offset = this->Occluders ? this->Occluders->Offset() : 0.0;
+  const double t = std::clamp(4.0 * offset / distance, 1e-3, 0.5);
+  return x + t * (inner - x);
 }
 
 Vec3 DirectLighting::RayOrigin(const Vec3& x, const Vec3& n) const

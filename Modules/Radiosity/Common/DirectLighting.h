@@ -56,6 +56,25 @@ public:
   {
     return this->Punctual(x, n) + this->SkyIrradiance(x, n);
   }
+  /// Irradiance at x with every ray (shadow and sky) cast from
+  /// `visibilityPoint` (VisibilityPoint: x on an element's boundary).
+  RGB IrradianceSeenFrom(const Vec3& x, const Vec3& visibilityPoint, const Vec3& n) const
+  {
+    return this->PunctualSeenFrom(x, visibilityPoint, n) + this->SkyIrradiance(visibilityPoint, n);
+  }
+
+  /**
+   * Where to test visibility for a sample x on the boundary of a planar
+   * element (a corner, an edge midpoint): x moved towards `inner` (a point
+   * inside the element, its centroid) by at least 4 times the rays'
+   * self-intersection offset (and at least 1e-3 of the way, at most half).
+   * The rays skip what lies closer than that offset, so from a point on a
+   * seam (a floor's edge at a wall) the rays aimed behind the adjacent
+   * surface would pass through it: the office's floor saw the sky through
+   * its walls, and its hierarchical solution took 9.6% more daylight in
+   * than the window lets through.
+   */
+  Vec3 VisibilityPoint(const Vec3& x, const Vec3& inner) const;
 
   /**
    * Vector irradiance (one vector per channel) at x on a surface of normal n:

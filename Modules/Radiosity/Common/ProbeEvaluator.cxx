@@ -32,12 +32,13 @@ ElementSamples PunctualSamples(const DirectLighting& lights, const SolutionMesh&
   const auto& tri = solution.Triangles[t];
   const Vec3& n = solution.Normals[t];
   ElementSamples s;
-  Vec3 centre(0.0);
+  const Vec3 centre =
+    (solution.Points[tri.V[0]] + solution.Points[tri.V[1]] + solution.Points[tri.V[2]]) / 3.0;
   for (int k = 0; k < 3; ++k)
   {
+    // Seen from inside, as the methods light their corners (VisibilityPoint).
     const Vec3& x = solution.Points[tri.V[k]];
-    s.Corner[k] = lights.Punctual(x, n);
-    centre += x / 3.0;
+    s.Corner[k] = lights.PunctualSeenFrom(x, lights.VisibilityPoint(x, centre), n);
   }
   s.Centre = lights.Punctual(centre, n);
   return s;

@@ -627,14 +627,16 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       for (std::uint32_t k : owned[i])
       {
         const Vec3 x = Inside(sharedPoints[k], c);
-        sharedValues[k] = ChainIrradiance(chain, x, n) + (lights ? lights->SkyIrradiance(x, n) : RGB(0.0));
+        sharedValues[k] = ChainIrradiance(chain, x, n) +
+          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n) : RGB(0.0));
       }
       LeafWork& w = work[i];
       w.LocalValues.resize(w.LocalPoints.size());
       for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
       {
         const Vec3 x = Inside(w.LocalPoints[k], c);
-        w.LocalValues[k] = ChainIrradiance(chain, x, n) + (lights ? lights->SkyIrradiance(x, n) : RGB(0.0));
+        w.LocalValues[k] = ChainIrradiance(chain, x, n) +
+          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n) : RGB(0.0));
       }
       if (lights && lights->HasPunctualLights())
       {

@@ -30,7 +30,9 @@ double HierarchicalRadiosity::LinkLights()
       const Element& el = mesh[e];
       const TriangleCorners c = this->Corners(e);
       // Corners (from inside, as the discontinuity mesher samples them), edge
-      // midpoints and the centre.
+      // midpoints and the centre; the rays of those on the boundary from
+      // inside too (DirectLighting::VisibilityPoint: a node's edge on a
+      // wall saw the sky through the wall).
       const Vec3 points[7] = { c[0] + 1e-7 * (el.Centroid - c[0]), c[1] + 1e-7 * (el.Centroid - c[1]),
         c[2] + 1e-7 * (el.Centroid - c[2]), 0.5 * (c[0] + c[1]), 0.5 * (c[1] + c[2]),
         0.5 * (c[2] + c[0]), el.Centroid };
@@ -38,7 +40,9 @@ double HierarchicalRadiosity::LinkLights()
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for (int k = 0; k < 7; ++k)
       {
-        h[k] = this->Lights->Irradiance(points[k], el.Normal);
+        h[k] = k < 6
+          ? this->Lights->IrradianceSeenFrom(points[k], this->Lights->VisibilityPoint(points[k], el.Centroid), el.Normal)
+          : this->Lights->Irradiance(points[k], el.Normal);
         lo = std::min(lo, MaxComponent(h[k]));
         hi = std::max(hi, MaxComponent(h[k]));
       }

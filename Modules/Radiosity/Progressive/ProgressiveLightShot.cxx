@@ -28,7 +28,7 @@ RGB LightMean(const DirectLighting& lights, const ElementMesh& mesh, std::uint32
   RGB atMid[3];
   for (int k = 0; k < 3; ++k)
   {
-    atMid[k] = lights.Irradiance(m[k], r.Normal);
+    atMid[k] = lights.IrradianceSeenFrom(m[k], lights.VisibilityPoint(m[k], r.Centroid), r.Normal);
   }
   // Quarters: (c0, m0, m2), (m0, c1, m1), (m2, m1, c2), (m0, m1, m2).
   const RGB corners = d.Corner[0] + d.Corner[1] + d.Corner[2];
@@ -78,7 +78,10 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
     tbb::parallel_for(std::size_t(0), needed.size(), [&](std::size_t i)
       {
         const SharedSample& sample = this->Samples[needed[i]];
-        sampleLight[needed[i]] = lights.Irradiance(sample.Point, sample.Normal);
+        // Rays from inside the element: from the corner itself those aimed
+        // behind an adjacent wall would pass through it.
+        sampleLight[needed[i]] =
+          lights.IrradianceSeenFrom(sample.Point, lights.VisibilityPoint(sample.Point, sample.Inner), sample.Normal);
       });
     delta.assign(pending.size(), ElementSamples());
     split.assign(pending.size(), 0);

@@ -112,6 +112,7 @@ private:
   struct SharedSample
   {
     Vec3 Point, RayOrigin, Normal;
+    Vec3 Inner; ///< the centroid of the element it was made for (DirectLighting::VisibilityPoint)
   };
 
   const Scene& SourceScene;
