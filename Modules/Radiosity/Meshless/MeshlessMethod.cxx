@@ -14,7 +14,8 @@ SolutionMesh MeshlessMethod::Surface() const
 
 std::vector<RGB> MeshlessMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const
 {
-  return EvaluateSensorsOnInputTriangles(this->Surface(), *this->SceneRef, probes,
+  // The sensors in the air gather the surface with the lights exact at its samples.
+  return EvaluateSensorsOnInputTriangles(this->Solver.GatherSurface(), *this->SceneRef, probes,
     [this](const std::vector<Probe>& onSurface) { return this->Solver.Evaluate(onSurface); }, gathered);
 }
 

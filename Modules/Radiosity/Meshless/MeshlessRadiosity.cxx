@@ -370,21 +370,28 @@ void MeshlessRadiosity::ComputeBounce(const ShepardField& previous, Bounce& out)
 
 RGB MeshlessRadiosity::IrradianceAt(const Vec3& x, const Vec3& n, std::uint32_t triangle) const
 {
+  return this->ExactLightsAt(x, this->SourceScene.Centroid(triangle), n, triangle);
+}
+
+RGB MeshlessRadiosity::ExactLightsAt(const Vec3& x, const Vec3& inner, const Vec3& n, std::uint32_t triangle) const
+{
   if (!this->Solution)
   {
     return RGB(0.0); // no emitter, or aborted before the points were placed: the zero solution
   }
   const auto group = static_cast<std::uint32_t>(this->SourceScene.ObjectIds[triangle]);
-  if (this->Punctual)
+  if (this->LightFit)
   {
-    // The punctual lights exact at x, the field carrying the rest.
-    return this->Solution->Evaluate(x, n, group) - this->Punctual->Evaluate(x, n, group) +
-      this->Lights->Punctual(x, n);
+    // The lights and the sky exact at x (their rays from inside the
+    // triangle, DirectLighting::VisibilityPoint), the field carrying the rest.
+    return this->Solution->Evaluate(x, n, group) - this->LightFit->Evaluate(x, n, group) +
+      this->Lights->IrradianceSeenFrom(x, this->Lights->VisibilityPoint(x, inner), n);
   }
   return this->Solution->Evaluate(x, n, group);
 }
 
-SolutionMesh MeshlessRadiosity::Surface() const
+SolutionMesh MeshlessRadiosity::SampledSurface(const std::function<RGB(const Vec3& x, const Vec3& inner,
+    const Vec3& n, std::uint32_t triangle)>& value) const
 {
   const Scene& scene = this->SourceScene;
   const double diagonal = scene.Diagonal();
@@ -396,17 +403,30 @@ SolutionMesh MeshlessRadiosity::Surface() const
   }
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
     Element& el = mesh[leaves[i]];
-    const auto group = static_cast<std::uint32_t>(scene.ObjectIds[el.Source]);
     // Corners just inside the element: a corner on a neighbour's plane would
     // take that neighbour's basis functions at a grazing normal.
     for (int k = 0; k < 3; ++k)
     {
       const Vec3 x = mesh.Corner(leaves[i], k) + 1e-7 * (el.Centroid - mesh.Corner(leaves[i], k));
-      el.Irradiance.Corner[k] = this->Solution->Evaluate(x, el.Normal, group);
+      el.Irradiance.Corner[k] = value(x, el.Centroid, el.Normal, el.Source);
     }
-    el.Irradiance.Centre = this->Solution->Evaluate(el.Centroid, el.Normal, group);
+    el.Irradiance.Centre = value(el.Centroid, el.Centroid, el.Normal, el.Source);
   });
   return ExtractSolution(mesh);
+}
+
+SolutionMesh MeshlessRadiosity::Surface() const
+{
+  return this->SampledSurface([this](const Vec3& x, const Vec3&, const Vec3& n, std::uint32_t t) {
+    return this->Solution->Evaluate(x, n, static_cast<std::uint32_t>(this->SourceScene.ObjectIds[t]));
+  });
+}
+
+SolutionMesh MeshlessRadiosity::GatherSurface() const
+{
+  return this->SampledSurface([this](const Vec3& x, const Vec3& inner, const Vec3& n, std::uint32_t t) {
+    return this->ExactLightsAt(x, inner, n, t);
+  });
 }
 
 std::vector<RGB> MeshlessRadiosity::Evaluate(const std::vector<Probe>& probes) const
@@ -494,20 +514,28 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     this->Direct = std::make_unique<ShepardField>(points);
     this->Direct->Coefficients() = direct.Field->Coefficients();
     this->Solution->Coefficients() = direct.Field->Coefficients();
-    this->Punctual.reset();
-    if (this->Lights && this->Lights->HasPunctualLights())
+    this->LightFit.reset();
+    if (this->Lights)
     {
-      // The punctual lights' share of the direct field: the same fit
-      // replayed with their exact values at the same points.
-      this->Punctual = std::make_unique<ShepardField>(points);
-      std::vector<RGB> value(points.Points().size(), RGB(0.0));
-      for (const std::vector<std::uint32_t>& set : direct.Batches)
+      // The lights' share of the direct field: the same fit replayed with
+      // their exact values at the same points (the direct field itself
+      // when no triangle emits).
+      this->LightFit = std::make_unique<ShepardField>(points);
+      if (this->Emitters.empty())
       {
-        tbb::parallel_for(std::size_t(0), set.size(), [&](std::size_t k) {
-          const MeshlessPoint& p = points.Points()[set[k]];
-          value[set[k]] = this->Lights->Punctual(p.Position, p.Normal);
-        });
-        FitBatch(points, set, value, *this->Punctual);
+        this->LightFit->Coefficients() = direct.Field->Coefficients();
+      }
+      else
+      {
+        std::vector<RGB> value(points.Points().size(), RGB(0.0));
+        for (const std::vector<std::uint32_t>& set : direct.Batches)
+        {
+          tbb::parallel_for(std::size_t(0), set.size(), [&](std::size_t k) {
+            const MeshlessPoint& p = points.Points()[set[k]];
+            value[set[k]] = this->Lights->Irradiance(p.Position, p.Normal);
+          });
+          FitBatch(points, set, value, *this->LightFit);
+        }
       }
     }
     this->Stats.DirectSeconds = clock.Seconds() - this->Stats.PlacementSeconds;

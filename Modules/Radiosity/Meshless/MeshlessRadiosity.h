@@ -36,6 +36,7 @@
 #include "Radiosity/Common/SolutionMesh.h"
 #include "Radiosity/Common/SolverTypes.h"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -106,9 +107,17 @@ public:
   bool WasGatheredTo(std::size_t j) const { return j < this->Touched.size() && this->Touched[j]; }
 
   /// Irradiance at (x, n) on input triangle `triangle` (its object is the
-  /// group); the punctual lights' direct light exact at x, the field
-  /// carrying the rest (Lehtinen et al., figure 1: direct light per pixel).
+  /// group); the lights' and the sky's direct light exact at x (the sky by
+  /// DirectLighting's quadrature, its rays from inside the triangle), the
+  /// field carrying the rest (Lehtinen et al., figure 1: direct light per
+  /// pixel).
   RGB IrradianceAt(const Vec3& x, const Vec3& n, std::uint32_t triangle) const;
+  /// As Surface, but each sample by IrradianceAt: the lights and the sky
+  /// exact at the corners and centres (what the sensors in the air gather:
+  /// the field's fit of a window's sky patch on the office floor put the
+  /// daylight factor 2.4% under at the back). Costs DirectLighting's sky
+  /// quadrature per sample.
+  SolutionMesh GatherSurface() const;
   /// The field on the input surfaces: the triangles split uniformly to
   /// SurfaceElementSize, each element's corners and centre evaluated from the
   /// field (SPEC output arrays; the field itself is the solution, and
@@ -124,6 +133,8 @@ private:
   void ComputeBounce(const ShepardField& previous, Bounce& out);
   RGB Gather(std::uint32_t receiver, const ShepardField& previous) const;
   RGB DirectAt(std::uint32_t receiver) const;
+  /// IrradianceAt with the lights' rays from `inner` when x is on the triangle's boundary.
+  RGB ExactLightsAt(const Vec3& x, const Vec3& inner, const Vec3& n, std::uint32_t triangle) const;
   template <typename Value>
   void Refine(Bounce& out, const Value& value);
 
@@ -134,9 +145,12 @@ private:
   std::unique_ptr<DirectLighting> Lights; ///< punctual lights and sky (null without)
   std::unique_ptr<PointHierarchy> Hierarchy;
   std::unique_ptr<ShepardField> Direct, Solution;
-  /// The punctual lights' part of Direct (null without punctual lights):
+  /// The lights' and the sky's part of Direct (null without lights or sky):
   /// IrradianceAt replaces it by their exact value at the point.
-  std::unique_ptr<ShepardField> Punctual;
+  std::unique_ptr<ShepardField> LightFit;
+  /// The surface split to SurfaceElementSize, every sample from `value`.
+  SolutionMesh SampledSurface(const std::function<RGB(const Vec3& x, const Vec3& inner, const Vec3& n,
+      std::uint32_t triangle)>& value) const;
   std::vector<std::uint32_t> Emitters;
   std::vector<unsigned char> Touched; ///< per point: gathered to at least once
   double Scale = 0.0;                 ///< largest coarse direct irradiance (one channel)

@@ -102,10 +102,14 @@ TEST(OfficeScene, DaylightFactorFaceCluster)
     3.0, 0.015);
 }
 
-// Meshless misses the bound narrowly: 3.2 standard errors (2.4%, the worst
-// sensor under), held to 4 (3%) until it is met (a VariationThreshold of
-// 0.003 instead of 0.01 meets it, 2.6, in twice the time; 512 gather rays or
-// a surface twice as fine change nothing).
+// Meshless misses the bound narrowly: 3.16 standard errors (2.39%, the
+// worst sensor under), held to 4 (3%) until it is met. Its direct light is
+// exact at the gathered surface's samples (GatherSurface); what is low is
+// the reflected light: against hierarchical and progressive (which agree
+// to 0.1% at every sensor) the walls' and ceiling's mean irradiance is 1.4
+// to 2.7% under, the floor's 0.5%. A VariationThreshold of 0.003 instead of
+// 0.01 meets the bound, 2.6, in twice the time; 512 gather rays or a
+// surface twice as fine change nothing.
 TEST(OfficeScene, DaylightFactorMeshless)
 {
   CheckDaylightFactor("meshless",
