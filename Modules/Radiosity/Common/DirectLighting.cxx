@@ -288,7 +288,7 @@ std::vector<RGB> DirectLighting::ReceivedPower() const
   return power;
 }
 
-Vec3 DirectLighting::VisibilityPoint(const Vec3& x, const Vec3& inner) const
+Vec3 DirectLighting::VisibilityPoint(const Vec3& x, const Vec3& inner, double fraction) const
 {
   const double distance = glm::length(inner - x);
   if (!(distance > 0.0))
@@ -296,8 +296,23 @@ Vec3 DirectLighting::VisibilityPoint(const Vec3& x, const Vec3& inner) const
     return x;
   }
   const double offset = this->Occluders ? this->Occluders->Offset() : 0.0;
-  const double t = std::clamp(4.0 * offset / distance, 1e-3, 0.5);
+  const double t = std::min(std::max(4.0 * offset / distance, fraction), 0.5);
   return x + t * (inner - x);
+}
+
+Vec3 DirectLighting::SharedVertexVisibility(const Scene& scene, std::size_t source, const Vec3& x) const
+{
+  // Within 1e-5 of its size of an edge: the corner samples sit 1e-6 of their element inside.
+  const Vec3 a = scene.Vertex(source, 0), b = scene.Vertex(source, 1), c = scene.Vertex(source, 2);
+  const double size = std::max({ glm::length(b - a), glm::length(c - b), glm::length(a - c) });
+  const auto offEdge = [&](const Vec3& p, const Vec3& q) {
+    const Vec3 e = q - p;
+    const double l2 = glm::dot(e, e);
+    const double s = l2 > 0.0 ? std::clamp(glm::dot(x - p, e) / l2, 0.0, 1.0) : 0.0;
+    return glm::length(x - (p + s * e));
+  };
+  const double nearest = std::min({ offEdge(a, b), offEdge(b, c), offEdge(c, a) });
+  return nearest <= 1e-5 * size ? this->VisibilityPoint(x, scene.Centroid(source), 0.0) : x;
 }
 
 Vec3 DirectLighting::RayOrigin(const Vec3& x, const Vec3& n) const

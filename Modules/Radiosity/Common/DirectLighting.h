@@ -67,14 +67,24 @@ public:
    * Where to test visibility for a sample x on the boundary of a planar
    * element (a corner, an edge midpoint): x moved towards `inner` (a point
    * inside the element, its centroid) by at least 4 times the rays'
-   * self-intersection offset (and at least 1e-3 of the way, at most half).
+   * self-intersection offset (and at least `fraction` of the way, at most
+   * half).
    * The rays skip what lies closer than that offset, so from a point on a
    * seam (a floor's edge at a wall) the rays aimed behind the adjacent
    * surface would pass through it: the office's floor saw the sky through
    * its walls, and its hierarchical solution took 9.6% more daylight in
    * than the window lets through.
    */
-  Vec3 VisibilityPoint(const Vec3& x, const Vec3& inner) const;
+  Vec3 VisibilityPoint(const Vec3& x, const Vec3& inner, double fraction = 1e-3) const;
+  /**
+   * Where to test visibility for a vertex x of input triangle `source`
+   * shared by the elements meeting there: on the triangle's boundary (a
+   * seam with another surface) VisibilityPoint towards its centroid by 4
+   * offsets; inside it x itself, so that a shadow edge through a vertex
+   * is decided the same way for every element sharing it (moved towards
+   * one side, the elements on the other side drew a saw tooth).
+   */
+  Vec3 SharedVertexVisibility(const Scene& scene, std::size_t source, const Vec3& x) const;
 
   /**
    * Vector irradiance (one vector per channel) at x on a surface of normal n:

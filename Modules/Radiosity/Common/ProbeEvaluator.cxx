@@ -27,18 +27,23 @@ double DistanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
 
 /// The punctual lights at an element's corners and centre, where the
 /// methods sample them (the points of ElementSamples).
-ElementSamples PunctualSamples(const DirectLighting& lights, const SolutionMesh& solution, std::size_t t)
+ElementSamples PunctualSamples(
+  const DirectLighting& lights, const SolutionMesh& solution, const Scene& scene, std::size_t t)
 {
   const auto& tri = solution.Triangles[t];
   const Vec3& n = solution.Normals[t];
   ElementSamples s;
   const Vec3 centre =
     (solution.Points[tri.V[0]] + solution.Points[tri.V[1]] + solution.Points[tri.V[2]]) / 3.0;
+  const bool sourced = t < solution.SourceTriangle.size() && solution.SourceTriangle[t] < scene.Triangles.size();
   for (int k = 0; k < 3; ++k)
   {
-    // Seen from inside, as the methods light their corners (VisibilityPoint).
+    // As progressive lights its shared corner samples (on a seam from inside
+    // the input triangle: DirectLighting::SharedVertexVisibility).
     const Vec3& x = solution.Points[tri.V[k]];
-    s.Corner[k] = lights.PunctualSeenFrom(x, lights.VisibilityPoint(x, centre), n);
+    s.Corner[k] = sourced
+      ? lights.PunctualSeenFrom(x, lights.SharedVertexVisibility(scene, solution.SourceTriangle[t], x), n)
+      : lights.Punctual(x, n);
   }
   s.Centre = lights.Punctual(centre, n);
   return s;
@@ -134,7 +139,7 @@ std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes, cons
       if (this->ExactPunctual && this->Lights && this->Lights->HasPunctualLights())
       {
         values[i] += this->Lights->Punctual(probe.Position, this->Solution.Normals[t]) -
-          InterpolateSamples(PunctualSamples(*this->Lights, this->Solution, t), u, v, w);
+          InterpolateSamples(PunctualSamples(*this->Lights, this->Solution, this->SourceScene, t), u, v, w);
       }
     });
   this->Gathered = gathered;

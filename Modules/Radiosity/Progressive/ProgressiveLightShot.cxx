@@ -78,10 +78,10 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
     tbb::parallel_for(std::size_t(0), needed.size(), [&](std::size_t i)
       {
         const SharedSample& sample = this->Samples[needed[i]];
-        // Rays from inside the element: from the corner itself those aimed
-        // behind an adjacent wall would pass through it.
-        sampleLight[needed[i]] =
-          lights.IrradianceSeenFrom(sample.Point, lights.VisibilityPoint(sample.Point, sample.Inner), sample.Normal);
+        // On a seam the rays start inside the input triangle: from the
+        // corner itself those aimed behind an adjacent wall would pass through it.
+        sampleLight[needed[i]] = lights.IrradianceSeenFrom(sample.Point,
+          lights.SharedVertexVisibility(this->SourceScene, sample.Source, sample.Point), sample.Normal);
       });
     delta.assign(pending.size(), ElementSamples());
     split.assign(pending.size(), 0);

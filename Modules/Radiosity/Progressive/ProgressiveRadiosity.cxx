@@ -158,7 +158,7 @@ void ProgressiveRadiosity::RegisterCorners(std::uint32_t e)
       sample.Point = corner + CornerInset * (el.Centroid - corner);
       sample.RayOrigin = corner + 1e-3 * (el.Centroid - corner) + this->Rays->Offset() * el.Normal;
       sample.Normal = el.Normal;
-      sample.Inner = el.Centroid;
+      sample.Source = el.Source;
       found = this->SampleIndex.emplace(key, static_cast<std::uint32_t>(this->Samples.size())).first;
       this->Samples.push_back(sample);
     }

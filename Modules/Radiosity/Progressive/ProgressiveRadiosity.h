@@ -112,7 +112,7 @@ private:
   struct SharedSample
   {
     Vec3 Point, RayOrigin, Normal;
-    Vec3 Inner; ///< the centroid of the element it was made for (DirectLighting::VisibilityPoint)
+    std::uint32_t Source = 0; ///< its input triangle (DirectLighting::SharedVertexVisibility)
   };
 
   const Scene& SourceScene;
