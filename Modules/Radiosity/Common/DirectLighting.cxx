@@ -305,13 +305,7 @@ Vec3 DirectLighting::SharedVertexVisibility(const Scene& scene, std::size_t sour
   // Within 1e-5 of its size of an edge: the corner samples sit 1e-6 of their element inside.
   const Vec3 a = scene.Vertex(source, 0), b = scene.Vertex(source, 1), c = scene.Vertex(source, 2);
   const double size = std::max({ glm::length(b - a), glm::length(c - b), glm::length(a - c) });
-  const auto offEdge = [&](const Vec3& p, const Vec3& q) {
-    const Vec3 e = q - p;
-    const double l2 = glm::dot(e, e);
-    const double s = l2 > 0.0 ? std::clamp(glm::dot(x - p, e) / l2, 0.0, 1.0) : 0.0;
-    return glm::length(x - (p + s * e));
-  };
-  const double nearest = std::min({ offEdge(a, b), offEdge(b, c), offEdge(c, a) });
+  const double nearest = std::min({ DistanceToSegment(x, a, b), DistanceToSegment(x, b, c), DistanceToSegment(x, c, a) });
   return nearest <= 1e-5 * size ? this->VisibilityPoint(x, scene.Centroid(source), 0.0) : x;
 }
 

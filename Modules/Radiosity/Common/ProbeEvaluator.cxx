@@ -17,14 +17,6 @@ namespace radiosity
 {
 namespace
 {
-double DistanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 ab = b - a;
-  const double length2 = glm::dot(ab, ab);
-  const double s = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  return glm::length(p - (a + s * ab));
-}
-
 /// The punctual lights at an element's corners and centre, where the
 /// methods sample them (the points of ElementSamples).
 ElementSamples PunctualSamples(

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -46,6 +47,15 @@ struct Triangle
 inline Vec3 AreaVector(const Vec3& a, const Vec3& b, const Vec3& c)
 {
   return 0.5 * glm::cross(b - a, c - a);
+}
+
+/// Distance from p to the segment from a to b.
+inline double DistanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = b - a;
+  const double length2 = glm::dot(ab, ab);
+  const double s = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + s * ab));
 }
 } // namespace radiosity
 
