@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkMapper.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkProperty.h"
 #include "vtkRadiosityPolyDataMapperNode.h"
@@ -28,6 +29,10 @@ void vtkRadiosityActorNode::Synchronize(bool prepass)
   if (!actor->GetVisibility())
   {
     this->Reason = "not visible";
+  }
+  else if (!this->AssemblyVisible)
+  {
+    this->Reason = "part of an assembly that is not visible";
   }
   else if (!actor->GetMapper())
   {
@@ -58,9 +63,50 @@ vtkRadiosityPolyDataMapperNode* vtkRadiosityActorNode::GetMapperNode()
   return vtkRadiosityPolyDataMapperNode::SafeDownCast(this->GetViewNodeFor(actor->GetMapper()));
 }
 
+void vtkRadiosityActorNode::SetAssemblyPath(vtkMatrix4x4* matrix, bool visible)
+{
+  this->InAssembly = matrix != nullptr;
+  this->AssemblyVisible = !matrix || visible;
+  if (!matrix)
+  {
+    return;
+  }
+  bool same = true;
+  for (int i = 0; i < 16; ++i)
+  {
+    same &= this->AssemblyMatrix->GetData()[i] == matrix->GetData()[i];
+  }
+  if (!same)
+  {
+    this->AssemblyMatrix->DeepCopy(matrix);
+  }
+}
+
+vtkMTimeType vtkRadiosityActorNode::GetAssemblyMTime() const
+{
+  return this->InAssembly ? this->AssemblyMatrix->GetMTime() : 0;
+}
+
+vtkMatrix4x4* vtkRadiosityActorNode::GetWorldMatrix()
+{
+  if (this->InAssembly)
+  {
+    return this->AssemblyMatrix;
+  }
+  auto* actor = vtkActor::SafeDownCast(this->GetRenderable());
+  return actor ? actor->GetMatrix() : nullptr;
+}
+
 void vtkRadiosityActorNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Label: " << this->Label << "\n";
   os << indent << "Solvable: " << (this->Solvable ? "true" : this->Reason.c_str()) << "\n";
+  os << indent << "InAssembly: " << (this->InAssembly ? "true" : "false") << "\n";
+  if (this->InAssembly)
+  {
+    os << indent << "AssemblyVisible: " << (this->AssemblyVisible ? "true" : "false") << "\n";
+    os << indent << "AssemblyMatrix:\n";
+    this->AssemblyMatrix->PrintSelf(os, indent.GetNextIndent());
+  }
 }

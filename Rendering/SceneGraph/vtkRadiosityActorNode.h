@@ -9,15 +9,25 @@
  * representation, Opacity 1 and not ForceTranslucent; the mapper node then
  * converts it. GetLabel is the name errors and objects carry: the actor's
  * index among the renderer's actors and its class.
+ *
+ * A part of a vtkAssembly (the renderer's actors include every assembly's
+ * parts, vtkAssembly::GetActors) is placed by its assembly path's matrix,
+ * the concatenation of the assembly's, every intermediate part's and its
+ * own (vtkAssemblyNode::GetMatrix, what vtkAssembly pokes into the part when
+ * it renders it): the renderer node sets it (SetAssemblyPath), and the part
+ * is solved only while its assembly is visible. GetWorldMatrix is what the
+ * mapper node transforms the points by.
  */
 #ifndef vtkRadiosityActorNode_h
 #define vtkRadiosityActorNode_h
 
 #include "RadiosityRenderingSceneGraphModule.h" // for export macro
 #include "vtkActorNode.h"
+#include "vtkNew.h" // for members
 
 #include <string> // for std::string
 
+class vtkMatrix4x4;
 class vtkRadiosityPolyDataMapperNode;
 
 class RADIOSITYRENDERINGSCENEGRAPH_EXPORT vtkRadiosityActorNode : public vtkActorNode
@@ -44,6 +54,25 @@ public:
   /// The node of the actor's mapper (null when it has none we know).
   vtkRadiosityPolyDataMapperNode* GetMapperNode();
 
+  ///@{
+  /**
+   * The part of an assembly: `matrix` is its path's concatenated matrix and
+   * `visible` whether the top assembly is visible; a null `matrix` makes the
+   * actor a top-level one again (its own matrix). The renderer node calls it
+   * before the actor's Synchronize. The stored matrix's MTime moves only
+   * when its values change (GetAssemblyMTime), so that an assembly drawn
+   * without the pass, which pokes its parts' matrices at every render,
+   * does not make the scene look changed.
+   */
+  void SetAssemblyPath(vtkMatrix4x4* matrix, bool visible);
+  bool GetInAssembly() const { return this->InAssembly; }
+  vtkMTimeType GetAssemblyMTime() const;
+  ///@}
+
+  /// The matrix from the actor's model coordinates to world coordinates:
+  /// the assembly path's for a part, else the actor's GetMatrix().
+  vtkMatrix4x4* GetWorldMatrix();
+
 protected:
   vtkRadiosityActorNode();
   ~vtkRadiosityActorNode() override;
@@ -55,6 +84,9 @@ private:
   bool Solvable = false;
   std::string Reason;
   std::string Label;
+  bool InAssembly = false;
+  bool AssemblyVisible = true;
+  vtkNew<vtkMatrix4x4> AssemblyMatrix;
 };
 
 #endif

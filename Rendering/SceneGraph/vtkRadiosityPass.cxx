@@ -1,6 +1,9 @@
 #include "vtkRadiosityPass.h"
 
 #include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
@@ -13,7 +16,9 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
+#include "vtkMatrix4x4.h"
 #include "vtkProp.h"
+#include "vtkProp3D.h"
 #include "vtkRadiosityFilter.h"
 #include "vtkRadiosityPassDisplay.h"
 #include "vtkRadiosityRendererNode.h"
@@ -311,10 +316,16 @@ void vtkRadiosityPass::Render(const vtkRenderState* s)
   this->UpdateSolution(renderer);
   const bool solved = this->HasSolution();
   std::vector<vtkProp*> props;
+  std::vector<vtkProp3D*> poked;
   props.reserve(s->GetPropArrayCount() + 1);
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
+    auto* assembly = vtkAssembly::SafeDownCast(prop);
+    if (solved && assembly && this->AddUnsolvedParts(assembly, props, poked))
+    {
+      continue;
+    }
     if (!solved || !this->SceneGraph->IsGathered(prop))
     {
       props.push_back(prop);
@@ -332,6 +343,53 @@ void vtkRadiosityPass::Render(const vtkRenderState* s)
   state.SetFrameBuffer(s->GetFrameBuffer());
   this->DelegatePass->Render(&state);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  for (vtkProp3D* part : poked)
+  {
+    part->PokeMatrix(nullptr);
+  }
+}
+
+bool vtkRadiosityPass::AddUnsolvedParts(
+  vtkAssembly* assembly, std::vector<vtkProp*>& props, std::vector<vtkProp3D*>& poked)
+{
+  // Whether any part was solved: else the assembly draws itself as usual.
+  std::vector<std::pair<vtkProp3D*, vtkMatrix4x4*>> parts;
+  bool anySolved = false;
+  assembly->InitPathTraversal();
+  while (vtkAssemblyPath* path = assembly->GetNextPath())
+  {
+    vtkAssemblyNode* leaf = path->GetLastNode();
+    auto* part = vtkProp3D::SafeDownCast(leaf->GetViewProp());
+    if (!part)
+    {
+      continue;
+    }
+    if (this->SceneGraph->IsGathered(part))
+    {
+      anySolved = true;
+    }
+    else if (part->GetVisibility())
+    {
+      parts.emplace_back(part, leaf->GetMatrix());
+    }
+  }
+  if (!anySolved)
+  {
+    return false;
+  }
+  // The others are drawn as vtkAssembly draws them: each with its path's
+  // matrix poked in for the draw (restored after it, in Render).
+  for (const auto& part : parts)
+  {
+    if (std::find(poked.begin(), poked.end(), part.first) != poked.end())
+    {
+      continue; // one actor in two paths: drawn once
+    }
+    part.first->PokeMatrix(part.second);
+    poked.push_back(part.first);
+    props.push_back(part.first);
+  }
+  return true;
 }
 
 void vtkRadiosityPass::ReleaseGraphicsResources(vtkWindow* window)

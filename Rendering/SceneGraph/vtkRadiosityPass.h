@@ -23,9 +23,13 @@
  *   and 2D actors are not solved: they are drawn by the delegate pass as VTK
  *   draws them, over the solution; a solved actor's light does not reach
  *   them and they cast no shadow in the solution.
- * - world transforms: the actor's matrix (GetMatrix) applied to the points
- *   (a part of a vtkAssembly is taken with its own matrix only: the
- *   assembly's is not applied).
+ * - world transforms: the actor's matrix (GetMatrix) applied to the points;
+ *   a part of a vtkAssembly (at any depth) by its assembly path's matrix,
+ *   the assembly's and every level's concatenated as vtkAssembly draws it,
+ *   and only while the assembly is visible. An assembly some of whose parts
+ *   were solved draws its other parts (translucent, wireframe, ...) itself
+ *   through the delegate pass, each with its path's matrix; one actor placed
+ *   in two assemblies is solved and drawn at its first path only.
  * - reflectance: Diffuse x DiffuseColor, or the mapped scalar colours
  *   (point colours averaged per triangle) when the mapper maps scalars; a
  *   composite block colour replaces DiffuseColor. With interpolation PBR the
@@ -79,7 +83,11 @@
 #include "RadiosityRenderingSceneGraphModule.h" // for export macro
 #include "vtkRenderPass.h"
 #include "vtkSmartPointer.h" // for members
+#include <vector> // for AddUnsolvedParts
 
+class vtkAssembly;
+class vtkProp;
+class vtkProp3D;
 class vtkRadiosityFilter;
 class vtkRadiosityPassDisplay;
 class vtkRadiosityRendererNode;
@@ -209,6 +217,12 @@ protected:
 private:
   /// Writes the settings into the renderer's information (vtkRadiosityRendererNode's keys).
   void PublishSettings(vtkRenderer* renderer);
+  /// An assembly with a solved part: its parts not solved are added to
+  /// `props` with their path's matrix poked (`poked`, restored after the
+  /// draw) and true returned; false when no part was solved (the assembly
+  /// is drawn as it is).
+  bool AddUnsolvedParts(vtkAssembly* assembly, std::vector<vtkProp*>& props,
+    std::vector<vtkProp3D*>& poked);
 
   vtkRadiosityPass(const vtkRadiosityPass&) = delete;
   void operator=(const vtkRadiosityPass&) = delete;

@@ -134,8 +134,13 @@ vtkMTimeType vtkRadiosityPolyDataMapperNode::GetSceneMTime()
   vtkMTimeType time = 0;
   if (vtkActor* actor = this->GetActor())
   {
-    // vtkActor's MTime covers its property, textures and user transform or matrix.
+    // vtkActor's MTime covers its property, textures and user transform or
+    // matrix; an assembly's matrix above a part is its node's.
     time = actor->GetMTime();
+  }
+  if (auto* actorNode = vtkRadiosityActorNode::SafeDownCast(this->GetParent()))
+  {
+    time = std::max(time, actorNode->GetAssemblyMTime());
   }
   if (auto* mapper = vtkMapper::SafeDownCast(this->GetRenderable()))
   {
@@ -318,8 +323,9 @@ bool vtkRadiosityPolyDataMapperNode::ConvertPolyData(vtkPolyData* input, vtkActo
     }
   }
 
-  // World coordinates.
-  vtkMatrix4x4* matrix = actor->GetMatrix();
+  // World coordinates (a part of an assembly by its path's matrix).
+  auto* actorNode = vtkRadiosityActorNode::SafeDownCast(this->GetParent());
+  vtkMatrix4x4* matrix = actorNode ? actorNode->GetWorldMatrix() : actor->GetMatrix();
   const bool mirrored = matrix->Determinant() < 0.0;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

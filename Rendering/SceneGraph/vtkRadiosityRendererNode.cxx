@@ -2,6 +2,9 @@
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkAssembly.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
@@ -12,6 +15,7 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
+#include "vtkPropCollection.h"
 #include "vtkRadiosityActorNode.h"
 #include "vtkRadiosityLightNode.h"
 #include "vtkRadiosityPolyDataMapperNode.h"
@@ -111,6 +115,25 @@ void vtkRadiosityRendererNode::Synchronize(bool prepass)
   {
     index[actor] = i++;
   }
+  // The parts of assemblies (which the renderer's actors include): the
+  // path's concatenated matrix and whether the assembly is visible. A part
+  // in several paths (one actor in two assemblies) is placed by the first.
+  std::map<vtkObject*, std::pair<vtkMatrix4x4*, bool>> parts;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator pit;
+  props->InitTraversal(pit);
+  while (vtkProp* prop = props->GetNextProp(pit))
+  {
+    if (auto* assembly = vtkAssembly::SafeDownCast(prop))
+    {
+      assembly->InitPathTraversal();
+      while (vtkAssemblyPath* path = assembly->GetNextPath())
+      {
+        vtkAssemblyNode* leaf = path->GetLastNode();
+        parts.emplace(leaf->GetViewProp(), std::make_pair(leaf->GetMatrix(), assembly->GetVisibility() != 0));
+      }
+    }
+  }
   for (vtkViewNode* child : this->GetChildren())
   {
     if (auto* node = vtkRadiosityActorNode::SafeDownCast(child))
@@ -119,6 +142,15 @@ void vtkRadiosityRendererNode::Synchronize(bool prepass)
       const auto found = index.find(actor);
       node->SetLabel("actor " + std::to_string(found == index.end() ? -1 : found->second) + " (" +
         actor->GetClassName() + ")");
+      const auto part = parts.find(actor);
+      if (part == parts.end())
+      {
+        node->SetAssemblyPath(nullptr, true);
+      }
+      else
+      {
+        node->SetAssemblyPath(part->second.first, part->second.second);
+      }
     }
   }
 }
