@@ -36,8 +36,11 @@
  *    cell's reflectance and emission, read from a texture buffer at
  *    gl_PrimitiveID as for cell scalars; and the depth.
  * 2. Splats, level by level. Every basis function of the level is drawn as a
- *    screen quad covering the projection of its support's bounding cube
- *    (the whole viewport when the cube reaches behind the eye); the quads are
+ *    screen quad bounding the exact projection of its support ball (nothing
+ *    when the ball lies behind the eye or outside the frustum, the whole
+ *    viewport when it reaches behind the eye), at the ball's farthest depth,
+ *    depth-tested against the G-buffer so that pixels whose surface lies
+ *    behind the ball are rejected before shading; the quads are
  *    issued from a texture buffer of the level-sorted points (three texels a
  *    point), with no vertex data. The fragment shader evaluates w_j at the
  *    G-buffer's point and adds (w_j alpha_j, w_j) into a float target with

@@ -19,16 +19,47 @@
 namespace
 {
 // Pass 2: one quad (two triangles, six vertices) per basis function, read
-// from the level-sorted point texels at firstPoint + gl_VertexID / 6. The quad
-// covers the projection of the support's bounding cube: the eight corners
-// projected, or the whole viewport when a corner is behind the eye.
+// from the level-sorted point texels at firstPoint + gl_VertexID / 6. Only
+// where the G-buffer's point lies in the support ball |x - x_j| < r_j can
+// w_j be nonzero, so the quad is the ball's exact screen bound and the
+// quad's depth the ball's farthest: the depth test (GEQUAL against the
+// G-buffer's depth) rejects the pixels whose surface lies behind the ball
+// before the fragment shader runs. On llvmpipe every fragment costs, and the
+// support cube's projection (the bound before) covered the office's screen
+// about 90 times over for nothing.
+//
+// The bound: for a linear-fractional NDC coordinate t = (m.p) / (m3.p) over
+// the ball |p - c| <= r (m a row of MCDCMatrix, p homogeneous), t's extremes
+// are where the plane (m - t m3).p = 0 touches the ball:
+//   (a - t b)^2 = r^2 |u - t v|^2,  a = m.c, b = m3.c, u = m.xyz, v = m3.xyz,
+// whose two roots are the range when the ball lies in front of the eye
+// (b > r |v|: all of it at w > 0). This holds for any affine model matrix
+// and for parallel projections (v = 0). A ball wholly behind the eye or
+// outside the frustum draws nothing (a degenerate quad); one reaching
+// behind the eye covers the viewport, at the depth of its point of largest
+// w (NDC depth grows with w in a perspective projection). The radius is
+// widened by 1e-4 (w_j < 3e-8 there) and the quad by a pixel, so that float
+// rounding never cuts a fragment with a weight.
 const char* const SplatVS = R"(//VTK::System::Dec
 uniform samplerBuffer splatPoints;
 uniform int firstPoint;
 uniform mat4 MCDCMatrix;
+uniform vec2 pixelSize;
 flat out vec4 splatCentre;
 flat out vec4 splatNormal;
 flat out vec3 splatCoefficient;
+// The range of (row . p) / (m3 . p) over the ball (c, r), b > r |v|.
+vec2 Range(vec4 row, vec4 m3, vec3 c, float r)
+{
+  float a = dot(row.xyz, c) + row.w;
+  float b = dot(m3.xyz, c) + m3.w;
+  float r2 = r * r;
+  float A = b * b - r2 * dot(m3.xyz, m3.xyz);
+  float B = a * b - r2 * dot(row.xyz, m3.xyz);
+  float C = a * a - r2 * dot(row.xyz, row.xyz);
+  float s = sqrt(max(B * B - A * C, 0.0));
+  return vec2(B - s, B + s) / A;
+}
 void main()
 {
   int point = firstPoint + gl_VertexID / 6;
@@ -36,34 +67,40 @@ void main()
   splatCentre = texelFetch(splatPoints, 3 * point);
   splatNormal = texelFetch(splatPoints, 3 * point + 1);
   splatCoefficient = texelFetch(splatPoints, 3 * point + 2).xyz;
-  vec2 lo = vec2(1.0e30);
-  vec2 hi = vec2(-1.0e30);
-  bool behind = false;
-  for (int i = 0; i < 8; ++i)
+  // GLSL matrices are indexed by column: row k is (M[0][k], ..., M[3][k]).
+  mat4 t = transpose(MCDCMatrix);
+  vec3 c = splatCentre.xyz;
+  float r = splatCentre.w * 1.0001;
+  float b = dot(t[3].xyz, c) + t[3].w;
+  float reach = r * length(t[3].xyz);
+  vec2 lo = vec2(-1.0);
+  vec2 hi = vec2(1.0);
+  float depth = 1.0;
+  bool culled = b + reach <= 0.0;
+  if (!culled && b > reach)
   {
-    vec3 offset = vec3((i & 1) != 0 ? 1.0 : -1.0, (i & 2) != 0 ? 1.0 : -1.0,
-      (i & 4) != 0 ? 1.0 : -1.0);
-    vec4 c = MCDCMatrix * vec4(splatCentre.xyz + splatCentre.w * offset, 1.0);
-    if (c.w <= 0.0)
-    {
-      behind = true;
-    }
-    else
-    {
-      lo = min(lo, c.xy / c.w);
-      hi = max(hi, c.xy / c.w);
-    }
+    vec2 x = Range(t[0], t[3], c, r);
+    vec2 y = Range(t[1], t[3], c, r);
+    vec2 z = Range(t[2], t[3], c, r);
+    lo = vec2(x.x, y.x) - pixelSize;
+    hi = vec2(x.y, y.y) + pixelSize;
+    depth = z.y;
+    culled = z.y < -1.0 || z.x > 1.0;
   }
-  if (behind)
+  else if (!culled && reach > 0.0)
   {
-    lo = vec2(-1.0);
-    hi = vec2(1.0);
+    vec4 q = MCDCMatrix * vec4(c + r * normalize(t[3].xyz), 1.0);
+    depth = q.z / q.w;
   }
   lo = clamp(lo, vec2(-1.0), vec2(1.0));
   hi = clamp(hi, vec2(-1.0), vec2(1.0));
+  if (culled || !(lo.x < hi.x) || !(lo.y < hi.y))
+  {
+    hi = lo; // nothing to draw
+  }
   const vec2 quad[6] = vec2[6](vec2(0.0, 0.0), vec2(1.0, 0.0), vec2(1.0, 1.0),
     vec2(0.0, 0.0), vec2(1.0, 1.0), vec2(0.0, 1.0));
-  gl_Position = vec4(mix(lo, hi, quad[corner]), 0.0, 1.0);
+  gl_Position = vec4(mix(lo, hi, quad[corner]), clamp(depth, -1.0, 1.0), 1.0);
 }
 )";
 
@@ -231,6 +268,11 @@ bool vtkShepardSplatPasses::Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* m
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   state->vtkglBlendEquation(GL_FUNC_ADD);
+  // The G-buffer's depth, tested (not written) against each splat's
+  // farthest depth: see SplatVS. Not sampled in this pass.
+  this->Framebuffer->AddDepthAttachment(this->Depth);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  state->vtkglDepthFunc(GL_GEQUAL);
   this->Position->Activate();
   this->Normal->Activate();
   points->Activate();
@@ -258,9 +300,13 @@ bool vtkShepardSplatPasses::Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* m
     splat->SetUniformi("gNormal", this->Normal->GetTextureUnit());
     splat->SetUniformi("firstPoint", static_cast<int>(first));
     splat->SetUniformMatrix("MCDCMatrix", modelToClip);
+    const float pixelSize[2] = { 2.0f / this->Width, 2.0f / this->Height };
+    splat->SetUniform2f("pixelSize", pixelSize);
+    state->vtkglEnable(GL_DEPTH_TEST);
     this->SplatArrays->Bind();
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * count));
     this->SplatArrays->Release();
+    state->vtkglDisable(GL_DEPTH_TEST);
 
     this->Framebuffer->AddColorAttachment(0, this->Irradiance);
     if (!this->Normalise)
@@ -286,6 +332,7 @@ bool vtkShepardSplatPasses::Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* m
   this->Normal->Deactivate();
   this->Position->Deactivate();
   this->Framebuffer->RemoveColorAttachments(1);
+  this->Framebuffer->RemoveDepthAttachment();
   return ok;
 }
 
