@@ -34,12 +34,19 @@ namespace
 //   (a - t b)^2 = r^2 |u - t v|^2,  a = m.c, b = m3.c, u = m.xyz, v = m3.xyz,
 // whose two roots are the range when the ball lies in front of the eye
 // (b > r |v|: all of it at w > 0). This holds for any affine model matrix
-// and for parallel projections (v = 0). A ball wholly behind the eye or
-// outside the frustum draws nothing (a degenerate quad); one reaching
-// behind the eye covers the viewport, at the depth of its point of largest
-// w (NDC depth grows with w in a perspective projection). The radius is
-// widened by 1e-4 (w_j < 3e-8 there) and the quad by a pixel, so that float
-// rounding never cuts a fragment with a weight.
+// and for parallel projections (v = 0). The discriminant is written as
+// r^2 (|a v - b u|^2 - r^2 |u x v|^2), which float evaluates without the
+// cancellation of B^2 - AC; a ball within 5% of touching the eye plane
+// (A near 0) covers the viewport instead. The depth: NDC z is a function
+// of w alone in a perspective projection (clip z = alpha w + beta) and
+// grows with it, and affine in p in a parallel one, so the ball's depth
+// range is that of its points of extreme w or z, evaluated directly (the
+// quadratic lost up to 17/255 of the office's corners to float
+// cancellation, cutting fragments near the back of balls). A ball wholly
+// behind the eye or outside the frustum draws nothing (a degenerate quad);
+// one reaching behind the eye covers the viewport. The radius is widened by
+// 1e-4 (w_j < 3e-8 there), the quad by a pixel and the depth by 1e-5, so
+// that float rounding never cuts a fragment with a weight.
 const char* const SplatVS = R"(//VTK::System::Dec
 uniform samplerBuffer splatPoints;
 uniform int firstPoint;
@@ -56,9 +63,16 @@ vec2 Range(vec4 row, vec4 m3, vec3 c, float r)
   float r2 = r * r;
   float A = b * b - r2 * dot(m3.xyz, m3.xyz);
   float B = a * b - r2 * dot(row.xyz, m3.xyz);
-  float C = a * a - r2 * dot(row.xyz, row.xyz);
-  float s = sqrt(max(B * B - A * C, 0.0));
+  vec3 e = a * m3.xyz - b * row.xyz;
+  vec3 f = cross(row.xyz, m3.xyz);
+  float s = r * sqrt(max(dot(e, e) - r2 * dot(f, f), 0.0));
   return vec2(B - s, B + s) / A;
+}
+// The NDC depth at c + r * dir (w > 0 there).
+float Depth(vec3 c, float r, vec3 dir)
+{
+  vec4 q = MCDCMatrix * vec4(c + r * dir, 1.0);
+  return q.z / q.w;
 }
 void main()
 {
@@ -77,20 +91,27 @@ void main()
   vec2 hi = vec2(1.0);
   float depth = 1.0;
   bool culled = b + reach <= 0.0;
-  if (!culled && b > reach)
+  if (!culled && reach > 0.0)
+  {
+    // Perspective: the points of largest and (in front of the eye) smallest w.
+    vec3 v = normalize(t[3].xyz);
+    depth = Depth(c, r, v) + 1.0e-5;
+    culled = depth < -1.0 || (b > reach && Depth(c, -r, v) - 1.0e-5 > 1.0);
+  }
+  else if (!culled)
+  {
+    // Parallel: z affine in p, extreme along the z row.
+    vec3 z = length(t[2].xyz) > 0.0 ? normalize(t[2].xyz) : vec3(0.0);
+    float z0 = Depth(c, r, z), z1 = Depth(c, -r, z);
+    depth = max(z0, z1) + 1.0e-5;
+    culled = depth < -1.0 || min(z0, z1) - 1.0e-5 > 1.0;
+  }
+  if (!culled && b > 1.05 * reach)
   {
     vec2 x = Range(t[0], t[3], c, r);
     vec2 y = Range(t[1], t[3], c, r);
-    vec2 z = Range(t[2], t[3], c, r);
     lo = vec2(x.x, y.x) - pixelSize;
     hi = vec2(x.y, y.y) + pixelSize;
-    depth = z.y;
-    culled = z.y < -1.0 || z.x > 1.0;
-  }
-  else if (!culled && reach > 0.0)
-  {
-    vec4 q = MCDCMatrix * vec4(c + r * normalize(t[3].xyz), 1.0);
-    depth = q.z / q.w;
   }
   lo = clamp(lo, vec2(-1.0), vec2(1.0));
   hi = clamp(hi, vec2(-1.0), vec2(1.0));
