@@ -42,6 +42,45 @@ RGB LightMean(const DirectLighting& lights, const ElementMesh& mesh, std::uint32
 }
 }
 
+void ProgressiveRadiosity::LightCornerSamples(const std::vector<std::uint32_t>& elements)
+{
+  this->SampleLight.resize(this->Samples.size(), RGB(0.0));
+  this->SampleLit.resize(this->Samples.size(), 0);
+  std::vector<std::uint32_t> needed;
+  for (std::uint32_t e : elements)
+  {
+    for (std::uint32_t id : this->CornerSamples[e])
+    {
+      if (!this->SampleLit[id])
+      {
+        this->SampleLit[id] = 1; // listed once
+        needed.push_back(id);
+      }
+    }
+  }
+  const DirectLighting& lights = *this->Lights;
+  tbb::parallel_for(std::size_t(0), needed.size(), [&](std::size_t i)
+    {
+      const SharedSample& sample = this->Samples[needed[i]];
+      // On a seam the rays start inside the input triangle: from the
+      // corner itself those aimed behind an adjacent wall would pass through it.
+      this->SampleLight[needed[i]] = lights.IrradianceSeenFrom(sample.Point,
+        lights.SharedVertexVisibility(this->SourceScene, sample.Source, sample.Point), sample.Normal);
+    });
+}
+
+ElementSamples ProgressiveRadiosity::LightSamples(std::uint32_t e) const
+{
+  ElementSamples d;
+  for (int k = 0; k < 3; ++k)
+  {
+    d.Corner[k] = this->SampleLight[this->CornerSamples[e][k]];
+  }
+  const Element& r = (*this->Elements)[e];
+  d.Centre = this->Lights->Irradiance(r.Centroid, r.Normal);
+  return d;
+}
+
 double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
 {
   if (this->SourceScene.Lighting.Empty())
@@ -49,11 +88,10 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
     return 0.0;
   }
   ElementMesh& mesh = *this->Elements;
-  const DirectLighting lights(this->SourceScene, this->Settings.SkySamples);
+  this->Lights = std::make_unique<DirectLighting>(this->SourceScene, this->Settings.SkySamples);
+  const DirectLighting& lights = *this->Lights;
   const double threshold = this->Settings.SubdivisionThreshold;
   std::vector<std::uint32_t> pending = mesh.Leaves();
-  std::vector<RGB> sampleLight;
-  std::vector<std::uint32_t> needed;
   std::vector<ElementSamples> delta;
   std::vector<unsigned char> split;
   std::vector<RGB> power;
@@ -61,28 +99,7 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
   while (!pending.empty())
   {
     // The corner samples are shared by the leaves meeting at a vertex: each is lit once.
-    ++this->Stamp;
-    needed.clear();
-    for (std::uint32_t e : pending)
-    {
-      for (std::uint32_t id : this->CornerSamples[e])
-      {
-        if (this->SampleStamp[id] != this->Stamp)
-        {
-          this->SampleStamp[id] = this->Stamp;
-          needed.push_back(id);
-        }
-      }
-    }
-    sampleLight.resize(this->Samples.size());
-    tbb::parallel_for(std::size_t(0), needed.size(), [&](std::size_t i)
-      {
-        const SharedSample& sample = this->Samples[needed[i]];
-        // On a seam the rays start inside the input triangle: from the
-        // corner itself those aimed behind an adjacent wall would pass through it.
-        sampleLight[needed[i]] = lights.IrradianceSeenFrom(sample.Point,
-          lights.SharedVertexVisibility(this->SourceScene, sample.Source, sample.Point), sample.Normal);
-      });
+    this->LightCornerSamples(pending);
     delta.assign(pending.size(), ElementSamples());
     split.assign(pending.size(), 0);
     power.assign(pending.size(), RGB(0.0));
@@ -90,11 +107,7 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
       {
         const std::uint32_t e = pending[i];
         const Element& r = mesh[e];
-        for (int k = 0; k < 3; ++k)
-        {
-          delta[i].Corner[k] = sampleLight[this->CornerSamples[e][k]];
-        }
-        delta[i].Centre = lights.Irradiance(r.Centroid, r.Normal);
+        delta[i] = this->LightSamples(e);
         // The same gradient criterion as an element's shot (Shoot): a hard
         // shadow edge across the element moves its centre off the corners' mean.
         const ElementSamples& d = delta[i];
@@ -159,7 +172,6 @@ double ProgressiveRadiosity::ShootLights(SolverStatistics& stats)
     this->SampleFactor.resize(this->Samples.size());
     this->SampleStamp.resize(this->Samples.size(), 0);
   }
-  stats.RaysCast += lights.RaysCast();
-  return received;
+  return received; // the lights' rays are counted at the end of Solve
 }
 } // namespace radiosity

@@ -1,5 +1,6 @@
 #include "Radiosity/Progressive/ProgressiveRadiosity.h"
 
+#include "Radiosity/Common/DirectLighting.h"
 #include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Common/Stopwatch.h"
 #include "Radiosity/Common/ThreadLimit.h"
@@ -409,6 +410,19 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
       stats.DiscFormFactors += c.Disc;
     }
 
+    if (this->Lights)
+    {
+      // The new children's corners, for the lights' part of their history.
+      std::vector<std::uint32_t> children;
+      for (std::size_t i = 0; i < pending.size(); ++i)
+      {
+        if (fresh[i])
+        {
+          children.push_back(pending[i]);
+        }
+      }
+      this->LightCornerSamples(children);
+    }
     results.assign(pending.size(), ShotResult());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 16),
       [&](const tbb::blocked_range<std::size_t>& range)
@@ -426,9 +440,12 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
             // A new child: its history is gathered exactly rather than
             // interpolated from its parent. Every earlier shot of a node was a
             // uniform radiosity over that node, so what the child received so
-            // far is sum_n (total shot by n) * F(sample -> n) * visibility.
+            // far is sum_n (total shot by n) * F(sample -> n) * visibility,
+            // plus the lights' and the sky's shot, exact at its samples (it
+            // was missing: the children of a split near a small box on a sunlit
+            // wall lost their sunlight, dark triangles in TestRadiosityPassAssembly's scene).
             ShotResult ignored;
-            out.History = ElementSamples();
+            out.History = this->Lights ? this->LightSamples(e) : ElementSamples();
             for (std::uint32_t n : this->ActiveShooters)
             {
               if (mesh[e].ShooterNode == n || !this->Transfer(e, n, scratch, f, ignored, false))
@@ -702,7 +719,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       }
     }
     stats.Elements = mesh.NumberOfLeaves();
-    stats.RaysCast += this->Rays->RaysCast();
+    stats.RaysCast += this->Rays->RaysCast() + (this->Lights ? this->Lights->RaysCast() : 0);
     stats.AbsorbedPowerW = this->Absorbed;
     stats.EscapedPowerW = this->Escaped;
     stats.SolveSeconds = start.Seconds();

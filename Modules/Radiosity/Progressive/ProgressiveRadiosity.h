@@ -24,6 +24,7 @@
 
 namespace radiosity
 {
+class DirectLighting;
 class Visibility;
 
 struct ProgressiveOptions
@@ -81,6 +82,16 @@ private:
   /// receivers splitting along shadow edges by the gradient criterion.
   /// Returns the power received by the surfaces.
   double ShootLights(SolverStatistics& stats);
+  /// The lights' and the sky's exact irradiance at the shared corner
+  /// samples of `elements` that have none yet (one ray batch; each sample
+  /// is lit once for the whole solve).
+  void LightCornerSamples(const std::vector<std::uint32_t>& elements);
+  /// The lights' and the sky's irradiance at element e's samples: the
+  /// corners' from LightCornerSamples, the centre's evaluated here. What
+  /// ShootLights gave a leaf, and what a child made by a later shot's split
+  /// adds to the history it gathers from the element shooters (the lights
+  /// are not among them).
+  ElementSamples LightSamples(std::uint32_t e) const;
   /// Subdivides receiver e (within the memory budget), registers its
   /// children's corner samples and appends them to `children`.
   void SplitReceiver(std::uint32_t e, SolverStatistics& stats, std::vector<std::uint32_t>& children);
@@ -127,6 +138,9 @@ private:
   std::vector<RGB> ShotTotal;             ///< radiosity shot so far per shooter
   std::vector<double> EscapeFraction;     ///< per shooter, negative until first shot
   std::vector<SharedSample> Samples;
+  std::unique_ptr<DirectLighting> Lights; ///< null when the scene has no lights or sky
+  std::vector<RGB> SampleLight;           ///< per shared sample, once lit (SampleLit)
+  std::vector<unsigned char> SampleLit;
   std::unordered_map<std::uint64_t, std::uint32_t> SampleIndex; ///< (vertex, input triangle)
   std::vector<std::array<std::uint32_t, 3>> CornerSamples;     ///< per element
   std::vector<double> SampleFactor;     ///< this shot's value per sample
