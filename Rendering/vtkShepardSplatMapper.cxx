@@ -30,6 +30,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkShepardSplatPasses.h"
+#include "vtkShepardSplatSurfaceTexels.h"
 #include "vtk_glew.h"
 
 #include <cmath>
@@ -39,7 +40,10 @@ vtkStandardNewMacro(vtkShepardSplatMapper);
 
 namespace
 {
-constexpr int FloatsPerCell = 12;
+// (Reflectance, group), (Emission, 0), (normal, 0), then the node grid's
+// frame of vtkShepardSplatSurfaceTexels (SURFACE_TEXELS).
+constexpr int FloatsPerCell = 24;
+constexpr int FrameOffset = 12;
 constexpr int FloatsPerPoint = 12;
 constexpr int MaximumLevels = 64;
 
@@ -78,6 +82,7 @@ vtkDataArray* FieldArray(vtkPolyData* field, const char* name, int components, s
 //------------------------------------------------------------------------------
 vtkShepardSplatMapper::vtkShepardSplatMapper()
   : vtkRadiosityCellTexelMapper("splatCellTexels", FloatsPerCell, "the surface's materials")
+  , NodeBuffer(new vtkRadiosityTexelBuffer)
   , PointBuffer(new vtkRadiosityTexelBuffer)
   , Passes(new vtkShepardSplatPasses)
 {
@@ -276,6 +281,7 @@ void vtkShepardSplatMapper::UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* a
   {
     this->CellTexelsSource = input;
     this->CellTexelsSourceTime = input->GetMTime();
+    this->NodesReady = false;
     this->SurfaceValid = ValidateSurface(input, &this->SurfaceError);
     if (!this->SurfaceValid)
     {
@@ -318,6 +324,23 @@ void vtkShepardSplatMapper::UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* a
   {
     return;
   }
+  if (this->Evaluation == SURFACE_TEXELS &&
+    (!this->NodesReady || this->NodesFieldTime != this->PointTexelsTime.GetMTime() ||
+      this->NodesCellTime != this->CellTexelsSourceTime || this->NodesSpacing != this->TexelSpacing ||
+      this->NodesMaximum != this->MaximumTexels))
+  {
+    // Once per field and surface: E at the nodes of every polygon's grid.
+    this->TexelSpacingUsed = vtkShepardSplatSurfaceTexels::Evaluate(input, this->PointTexels,
+      this->LevelOffsets, this->TexelSpacing, static_cast<size_t>(this->MaximumTexels),
+      this->CellTexels, FloatsPerCell, FrameOffset, this->Nodes);
+    this->NodesFieldTime = this->PointTexelsTime.GetMTime();
+    this->NodesCellTime = this->CellTexelsSourceTime;
+    this->NodesSpacing = this->TexelSpacing;
+    this->NodesMaximum = this->MaximumTexels;
+    this->NodesReady = true;
+    this->NodesTime.Modified();
+    this->CellTexelsTime.Modified();
+  }
   this->DrawPiece = true;
   this->DrawnPolyData = input;
   this->Superclass::UpdateCameraShiftScale(ren, actor);
@@ -333,6 +356,15 @@ void vtkShepardSplatMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   }
   if (!this->UpdateField())
   {
+    return;
+  }
+  if (this->Evaluation == SURFACE_TEXELS)
+  {
+    // One pass over the surface into the renderer's framebuffer; the nodes
+    // are (re)evaluated in UpdateCameraShiftScale and bound in
+    // RenderPieceStart.
+    this->Superclass::RenderPiece(ren, actor);
+    vtkOpenGLCheckErrorMacro("failed after drawing the Shepard field's surface texels");
     return;
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
@@ -426,7 +458,8 @@ void vtkShepardSplatMapper::ReplaceShaderValues(
 {
   // The model-coordinate position of the fragment, for the G-buffer.
   vtkRadiosityAddVarying(shaders, "vec3", "splatPositionMC", ModelPositionDeclarations(), ModelPosition(),
-    "uniform samplerBuffer splatCellTexels;\n");
+    std::string("uniform samplerBuffer splatCellTexels;\nuniform samplerBuffer splatNodes;\n") +
+      (this->Evaluation == SURFACE_TEXELS ? RadianceUniforms() : std::string()));
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 }
 
@@ -440,6 +473,33 @@ void vtkShepardSplatMapper::ReplaceShaderLight(
     return;
   }
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
+  if (this->Evaluation == SURFACE_TEXELS)
+  {
+    vtkShaderProgram::Substitute(FSSource, "//VTK::Light::Impl",
+      // The cell's grid: node (i, j) at texel first + j * rowLength + i, at
+      // origin + i * ds * A + j * dt * B; frame texels hold (origin, first),
+      // (A / ds, rowLength), (B / dt, rows). Bilinear between four nodes.
+      "  int splatCell = " + this->CellTexelIndex() + ";\n"
+      "  vec4 cell0 = texelFetchBuffer(splatCellTexels, splatCell);\n"
+      "  vec4 cell1 = texelFetchBuffer(splatCellTexels, splatCell + 1);\n"
+      "  vec4 frame0 = texelFetchBuffer(splatCellTexels, splatCell + 3);\n"
+      "  vec4 frame1 = texelFetchBuffer(splatCellTexels, splatCell + 4);\n"
+      "  vec4 frame2 = texelFetchBuffer(splatCellTexels, splatCell + 5);\n"
+      "  vec3 d = splatPositionMCVSOutput - frame0.xyz;\n"
+      "  vec2 cells = vec2(frame1.w, frame2.w) - vec2(1.0);\n"
+      "  vec2 st = clamp(vec2(dot(d, frame1.xyz), dot(d, frame2.xyz)), vec2(0.0), cells);\n"
+      "  vec2 ij = min(floor(st), cells - vec2(1.0));\n"
+      "  vec2 f = st - ij;\n"
+      "  int row = int(frame1.w);\n"
+      "  int node = int(frame0.w) + int(ij.y) * row + int(ij.x);\n"
+      "  vec3 e = mix(mix(texelFetchBuffer(splatNodes, node).rgb,\n"
+      "                   texelFetchBuffer(splatNodes, node + 1).rgb, f.x),\n"
+      "               mix(texelFetchBuffer(splatNodes, node + row).rgb,\n"
+      "                   texelFetchBuffer(splatNodes, node + row + 1).rgb, f.x), f.y);\n"
+      "  gl_FragData[0] = vec4(" + EncodedRadiance("cell1.xyz + cell0.xyz * e") + ", 1.0);\n");
+    shaders[vtkShader::Fragment]->SetSource(FSSource);
+    return;
+  }
   vtkShaderProgram::Substitute(FSSource, "//VTK::Light::Impl",
     // Three texels per OpenGL primitive: (Reflectance, group), (Emission, 0),
     // (normal, 0).
@@ -456,8 +516,54 @@ void vtkShepardSplatMapper::ReplaceShaderLight(
 }
 
 //------------------------------------------------------------------------------
+void vtkShepardSplatMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::RenderPieceStart(ren, actor);
+  this->NodesActive = false;
+  if (this->Evaluation != SURFACE_TEXELS || !this->CellTexelsReady || !this->NodesReady ||
+    ren->GetSelector())
+  {
+    return;
+  }
+  std::string error;
+  if (!this->NodeBuffer->IsCurrent(this->NodesTime, -1) &&
+    !this->NodeBuffer->Upload(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow()),
+      this->Nodes, "the Shepard field's surface texels", error))
+  {
+    vtkErrorMacro(<< error);
+    this->CellTexelsReady = false; // nothing drawn
+    return;
+  }
+  this->NodeBuffer->Activate();
+  this->NodesActive = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShepardSplatMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->NodesActive)
+  {
+    this->NodeBuffer->Deactivate();
+    this->NodesActive = false;
+  }
+  this->Superclass::RenderPieceFinish(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+void vtkShepardSplatMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
+  if (this->NodesActive && cellBO.Program->IsUniformUsed("splatNodes"))
+  {
+    cellBO.Program->SetUniformi("splatNodes", this->NodeBuffer->GetTextureUnit());
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkShepardSplatMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
+  this->NodeBuffer->ReleaseGraphicsResources(win);
   this->PointBuffer->ReleaseGraphicsResources(win);
   this->Passes->ReleaseGraphicsResources(win);
   this->Superclass::ReleaseGraphicsResources(win);
@@ -474,6 +580,12 @@ void vtkShepardSplatMapper::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << indent << "FieldError: " << this->FieldError << "\n";
   }
+  os << indent << "Evaluation: " << (this->Evaluation == SPLATS ? "SPLATS" : "SURFACE_TEXELS")
+     << "\n";
+  os << indent << "TexelSpacing: " << this->TexelSpacing << "\n";
+  os << indent << "MaximumTexels: " << this->MaximumTexels << "\n";
+  os << indent << "TexelSpacingUsed: " << this->TexelSpacingUsed << "\n";
+  os << indent << "NumberOfTexels: " << this->GetNumberOfTexels() << "\n";
   os << indent << "SurfaceValid: " << (this->SurfaceValid ? "true" : "false") << "\n";
   if (!this->SurfaceValid && !this->SurfaceError.empty())
   {

@@ -32,6 +32,7 @@
 
 #include "PixelTestSupport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -383,6 +384,94 @@ bool CheckPixels(vtkRenderer* ren, vtkRenderWindow* window, const std::vector<Fa
   return true;
 }
 
+// The largest difference (of 255) between two images, and how many channels
+// differ by more than 1.
+int Compare(vtkUnsignedCharArray* a, vtkUnsignedCharArray* b, vtkIdType& overOne)
+{
+  int worst = 0;
+  overOne = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    const int d = std::abs(static_cast<int>(a->GetValue(i)) - static_cast<int>(b->GetValue(i)));
+    worst = std::max(worst, d);
+    overOne += d > 1;
+  }
+  return worst;
+}
+
+// SURFACE_TEXELS (the default) against the exact splats on this scene,
+// whose finest level ends halfway across the floor (E jumps there, the
+// interpolation's worst case), at the default spacing and at half of it;
+// and the node budget widening the spacing.
+bool CheckSurfaceTexels(vtkRenderWindow* window, vtkShepardSplatMapper* mapper,
+  const std::vector<FieldPoint>& field)
+{
+  vtkNew<vtkShepardSplatMapper> fresh;
+  if (fresh->GetEvaluation() != vtkShepardSplatMapper::SURFACE_TEXELS ||
+    fresh->GetTexelSpacing() != 0.25)
+  {
+    std::cerr << "SURFACE_TEXELS at spacing 0.25 is not the default\n";
+    return false;
+  }
+  double rMin = std::numeric_limits<double>::infinity();
+  for (const FieldPoint& p : field)
+  {
+    rMin = std::min(rMin, p.Radius);
+  }
+  mapper->SetEvaluationToSplats();
+  window->Render();
+  vtkSmartPointer<vtkUnsignedCharArray> exact = ReadPixels(window);
+  mapper->SetEvaluationToSurfaceTexels();
+  int worst[2] = { 0, 0 };
+  vtkIdType overOne[2] = { 0, 0 };
+  const double spacings[2] = { 0.25, 0.125 };
+  for (int k = 0; k < 2; ++k)
+  {
+    mapper->SetTexelSpacing(spacings[k]);
+    window->Render();
+    vtkSmartPointer<vtkUnsignedCharArray> texels = ReadPixels(window);
+    worst[k] = Compare(exact, texels, overOne[k]);
+    std::cout << "SURFACE_TEXELS at spacing " << spacings[k] << " ("
+              << mapper->GetTexelSpacingUsed() << ", " << mapper->GetNumberOfTexels()
+              << " texels) against SPLATS: worst " << worst[k] << "/255, " << overOne[k]
+              << " channels differ by more than 1 (of " << exact->GetNumberOfValues() << ")\n";
+    if (std::abs(mapper->GetTexelSpacingUsed() - spacings[k] * rMin) > 1e-6 * rMin)
+    {
+      std::cerr << "Spacing used " << mapper->GetTexelSpacingUsed() << ", expected "
+                << spacings[k] * rMin << "\n";
+      return false;
+    }
+  }
+  // Measured on llvmpipe: 11/255 and 2488 channels over 1 at spacing 0.25
+  // (1385 texels), 8/255 and 995 at 0.125 (5105 texels), all of them along
+  // the finest level's edge, where E jumps by that level's correction and
+  // the bilinear nodes spread the jump over a texel (the count halves with
+  // the spacing; the worst, the jump itself, barely moves). Bounds just
+  // above. (On the office, whose levels all cover every surface: 1/255 at
+  // most, 0.3% of channels.)
+  if (worst[0] > 12 || overOne[0] > 2700 || worst[1] > 9 || overOne[1] > 1100 ||
+    overOne[1] >= overOne[0])
+  {
+    std::cerr << "SURFACE_TEXELS differ from SPLATS beyond their bounds\n";
+    return false;
+  }
+  // A budget below the default grid's nodes widens the spacing to fit.
+  const vtkIdType full = mapper->GetNumberOfTexels();
+  mapper->SetMaximumTexels(full / 4);
+  window->Render();
+  std::cout << "MaximumTexels " << full / 4 << ": " << mapper->GetNumberOfTexels()
+            << " texels at spacing " << mapper->GetTexelSpacingUsed() << "\n";
+  if (mapper->GetNumberOfTexels() > full / 4 ||
+    !(mapper->GetTexelSpacingUsed() > spacings[1] * rMin))
+  {
+    std::cerr << "The texel budget was not kept\n";
+    return false;
+  }
+  mapper->SetMaximumTexels(4 << 20);
+  mapper->SetTexelSpacing(0.25);
+  return true;
+}
+
 // Renders once and expects an error containing `expected`.
 bool ExpectError(vtkRenderWindow* window, vtkShepardSplatMapper* mapper, vtkPolyData* surface,
   vtkPolyData* field, const std::string& expected)
@@ -495,6 +584,9 @@ int TestShepardSplatMapper(int argc, char* argv[])
   vtkSmartPointer<vtkPolyData> fieldData = MakeFieldPolyData(field);
 
   vtkNew<vtkShepardSplatMapper> mapper;
+  // The exact per-pixel splats; TestShepardSplatSurfaceTexels measures the
+  // default SURFACE_TEXELS against them.
+  mapper->SetEvaluationToSplats();
   mapper->SetInputData(surface);
   mapper->SetFieldData(fieldData);
   vtkNew<vtkActor> actor;
@@ -601,6 +693,7 @@ int TestShepardSplatMapper(int argc, char* argv[])
   if (!CheckShiftedCoordinates(
         window, actor, mapper.GetPointer(), surface,
         [&](vtkShepardSplatMapper* shifted) {
+          shifted->SetEvaluationToSplats();
           shifted->SetFieldData(fieldData);
           shifted->SetExposure(exposure);
         },
@@ -635,5 +728,9 @@ int TestShepardSplatMapper(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const int retVal = vtkRegressionTestImage(window);
+  if (!CheckSurfaceTexels(window, mapper, field))
+  {
+    return EXIT_FAILURE;
+  }
   return !retVal;
 }
