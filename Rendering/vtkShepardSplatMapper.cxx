@@ -339,7 +339,16 @@ void vtkShepardSplatMapper::UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* a
     this->NodesMaximum = this->MaximumTexels;
     this->NodesReady = true;
     this->NodesTime.Modified();
+    if (this->TexelSpacingUsed < 0.0)
+    {
+      vtkErrorMacro(<< "SURFACE_TEXELS: " << input->GetNumberOfCells()
+                    << " polygons need more than 2^24 texels at four each; use SPLATS.");
+    }
     this->CellTexelsTime.Modified();
+  }
+  if (this->Evaluation == SURFACE_TEXELS && this->TexelSpacingUsed < 0.0)
+  {
+    return; // refused above, once
   }
   this->DrawPiece = true;
   this->DrawnPolyData = input;

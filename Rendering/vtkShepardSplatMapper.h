@@ -154,11 +154,13 @@ public:
   /**
    * SURFACE_TEXELS: the node spacing as a fraction of the smallest support
    * radius of the field (default 0.25), and the most nodes (default 4M,
-   * 16 bytes each on the GPU); the spacing grows until the nodes fit.
+   * 16 bytes each on the GPU; at most 2^24, the float-exact indices); the
+   * spacing grows until the nodes fit, down to four a polygon (a surface
+   * of more than 2^22 polygons is refused with an error: use SPLATS).
    */
   vtkSetClampMacro(TexelSpacing, double, 1e-3, 10.0);
   vtkGetMacro(TexelSpacing, double);
-  vtkSetClampMacro(MaximumTexels, vtkIdType, 1024, VTK_ID_MAX);
+  vtkSetClampMacro(MaximumTexels, vtkIdType, 1024, 1 << 24);
   vtkGetMacro(MaximumTexels, vtkIdType);
   ///@}
 

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <limits>
 #include <map>
 
@@ -120,14 +122,59 @@ double vtkShepardSplatSurfaceTexels::Evaluate(vtkPolyData* surface, const std::v
     h *= 1.05 * std::sqrt(static_cast<double>(first.back()) / maximumNodes);
   }
 
-  // Field points by group, so that a cell looks only at its own.
-  std::map<int, std::vector<size_t>> byGroup;
-  std::vector<size_t> all(nPoints);
-  for (size_t j = 0; j < nPoints; ++j)
+  // Each grid's box: a point whose ball misses it never weighs there.
+  std::vector<double> boxes(6 * static_cast<size_t>(nCells));
+  double sceneLo[3] = { 1e300, 1e300, 1e300 }, sceneHi[3] = { -1e300, -1e300, -1e300 };
+  for (vtkIdType i = 0; i < nCells; ++i)
   {
-    all[j] = j;
-    byGroup[static_cast<int>(std::lround(points[j * FloatsPerPoint + 7]))].push_back(j);
+    const Grid& g = grids[i];
+    double* box = boxes.data() + 6 * i;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double s = g.Ms * g.Ds * g.A[c], t = g.Mt * g.Dt * g.B[c];
+      box[c] = g.O[c] + std::min(0.0, s) + std::min(0.0, t);
+      box[3 + c] = g.O[c] + std::max(0.0, s) + std::max(0.0, t);
+      sceneLo[c] = std::min(sceneLo[c], box[c]);
+      sceneHi[c] = std::max(sceneHi[c], box[3 + c]);
+    }
   }
+  // Clusters of neighbouring polygons (in Morton order of their boxes'
+  // centres) share one scan of the field, so that a million small polygons
+  // do not each scan every point.
+  std::vector<std::pair<std::uint32_t, vtkIdType>> order(static_cast<size_t>(nCells));
+  for (vtkIdType i = 0; i < nCells; ++i)
+  {
+    std::uint32_t code = 0;
+    std::uint32_t q[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      const double extent = std::max(sceneHi[c] - sceneLo[c], 1e-30);
+      const double centre = 0.5 * (boxes[6 * i + c] + boxes[6 * i + 3 + c]);
+      q[c] = static_cast<std::uint32_t>(std::min(1023.0, std::max(0.0, 1024.0 * (centre - sceneLo[c]) / extent)));
+    }
+    for (int bit = 9; bit >= 0; --bit)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        code = (code << 1) | ((q[c] >> bit) & 1u);
+      }
+    }
+    order[i] = { code, i };
+  }
+  std::sort(order.begin(), order.end());
+  constexpr vtkIdType ClusterSize = 256;
+  const vtkIdType clusters = (nCells + ClusterSize - 1) / ClusterSize;
+  const auto ballMisses = [&points](size_t j, const double* box) {
+    const float* p = points.data() + j * FloatsPerPoint;
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = p[c] < box[c] ? box[c] - p[c] : (p[c] > box[3 + c] ? p[c] - box[3 + c] : 0.0);
+      d2 += d * d;
+    }
+    return !(d2 < static_cast<double>(p[3]) * p[3]);
+  };
+
   std::vector<int> levelOf(nPoints, 0);
   for (size_t l = 0; l + 1 < levelOffsets.size(); ++l)
   {
@@ -135,12 +182,39 @@ double vtkShepardSplatSurfaceTexels::Evaluate(vtkPolyData* surface, const std::v
   }
   const int levels = levelOffsets.empty() ? 0 : static_cast<int>(levelOffsets.size()) - 1;
 
+  if (first.back() > MaximumNodes)
+  {
+    nodes.clear();
+    return -1.0; // the shader's float node indices would be inexact
+  }
   nodes.assign(4 * first.back(), 0.0f);
-  vtkSMPTools::For(0, nCells, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<size_t> candidates;
+  vtkSMPTools::For(0, clusters, [&](vtkIdType beginCluster, vtkIdType endCluster) {
+    std::vector<size_t> candidates, near;
     std::vector<double> sums(4 * std::max(levels, 1));
-    for (vtkIdType i = begin; i < end; ++i)
+    for (vtkIdType k = beginCluster * ClusterSize; k < std::min(nCells, endCluster * ClusterSize); ++k)
     {
+      if (k % ClusterSize == 0)
+      {
+        // The points whose balls reach the cluster's box.
+        double box[6] = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
+        for (vtkIdType m = k; m < std::min(nCells, k + ClusterSize); ++m)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            box[c] = std::min(box[c], boxes[6 * order[m].second + c]);
+            box[3 + c] = std::max(box[3 + c], boxes[6 * order[m].second + 3 + c]);
+          }
+        }
+        near.clear();
+        for (size_t j = 0; j < nPoints; ++j)
+        {
+          if (!ballMisses(j, box))
+          {
+            near.push_back(j);
+          }
+        }
+      }
+      const vtkIdType i = order[k].second;
       const Grid& g = grids[i];
       float* frame = cellTexels.data() + i * stride + frameOffset;
       for (int c = 0; c < 3; ++c)
@@ -156,39 +230,12 @@ double vtkShepardSplatSurfaceTexels::Evaluate(vtkPolyData* surface, const std::v
       const float* cell = cellTexels.data() + i * stride;
       const double n[3] = { cell[8], cell[9], cell[10] };
       const int group = static_cast<int>(std::lround(cell[3]));
-      const std::vector<size_t>* mine = &all;
-      if (group >= 0)
-      {
-        auto it = byGroup.find(group);
-        if (it == byGroup.end())
-        {
-          continue; // no points: E = 0 at the nodes
-        }
-        mine = &it->second;
-      }
-      // The grid's box; a point whose ball misses it never weighs here.
-      double lo[3], hi[3];
-      for (int c = 0; c < 3; ++c)
-      {
-        const double s = g.Ms * g.Ds * g.A[c], t = g.Mt * g.Dt * g.B[c];
-        lo[c] = g.O[c] + std::min(0.0, s) + std::min(0.0, t);
-        hi[c] = g.O[c] + std::max(0.0, s) + std::max(0.0, t);
-      }
       candidates.clear();
-      for (size_t j : *mine)
+      for (size_t j : near)
       {
         const float* p = points.data() + j * FloatsPerPoint;
-        if (!(n[0] * p[4] + n[1] * p[5] + n[2] * p[6] > 0.0))
-        {
-          continue;
-        }
-        double d2 = 0.0;
-        for (int c = 0; c < 3; ++c)
-        {
-          const double d = p[c] < lo[c] ? lo[c] - p[c] : (p[c] > hi[c] ? p[c] - hi[c] : 0.0);
-          d2 += d * d;
-        }
-        if (d2 < static_cast<double>(p[3]) * p[3])
+        if ((group < 0 || std::lround(p[7]) == group) && n[0] * p[4] + n[1] * p[5] + n[2] * p[6] > 0.0 &&
+          !ballMisses(j, boxes.data() + 6 * i))
         {
           candidates.push_back(j);
         }

@@ -23,6 +23,8 @@ public:
   /// Floats of a cell's frame: (origin, first node), (s axis / spacing,
   /// nodes a row), (t axis / spacing, rows).
   static constexpr int FrameFloats = 12;
+  /// Node indices travel as floats: exact up to 2^24.
+  static constexpr size_t MaximumNodes = size_t(1) << 24;
 
   /**
    * Fills, for every polygon i of `surface`, the frame floats at
@@ -33,7 +35,8 @@ public:
    * alpha, 0), level l being [levelOffsets[l], levelOffsets[l + 1]).
    * The node spacing is `spacing` times the smallest support radius, made
    * larger when the nodes would exceed `maximumNodes`. Returns the
-   * spacing used (model units), 0 for no points.
+   * spacing used (model units), 0 for no points, -1 (no nodes) when even
+   * four nodes a polygon exceed MaximumNodes.
    */
   static double Evaluate(vtkPolyData* surface, const std::vector<float>& points,
     const std::vector<size_t>& levelOffsets, double spacing, size_t maximumNodes,
