@@ -67,11 +67,6 @@ void CheckMaterials(const json& root, GltfSummary& summary, std::vector<std::str
       ++translucent;
     }
   }
-  if (summary.TexturedMaterials > 0)
-  {
-    warnings.push_back(file + ": " + std::to_string(summary.TexturedMaterials) +
-      " material(s) with a baseColorTexture: the solve takes their baseColorFactor, not the texture's colours");
-  }
   if (translucent > 0)
   {
     warnings.push_back(file + ": " + std::to_string(translucent) +

@@ -47,7 +47,7 @@ struct GltfSummary
   std::size_t Meshes = 0;
   std::size_t Materials = 0;
   std::size_t Triangles = 0; ///< in the default scene's primitives of mode TRIANGLES (4)
-  std::size_t TexturedMaterials = 0; ///< with a baseColorTexture (its colours are not read)
+  std::size_t TexturedMaterials = 0; ///< with a baseColorTexture (solved by its mean per triangle, vtkRadiosityTextureColour)
   std::vector<GltfLight> Lights;
   /// The glTF light index of each vtkLight vtkGLTFImporter (VTK 9.2) adds to
   /// the renderer, in the order it adds them (its depth-first walk of the

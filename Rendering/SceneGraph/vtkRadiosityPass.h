@@ -33,7 +33,11 @@
  * - reflectance: Diffuse x DiffuseColor, or the mapped scalar colours
  *   (point colours averaged per triangle) when the mapper maps scalars; a
  *   composite block colour replaces DiffuseColor. With interpolation PBR the
- *   base colour x (1 - Metallic). These are display colours: each component
+ *   base colour x (1 - Metallic). A colour texture with texture coordinates
+ *   (the actor's texture; for PBR the property's base colour texture)
+ *   multiplies it by the texture's mean over each triangle
+ *   (vtkRadiosityTextureColour), as the emissive texture multiplies
+ *   EmissiveFactor. These are display colours: each component
  *   is clamped to MaxReflectance (0.95, SPEC "Scenes"), with a warning
  *   counting the actors clamped.
  * - emission: a cell array `Emission` on the input (W/m^2), plus for PBR

@@ -10,13 +10,16 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRadiosityActorNode.h"
 #include "vtkRadiosityRendererNode.h"
+#include "vtkRadiosityTextureColour.h"
 #include "vtkScalarsToColors.h"
+#include "vtkTexture.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -323,6 +326,49 @@ bool vtkRadiosityPolyDataMapperNode::ConvertPolyData(vtkPolyData* input, vtkActo
     }
   }
 
+  // Colour textures (the base colour's and, for PBR, the emission's), each
+  // triangle taking the texture's mean over its texture coordinates.
+  vtkRadiosityTextureColour* textures[2] = { nullptr, nullptr };
+  vtkNew<vtkRadiosityTextureColour> baseTexture, emissiveTexture;
+  vtkDataArray* tcoords = tris->GetPointData()->GetTCoords();
+  {
+    vtkTexture* given[2] = { pbr ? property->GetTexture("albedoTex") : actor->GetTexture(),
+      pbr ? property->GetTexture("emissiveTex") : nullptr };
+    vtkRadiosityTextureColour* samplers[2] = { baseTexture, emissiveTexture };
+    const char* what[2] = { pbr ? "base colour texture" : "texture", "emissive texture" };
+    for (int k = 0; k < 2; ++k)
+    {
+      if (!given[k])
+      {
+        continue;
+      }
+      std::string why;
+      if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+      {
+        this->Warnings.push_back(name + ": a " + what[k] +
+          " but no texture coordinates: the colour factor alone is solved");
+      }
+      else if (!samplers[k]->SetTexture(given[k], why))
+      {
+        this->Warnings.push_back(name + ": " + what[k] + " not used (" + why + ")");
+      }
+      else
+      {
+        textures[k] = samplers[k];
+      }
+    }
+  }
+  const auto textureMean = [&](vtkRadiosityTextureColour* texture, const vtkIdType tri[3], double rgb[3])
+  {
+    double uv[3][2];
+    for (int v = 0; v < 3; ++v)
+    {
+      uv[v][0] = tcoords->GetComponent(tri[v], 0);
+      uv[v][1] = tcoords->GetComponent(tri[v], 1);
+    }
+    texture->TriangleMean(uv, rgb);
+  };
+
   // World coordinates (a part of an assembly by its path's matrix).
   auto* actorNode = vtkRadiosityActorNode::SafeDownCast(this->GetParent());
   vtkMatrix4x4* matrix = actorNode ? actorNode->GetWorldMatrix() : actor->GetMatrix();
@@ -398,6 +444,15 @@ bool vtkRadiosityPolyDataMapperNode::ConvertPolyData(vtkPolyData* input, vtkActo
         }
       }
     }
+    if (textures[0])
+    {
+      double texel[3];
+      textureMean(textures[0], tri, texel);
+      for (int k = 0; k < 3; ++k)
+      {
+        rho[k] *= texel[k];
+      }
+    }
     for (double& r : rho)
     {
       r *= factor;
@@ -409,6 +464,15 @@ bool vtkRadiosityPolyDataMapperNode::ConvertPolyData(vtkPolyData* input, vtkActo
     }
     reflectance->SetTuple(t, rho);
     double e[3] = { emissive[0], emissive[1], emissive[2] };
+    if (textures[1])
+    {
+      double texel[3];
+      textureMean(textures[1], tri, texel);
+      for (int k = 0; k < 3; ++k)
+      {
+        e[k] *= texel[k];
+      }
+    }
     if (inputEmission)
     {
       for (int k = 0; k < 3; ++k)

@@ -11,7 +11,16 @@
 //   facing side: its triangles' normals still point up);
 // - a composite mapper's blocks: a hidden block left out, a block colour
 //   replacing the property's;
-// - a wireframe actor and a headlight are not gathered.
+// - a wireframe actor and a headlight are not gathered;
+// - textures: a classic texture (as vtkOBJImporter sets map_Kd), two texels
+//   red and blue, clamped, bilinear, over a quad's texture coordinates
+//   [0, 1]^2: its triangles' mean red worked out by hand (red falls
+//   linearly from s = 1/4 to 3/4): 35/48 over the lower-left triangle,
+//   13/48 over the upper-right, blue the rest; measured to 2.6e-4 (bound
+//   5e-4, the n x n centroid rule); a PBR base colour texture and an
+//   emissive texture (as vtkGLTFImporter sets them) of one sRGB texel each:
+//   (128, 64, 255) -> (0.2158605, 0.0512695, 1 clamped to 0.95), and
+//   (255, 128, 0) x EmissiveFactor 1 x LightScale pi, to 1e-6.
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -34,9 +43,13 @@
 #include "vtkRadiosityPass.h"
 #include "vtkRadiosityRendererNode.h"
 #include "vtkRenderer.h"
+#include "vtkTexture.h"
+#include "vtkImageData.h"
+#include "vtkFloatArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkViewNode.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <iostream>
@@ -79,6 +92,38 @@ vtkActor* Add(vtkRenderer* renderer, vtkPolyData* data)
   renderer->AddActor(actor);
   actor->Delete();
   return actor;
+}
+
+/// A texture of `width` x 1 RGB texels.
+vtkSmartPointer<vtkTexture> Texture(int width, const unsigned char* rgb, bool srgb)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, 1, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* texels = static_cast<unsigned char*>(image->GetScalarPointer());
+  std::copy(rgb, rgb + 3 * width, texels);
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  texture->RepeatOff();
+  texture->EdgeClampOn();
+  texture->SetUseSRGBColorSpace(srgb);
+  return texture;
+}
+
+/// Quad(x0, 0) with texture coordinates (0, 0), (1, 0), (1, 1), (0, 1).
+vtkSmartPointer<vtkPolyData> TexturedQuad(double x0)
+{
+  auto quad = Quad(x0, 0);
+  vtkNew<vtkFloatArray> st;
+  st->SetName("TCoords");
+  st->SetNumberOfComponents(2);
+  st->InsertNextTuple2(0, 0);
+  st->InsertNextTuple2(1, 0);
+  st->InsertNextTuple2(1, 1);
+  st->InsertNextTuple2(0, 1);
+  quad->GetPointData()->SetTCoords(st);
+  return quad;
 }
 
 /// The gathered block named `name`, or null.
@@ -171,6 +216,20 @@ int TestRadiosityPassMaterials(int, char*[])
   vtkNew<vtkLight> headlight;
   headlight->SetLightTypeToHeadlight();
   renderer->AddLight(headlight);
+  // actor 8: a classic texture, red | blue, white property.
+  const unsigned char redBlue[6] = { 255, 0, 0, 0, 0, 255 };
+  vtkActor* textured = Add(renderer, TexturedQuad(14));
+  textured->GetProperty()->SetColor(1, 1, 1);
+  textured->SetTexture(Texture(2, redBlue, false));
+  // actor 9: PBR base colour and emissive textures, one sRGB texel each.
+  const unsigned char baseTexel[3] = { 128, 64, 255 }, emissiveTexel[3] = { 255, 128, 0 };
+  vtkActor* pbrTextured = Add(renderer, TexturedQuad(16));
+  pbrTextured->GetProperty()->SetInterpolationToPBR();
+  pbrTextured->GetProperty()->SetColor(1, 1, 1);
+  pbrTextured->GetProperty()->SetMetallic(0.0);
+  pbrTextured->GetProperty()->SetBaseColorTexture(Texture(1, baseTexel, true));
+  pbrTextured->GetProperty()->SetEmissiveFactor(1.0, 1.0, 1.0);
+  pbrTextured->GetProperty()->SetEmissiveTexture(Texture(1, emissiveTexel, true));
 
   vtkNew<vtkRadiosityPass> pass;
   pass->SetMethod(vtkRadiosityFilter::Progressive);
@@ -184,7 +243,7 @@ int TestRadiosityPassMaterials(int, char*[])
   std::cout << graph->GetSceneInput()->GetNumberOfBlocks() << " objects, "
             << graph->GetNumberOfTriangles() << " triangles, "
             << graph->GetSceneLights()->GetNumberOfItems() << " scene lights\n";
-  ok &= Check(graph->GetSceneInput()->GetNumberOfBlocks() == 7, "7 objects expected");
+  ok &= Check(graph->GetSceneInput()->GetNumberOfBlocks() == 9, "9 objects expected");
   ok &= Check(graph->GetSceneLights()->GetNumberOfItems() == 0, "the headlight was gathered");
 
   const auto reflectance = [&](const std::string& name, vtkIdType cell) -> const double*
@@ -243,6 +302,33 @@ int TestRadiosityPassMaterials(int, char*[])
   r = reflectance("actor 6 (vtkOpenGLActor) block 2", 0);
   ok &= Check(Near(r, 0.2, 0.4, 0.6), "the block colour: " + Str(r));
   ok &= Check(!Block(pass, "actor 7 (vtkOpenGLActor)"), "the wireframe actor was gathered");
+  // Textures: the triangles (0, 1, 3) and (1, 2, 3) of the quad.
+  // (copies: the array's GetTuple3 returns one buffer)
+  double t0[3], t1[3];
+  r = reflectance("actor 8 (vtkOpenGLActor)", 0);
+  std::copy(r, r + 3, t0);
+  r = reflectance("actor 8 (vtkOpenGLActor)", 1);
+  std::copy(r, r + 3, t1);
+  r0 = t0;
+  r1 = t1;
+  const double lowerLeft = 35.0 / 48.0, upperRight = 13.0 / 48.0;
+  const double textureError = std::max({ std::fabs(r0[0] - lowerLeft), std::fabs(r0[2] - upperRight),
+    std::fabs(r1[0] - upperRight), std::fabs(r1[2] - lowerLeft), std::fabs(r0[1]), std::fabs(r1[1]) });
+  std::cout << "texture means " << Str(r0) << " and " << Str(r1) << ": off by " << textureError << "\n";
+  ok &= Check(textureError < 5e-4, "texture means " + Str(r0) + " and " + Str(r1) + ", expected (" +
+      std::to_string(lowerLeft) + ", 0, " + std::to_string(upperRight) + ") and the reverse");
+  for (vtkIdType c = 0; c < 2; ++c)
+  {
+    r = reflectance("actor 9 (vtkOpenGLActor)", c);
+    ok &= Check(Near(r, 0.21586050011389926, 0.05126945837404324, 0.95),
+      "PBR base colour texture (sRGB): " + Str(r));
+    if (vtkPolyData* b = Block(pass, "actor 9 (vtkOpenGLActor)"))
+    {
+      const double* e = b->GetCellData()->GetArray("Emission")->GetTuple3(c);
+      const double pi = 3.14159265358979323846;
+      ok &= Check(Near(e, pi, 0.21586050011389926 * pi, 0.0), "emissive texture x LightScale: " + Str(e));
+    }
+  }
 
   // Lit by the emissive PBR quad alone: the floor quads below receive light.
   const radiosity::SolverStatistics& statistics = pass->GetFilter()->GetStatistics();
