@@ -195,6 +195,32 @@ foreach (k 0 1)
   expect_within("3ds_triangle probe ${k} against I h / d^3, of the peak" "${error}" 0 1e-4)
 endforeach ()
 
+# Solves ${DATA}/<name>.gltf with --image (256 pixels, from the file's
+# camera) and the probes <csv>, against the path tracer: the report's
+# reference, light count and scene.import.<key> (expected <value>) are
+# checked, the probes' max error of the peak must be below <bound>, and the
+# image must match Testing/Data/Baseline/<name>.png.
+function (expect_gltf_image_and_probes name csv lights key value bound)
+  expect_exit(0 "${PROGRAM}" solve "${DATA}/${name}.gltf" --image "${WORK}/${name}.png" --size 256
+    --probes "${csv}" --probe-output "${WORK}/${name}-values.csv" --reference pathtraced
+    --report "${WORK}/${name}.json")
+  file(READ "${WORK}/${name}.json" report)
+  string(JSON kind GET "${report}" error reference)
+  string(JSON max_error GET "${report}" error probe_output_max_relative_error)
+  string(JSON count GET "${report}" lights count)
+  string(JSON got GET "${report}" scene import ${key})
+  message(STATUS "${name}: ${kind}; max error of the peak ${max_error}")
+  if (NOT kind MATCHES "^path traced" OR NOT count EQUAL lights OR NOT got EQUAL value)
+    message(FATAL_ERROR "${name}: reference '${kind}', ${count} lights (${lights} expected), ${key} ${got} (${value} expected)")
+  endif ()
+  expect_within("${name} against the path tracer, max error of the peak" "${max_error}" 0 ${bound})
+  execute_process(COMMAND "${COMPARE}" "${WORK}/${name}.png" "${DATA}/Baseline/${name}.png" "${WORK}"
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "${name}.png differs from Testing/Data/Baseline/${name}.png (see ${WORK}):\n${out}\n${err}")
+  endif ()
+endfunction ()
+
 # --- The exported room: --image from the file's camera against the baseline,
 # the probes against the path tracer. Measured (progressive, 16384 paths per
 # probe, the reference's largest relative standard error 4.4e-3): max error
@@ -203,24 +229,8 @@ endforeach ()
 # the element size (1/16 of the diagonal) as steps; hierarchical draws them
 # sharp but meshes for 12 s.
 file(WRITE "${WORK}/room.csv" "x,y,z,nx,ny,nz\n0,0,1,0,1,0\n1.5,0,-1,0,1,0\n-0.6,0,0.6,0,1,0\n-1.5,0,-1.5,0,1,0\n0.7,0,1.0,0,1,0\n0,1.5,-2,0,0,1\n-1,0.5,-2,0,0,1\n-0.6,0.8,-0.4,0,1,0\n-0.6,0.4,0,0,0,1\n")
-expect_exit(0 "${PROGRAM}" solve "${DATA}/gltf_room.gltf" --image "${WORK}/gltf_room.png" --size 256
-  --probes "${WORK}/room.csv" --probe-output "${WORK}/room-values.csv" --reference pathtraced
-  --report "${WORK}/room.json")
-file(READ "${WORK}/room.json" report)
-string(JSON kind GET "${report}" error reference)
-string(JSON max_error GET "${report}" error probe_output_max_relative_error)
-string(JSON lights GET "${report}" lights count)
-string(JSON from_file GET "${report}" scene import lights_solved_from_file_values)
-message(STATUS "gltf_room: ${kind}; max error of the peak ${max_error}")
-if (NOT kind MATCHES "^path traced" OR NOT lights EQUAL 2 OR NOT from_file EQUAL 1)
-  message(FATAL_ERROR "gltf_room: reference '${kind}', ${lights} lights, ${from_file} from the file's values")
-endif ()
-expect_within("gltf_room against the path tracer, max error of the peak" "${max_error}" 0 0.02)
-execute_process(COMMAND "${COMPARE}" "${WORK}/gltf_room.png" "${DATA}/Baseline/gltf_room.png" "${WORK}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT rc EQUAL 0)
-  message(FATAL_ERROR "gltf_room.png differs from Testing/Data/Baseline/gltf_room.png (see ${WORK}):\n${out}\n${err}")
-endif ()
+# The spot's inner cone is solved from the file's values.
+expect_gltf_image_and_probes(gltf_room "${WORK}/room.csv" 2 lights_solved_from_file_values 1 0.02)
 
 # --- The pass tests' scene (Rendering/SceneGraph/Testing/Cxx/PassTestScene.h)
 # exported by vtkGLTFExporter (Testing/Data/make_gltf_pass_scene.py: the box's
@@ -233,21 +243,4 @@ endif ()
 # under the spot, as the pass's 0.0194 there: the same solution to 5 digits),
 # RMS 8.9e-3; bound 0.02 (the issue's 2%).
 file(WRITE "${WORK}/pass.csv" "x,y,z,nx,ny,nz\n0.2,0.2,0,0,0,1\n1.2,-1.4,0,0,0,1\n-1.5,1.5,0,0,0,1\n-0.5,0.3,0,0,0,1\n0,2,1.2,0,-1,0\n-2,0,1.2,1,0,0\n0.8,0.5,0.8,0,0,1\n1.0,0.1536,0.4,0.5,-0.866025,0\n")
-expect_exit(0 "${PROGRAM}" solve "${DATA}/gltf_pass_scene.gltf" --image "${WORK}/gltf_pass_scene.png" --size 256
-  --probes "${WORK}/pass.csv" --probe-output "${WORK}/pass-values.csv" --reference pathtraced
-  --report "${WORK}/pass.json")
-file(READ "${WORK}/pass.json" report)
-string(JSON kind GET "${report}" error reference)
-string(JSON max_error GET "${report}" error probe_output_max_relative_error)
-string(JSON lights GET "${report}" lights count)
-string(JSON actors GET "${report}" scene import surface_actors)
-message(STATUS "gltf_pass_scene: ${kind}; max error of the peak ${max_error}")
-if (NOT kind MATCHES "^path traced" OR NOT lights EQUAL 2 OR NOT actors EQUAL 5)
-  message(FATAL_ERROR "gltf_pass_scene: reference '${kind}', ${lights} lights, ${actors} surface actors")
-endif ()
-expect_within("gltf_pass_scene against the path tracer, max error of the peak" "${max_error}" 0 0.02)
-execute_process(COMMAND "${COMPARE}" "${WORK}/gltf_pass_scene.png" "${DATA}/Baseline/gltf_pass_scene.png" "${WORK}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT rc EQUAL 0)
-  message(FATAL_ERROR "gltf_pass_scene.png differs from Testing/Data/Baseline/gltf_pass_scene.png (see ${WORK}):\n${out}\n${err}")
-endif ()
+expect_gltf_image_and_probes(gltf_pass_scene "${WORK}/pass.csv" 2 surface_actors 5 0.02)

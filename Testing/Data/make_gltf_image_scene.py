@@ -35,14 +35,58 @@ def actor(source, colour, renderer):
     a.SetMapper(mapper)
     a.GetProperty().SetColor(*colour)
     renderer.AddActor(a)
+    return a
 
 
-def main():
+def setup():
+    """The output folder (the first argument, else this script's) and an
+    offscreen window with its renderer."""
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
     renderer = vtkRenderer()
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.AddRenderer(renderer)
+    return out, window, renderer
+
+
+def rotation_from_minus_z(d):
+    """The quaternion (x, y, z, w) of the shortest rotation taking (0, 0, -1) onto d."""
+    n = math.sqrt(sum(c * c for c in d))
+    d = [c / n for c in d]
+    axis = [0 * d[2] - (-1) * d[1], (-1) * d[0] - 0 * d[2], 0 * d[1] - 0 * d[0]]
+    cos = -d[2]
+    w = math.sqrt((1 + cos) / 2)
+    s = 1 / (2 * w)
+    return [axis[0] * s, axis[1] * s, axis[2] * s, w]
+
+
+def export(window, path):
+    """Writes the window's scene to `path` with vtkGLTFExporter (data inline)
+    and returns the file's JSON, for the lights to be added."""
+    exporter = vtkGLTFExporter()
+    exporter.SetRenderWindow(window)
+    exporter.SetFileName(path)
+    exporter.InlineDataOn()
+    exporter.Write()
+    with open(path) as f:
+        return json.load(f)
+
+
+def add_light_nodes(g, lights, nodes):
+    """Adds KHR_lights_punctual `lights` to the glTF JSON `g`, and a root node
+    per light (`nodes`: name, translation and rotation as glTF has them)."""
+    g["extensionsUsed"] = ["KHR_lights_punctual"]
+    g["extensions"] = {"KHR_lights_punctual": {"lights": lights}}
+    scene = g["scenes"][g.get("scene", 0)]["nodes"]
+    for index, node in enumerate(nodes):
+        node = dict(node)
+        node["extensions"] = {"KHR_lights_punctual": {"light": index}}
+        g["nodes"].append(node)
+        scene.append(len(g["nodes"]) - 1)
+
+
+def main():
+    out, window, renderer = setup()
 
     floor = vtkPlaneSource()  # right-hand normal (P1 - O) x (P2 - O) = +y
     floor.SetOrigin(-2, 0, 2)
@@ -74,38 +118,17 @@ def main():
     camera.SetViewAngle(40)
 
     path = os.path.join(out, "gltf_room.gltf")
-    exporter = vtkGLTFExporter()
-    exporter.SetRenderWindow(window)
-    exporter.SetFileName(path)
-    exporter.InlineDataOn()
-    exporter.Write()
-
-    with open(path) as f:
-        g = json.load(f)
+    g = export(window, path)
     g["asset"]["generator"] = "VTK vtkGLTFExporter, lights added by make_gltf_image_scene.py"
-    g["extensionsUsed"] = ["KHR_lights_punctual"]
-    g["extensions"] = {"KHR_lights_punctual": {"lights": [
-        {"type": "point", "name": "ceiling lamp", "intensity": 8},
-        {"type": "spot", "name": "spot on the box", "intensity": 20,
-         "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.5}}]}}
     # A spot points along its node's -z: a rotation taking -z onto the box.
     at, to = (1.5, 2.5, 1.5), (-0.6, 0.4, -0.4)
-    d = [t - a for t, a in zip(to, at)]
-    n = math.sqrt(sum(c * c for c in d))
-    d = [c / n for c in d]
-    # The quaternion of the shortest rotation from (0, 0, -1) to d.
-    axis = [0 * d[2] - (-1) * d[1], (-1) * d[0] - 0 * d[2], 0 * d[1] - 0 * d[0]]
-    cos = -d[2]
-    w = math.sqrt((1 + cos) / 2)
-    s = 1 / (2 * w)
-    rotation = [axis[0] * s, axis[1] * s, axis[2] * s, w]
-    scene = g["scenes"][g.get("scene", 0)]["nodes"]
-    g["nodes"].append({"name": "lamp", "translation": [0, 2.5, 1],
-                       "extensions": {"KHR_lights_punctual": {"light": 0}}})
-    scene.append(len(g["nodes"]) - 1)
-    g["nodes"].append({"name": "spot", "translation": list(at), "rotation": rotation,
-                       "extensions": {"KHR_lights_punctual": {"light": 1}}})
-    scene.append(len(g["nodes"]) - 1)
+    add_light_nodes(g, [
+        {"type": "point", "name": "ceiling lamp", "intensity": 8},
+        {"type": "spot", "name": "spot on the box", "intensity": 20,
+         "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.5}}],
+        [{"name": "lamp", "translation": [0, 2.5, 1]},
+         {"name": "spot", "translation": list(at),
+          "rotation": rotation_from_minus_z([t - a for t, a in zip(to, at)])}])
     with open(path, "w") as f:
         json.dump(g, f)
         f.write("\n")

@@ -27,22 +27,9 @@ import os
 import sys
 
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkFiltersCore import vtkTriangleFilter
-from vtkmodules.vtkIOExport import vtkGLTFExporter
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the render window and actors' classes)
 
-
-def actor(source, colour, renderer):
-    triangles = vtkTriangleFilter()
-    triangles.SetInputConnection(source.GetOutputPort())
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(triangles.GetOutputPort())
-    a = vtkActor()
-    a.SetMapper(mapper)
-    a.GetProperty().SetColor(*colour)
-    renderer.AddActor(a)
-    return a
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_gltf_image_scene import actor, add_light_nodes, export, rotation_from_minus_z, setup  # noqa: E402
 
 
 def plane(origin, p1, p2, resolution, colour, renderer):
@@ -54,21 +41,8 @@ def plane(origin, p1, p2, resolution, colour, renderer):
     return actor(p, colour, renderer)
 
 
-def rotation_from_minus_z(d):
-    """The quaternion (x, y, z, w) of the shortest rotation taking (0, 0, -1) onto unit d."""
-    axis = [0 * d[2] - (-1) * d[1], (-1) * d[0] - 0 * d[2], 0 * d[1] - 0 * d[0]]
-    cos = -d[2]
-    w = math.sqrt((1 + cos) / 2)
-    s = 1 / (2 * w)
-    return [axis[0] * s, axis[1] * s, axis[2] * s, w]
-
-
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
-    renderer = vtkRenderer()
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(renderer)
+    out, window, renderer = setup()
 
     plane((-2, -2, 0), (2, -2, 0), (-2, 2, 0), 4, (0.8, 0.8, 0.8), renderer)
     plane((-2, 2, 0), (2, 2, 0), (-2, 2, 2.5), 3, (0.75, 0.35, 0.3), renderer)
@@ -94,31 +68,15 @@ def main():
     camera.SetViewAngle(40.0)
 
     path = os.path.join(out, "gltf_pass_scene.gltf")
-    exporter = vtkGLTFExporter()
-    exporter.SetRenderWindow(window)
-    exporter.SetFileName(path)
-    exporter.InlineDataOn()
-    exporter.Write()
-
-    with open(path) as f:
-        g = json.load(f)
+    g = export(window, path)
     g["asset"]["generator"] = "VTK vtkGLTFExporter, lights added by make_gltf_pass_scene.py"
-    g["extensionsUsed"] = ["KHR_lights_punctual"]
-    g["extensions"] = {"KHR_lights_punctual": {"lights": [
+    add_light_nodes(g, [
         {"type": "spot", "name": "spot", "intensity": 4 * math.pi,
          "spot": {"innerConeAngle": 0.0, "outerConeAngle": math.radians(40.0)}},
         {"type": "directional", "name": "sun", "intensity": 0.6 * math.pi,
-         "color": [1.0, 0.95, 0.85]}]}}
-    sun = [-2.0, 3.0, -4.0]
-    n = math.sqrt(sum(c * c for c in sun))
-    sun = [c / n for c in sun]
-    scene = g["scenes"][g.get("scene", 0)]["nodes"]
-    g["nodes"].append({"name": "spot", "translation": [0.2, 0.2, 2.4],
-                       "extensions": {"KHR_lights_punctual": {"light": 0}}})
-    scene.append(len(g["nodes"]) - 1)
-    g["nodes"].append({"name": "sun", "rotation": rotation_from_minus_z(sun),
-                       "extensions": {"KHR_lights_punctual": {"light": 1}}})
-    scene.append(len(g["nodes"]) - 1)
+         "color": [1.0, 0.95, 0.85]}],
+        [{"name": "spot", "translation": [0.2, 0.2, 2.4]},
+         {"name": "sun", "rotation": rotation_from_minus_z([-2.0, 3.0, -4.0])}])
     with open(path, "w") as f:
         json.dump(g, f)
         f.write("\n")

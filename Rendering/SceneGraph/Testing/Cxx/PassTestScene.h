@@ -12,6 +12,8 @@
 #include "vtkPlaneSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
+#include "vtkRadiosityPass.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
@@ -115,6 +117,21 @@ inline bool Check(bool ok, const std::string& what)
   {
     std::cerr << "FAILED: " << what << "\n";
   }
+  return ok;
+}
+
+/// Renders `window`, adds `more` to `expected` and checks that the pass has
+/// solved that many times in all and holds a solution.
+inline bool RenderAndCountSolves(
+  vtkRenderWindow* window, vtkRadiosityPass* pass, int& expected, int more, const std::string& what)
+{
+  window->Render();
+  expected += more;
+  const int solves = pass->GetNumberOfSolves();
+  std::cout << what << ": " << solves << " solves (expected " << expected << ")\n";
+  bool ok = Check(solves == expected,
+    what + ": " + std::to_string(solves) + " solves, expected " + std::to_string(expected));
+  ok &= Check(pass->HasSolution(), what + ": no solution");
   return ok;
 }
 }

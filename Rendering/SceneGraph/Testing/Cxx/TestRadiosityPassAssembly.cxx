@@ -151,12 +151,7 @@ int TestRadiosityPassAssembly(int argc, char* argv[])
   int expected = 0;
   const auto step = [&](const std::string& what, int more)
   {
-    window->Render();
-    expected += more;
-    const int solves = pass->GetNumberOfSolves();
-    std::cout << what << ": " << solves << " solves (expected " << expected << ")\n";
-    ok &= PassTestScene::Check(solves == expected,
-      what + ": " + std::to_string(solves) + " solves, expected " + std::to_string(expected));
+    ok &= PassTestScene::RenderAndCountSolves(window, pass, expected, more, what);
     // D's own matrix back after the draw: its position only.
     vtkMatrix4x4* own = partD->GetMatrix();
     ok &= PassTestScene::Check(own->GetElement(0, 3) == 0.0 && own->GetElement(1, 3) == -0.3 &&

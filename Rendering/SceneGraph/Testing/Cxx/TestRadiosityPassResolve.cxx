@@ -119,15 +119,7 @@ int TestRadiosityPassResolve(int, char*[])
   bool ok = true;
   int expected = 0;
   const auto step = [&](const std::string& what, int more)
-  {
-    window->Render();
-    expected += more;
-    const int solves = pass->GetNumberOfSolves();
-    std::cout << what << ": " << solves << " solves (expected " << expected << ")\n";
-    ok &= PassTestScene::Check(solves == expected,
-      what + ": " + std::to_string(solves) + " solves, expected " + std::to_string(expected));
-    ok &= PassTestScene::Check(pass->HasSolution(), what + ": no solution");
-  };
+  { ok &= PassTestScene::RenderAndCountSolves(window, pass, expected, more, what); };
 
   step("first render", 1);
   ok &= PassTestScene::Check(events.Start == 1 && events.End == 1 && events.Progress >= 2 &&
