@@ -137,8 +137,9 @@ public:
    *   where a level's support ends and E jumps: on the office (whose
    *   levels cover every surface) at most 1/255 of the displayed image, in
    *   0.3% of its channels; 11/255 along the edge of a level that stops
-   *   halfway across a face (TestShepardSplatMapper). One evaluation of the
-   *   office, 644046 texels, takes about 2 s on two cores.
+   *   halfway across a face (TestShepardSplatMapper). The evaluation runs on
+   *   the first render after the field or surface changes: 1.9 s for the
+   *   office's 1916732 texels at spacing 0.125 on two shared cores.
    */
   enum EvaluationModes
   {
