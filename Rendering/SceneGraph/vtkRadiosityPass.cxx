@@ -75,6 +75,11 @@ vtkRadiosityRendererNode* vtkRadiosityPass::GetSceneGraph()
   return this->SceneGraph;
 }
 
+vtkRadiosityPassDisplay* vtkRadiosityPass::GetDisplay()
+{
+  return this->Display;
+}
+
 bool vtkRadiosityPass::HasSolution() const
 {
   return this->SceneGraph && this->SceneGraph->HasSolution() && this->Display->GetActor();

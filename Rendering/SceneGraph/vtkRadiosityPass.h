@@ -202,6 +202,16 @@ public:
   /// The scene graph of the last renderer gathered (null before one).
   vtkRadiosityRendererNode* GetSceneGraph();
 
+  /**
+   * The private actors that draw the solution, and through them the
+   * method's mappers: for Meshless, GetDisplay()->GetSplatMapper() chooses
+   * between the Shepard field evaluated once per solve on a grid of texels
+   * on the surface (SURFACE_TEXELS, the default: a redraw as fast as the
+   * other methods') and the exact per-pixel splats (SPLATS: seconds a
+   * redraw without a GPU). Display settings never re-solve.
+   */
+  vtkRadiosityPassDisplay* GetDisplay();
+
   /// Releases the private actors' and the delegate's graphics resources.
   void ReleaseGraphicsResources(vtkWindow* window) override;
 

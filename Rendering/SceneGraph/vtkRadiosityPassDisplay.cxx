@@ -186,10 +186,18 @@ void vtkRadiosityPassDisplay::ReleaseGraphicsResources(vtkWindow* window)
   }
 }
 
+vtkShepardSplatMapper* vtkRadiosityPassDisplay::GetSplatMapper()
+{
+  return this->SplatMapper;
+}
+
 void vtkRadiosityPassDisplay::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Path: " << this->GetPathName() << "\n";
+  os << indent << "SplatMapper Evaluation: "
+     << (this->SplatMapper->GetEvaluation() == vtkShepardSplatMapper::SPLATS ? "SPLATS" : "SURFACE_TEXELS")
+     << ", TexelSpacing " << this->SplatMapper->GetTexelSpacing() << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << this->ToneMapping << "\n";
 }

@@ -54,6 +54,10 @@ public:
   /// The actor that draws the solution, or null.
   vtkActor* GetActor();
 
+  /// The meshless path's mapper (its Evaluation, TexelSpacing and
+  /// MaximumTexels are the user's to set; the others are the pass's).
+  vtkShepardSplatMapper* GetSplatMapper();
+
   /// Which path: "interpolants", "splats", "vector irradiance", "radiosity per vertex" or "none".
   const char* GetPathName() const;
 

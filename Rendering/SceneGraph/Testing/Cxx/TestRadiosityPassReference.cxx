@@ -4,8 +4,8 @@
 // sensors on the floor, the walls, the box's top and its sunlit side, and
 // the solution's irradiance there (the method's own representation,
 // RadiositySolver::EvaluateProbes, as the command line's --probes) must be
-// within a bound of the largest reference value, for progressive and
-// hierarchical. UpdateSolution only: no window, no OpenGL.
+// within a bound of the largest reference value, for progressive,
+// hierarchical and meshless. UpdateSolution only: no window, no OpenGL.
 //
 // Measured (Release, 2 threads, 16384 paths per sensor: standard errors at
 // most 1.8e-3 of the peak 4.13 W/m^2; 224 triangles, the spot and the sun):
@@ -17,7 +17,12 @@
 //   sensor, as the command line's --probes; 9.4 s): 0.0121 of the peak at
 //   the same sensor (the back wall 0.0107); bound 0.015. Without the
 //   discontinuity mesh the sensors come from the leaves' constants and
-//   measured 0.0338 (the box's top 0.028, the floor in the sun 0.020).
+//   measured 0.0338 (the box's top 0.028, the floor in the sun 0.020);
+// - meshless (default settings, 4.2 s; the punctual lights exact at the
+//   sensors): 0.0082 of the peak at the same sensor; bound 0.012.
+// Face cluster radiosity measured 0.031 there (and 0.014 on the back
+// wall): not held to the 2% here until the face cluster issue's accuracy
+// work (its coarse-input and scale findings) lands.
 #include "PassTestScene.h"
 
 #include "vtkFloatingPointExceptions.h"
@@ -55,10 +60,11 @@ int TestRadiosityPassReference(int, char*[])
   };
   // Largest |solution - reference| over the sensors, as a fraction of the
   // largest reference value: measured, and the bound just above it.
-  const int methods[2] = { vtkRadiosityFilter::Progressive, vtkRadiosityFilter::Hierarchical };
-  const double bounds[2] = { 0.02, 0.015 };
+  const int methods[3] = { vtkRadiosityFilter::Progressive, vtkRadiosityFilter::Hierarchical,
+    vtkRadiosityFilter::Meshless };
+  const double bounds[3] = { 0.02, 0.015, 0.012 };
   bool ok = true;
-  for (int m = 0; m < 2; ++m)
+  for (int m = 0; m < 3; ++m)
   {
     vtkNew<vtkRadiosityPass> pass;
     pass->SetMethod(methods[m]);
