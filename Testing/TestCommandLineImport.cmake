@@ -195,13 +195,13 @@ foreach (k 0 1)
   expect_within("3ds_triangle probe ${k} against I h / d^3, of the peak" "${error}" 0 1e-4)
 endforeach ()
 
-# Solves ${DATA}/<name>.gltf with --image (256 pixels, from the file's
-# camera) and the probes <csv>, against the path tracer: the report's
+# Solves ${DATA}/<name>.gltf by <method> with --image (256 pixels, from the
+# file's camera) and the probes <csv>, against the path tracer: the report's
 # reference, light count and scene.import.<key> (expected <value>) are
 # checked, the probes' max error of the peak must be below <bound>, and the
 # image must match Testing/Data/Baseline/<name>.png.
-function (expect_gltf_image_and_probes name csv lights key value bound)
-  expect_exit(0 "${PROGRAM}" solve "${DATA}/${name}.gltf" --image "${WORK}/${name}.png" --size 256
+function (expect_gltf_image_and_probes name method csv lights key value bound)
+  expect_exit(0 "${PROGRAM}" solve "${DATA}/${name}.gltf" --method ${method} --image "${WORK}/${name}.png" --size 256
     --probes "${csv}" --probe-output "${WORK}/${name}-values.csv" --reference pathtraced
     --report "${WORK}/${name}.json")
   file(READ "${WORK}/${name}.json" report)
@@ -230,17 +230,21 @@ endfunction ()
 # sharp but meshes for 12 s.
 file(WRITE "${WORK}/room.csv" "x,y,z,nx,ny,nz\n0,0,1,0,1,0\n1.5,0,-1,0,1,0\n-0.6,0,0.6,0,1,0\n-1.5,0,-1.5,0,1,0\n0.7,0,1.0,0,1,0\n0,1.5,-2,0,0,1\n-1,0.5,-2,0,0,1\n-0.6,0.8,-0.4,0,1,0\n-0.6,0.4,0,0,0,1\n")
 # The spot's inner cone is solved from the file's values.
-expect_gltf_image_and_probes(gltf_room "${WORK}/room.csv" 2 lights_solved_from_file_values 1 0.02)
+expect_gltf_image_and_probes(gltf_room progressive "${WORK}/room.csv" 2 lights_solved_from_file_values 1 0.02)
 
 # --- The pass tests' scene (Rendering/SceneGraph/Testing/Cxx/PassTestScene.h)
 # exported by vtkGLTFExporter (Testing/Data/make_gltf_pass_scene.py: the box's
 # actor transform as a node matrix, the spot and the sun added to the JSON as
 # the pass maps its vtkLights): --image from the file's camera against
 # Testing/Data/Baseline/gltf_pass_scene.png, and the sensors of
-# TestRadiosityPassReference against the path tracer. Measured (progressive
-# at its defaults, 4.3 s; 16384 paths per probe, the reference's largest
-# relative standard error 5.1e-3): max error 0.0176 of the peak (the floor
-# under the spot, as the pass's 0.0194 there: the same solution to 5 digits),
-# RMS 8.9e-3; bound 0.02 (the issue's 2%).
+# TestRadiosityPassReference against the path tracer. Hierarchical
+# radiosity with discontinuity meshing, 10 s: progressive's per-vertex
+# drawing of its quadtree leaves left a one-pixel crack on this floor (a
+# T-junction between leaves of different levels; TestRadiosityPass's
+# progressive half has it too), so the baseline is the crack-free one.
+# Measured (16384 paths per probe, the reference's largest relative
+# standard error 5.1e-3): max error 0.0108 of the peak (the pass's
+# hierarchical solution of the VTK scene: 0.0121); bound 0.015. Progressive
+# measured 0.0176 here, the same solution as the pass's to 5 digits.
 file(WRITE "${WORK}/pass.csv" "x,y,z,nx,ny,nz\n0.2,0.2,0,0,0,1\n1.2,-1.4,0,0,0,1\n-1.5,1.5,0,0,0,1\n-0.5,0.3,0,0,0,1\n0,2,1.2,0,-1,0\n-2,0,1.2,1,0,0\n0.8,0.5,0.8,0,0,1\n1.0,0.1536,0.4,0.5,-0.866025,0\n")
-expect_gltf_image_and_probes(gltf_pass_scene "${WORK}/pass.csv" 2 surface_actors 5 0.02)
+expect_gltf_image_and_probes(gltf_pass_scene hierarchical "${WORK}/pass.csv" 2 surface_actors 5 0.015)
