@@ -6,12 +6,15 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
+#include "vtkIdTypeArray.h"
 #include "vtkLightCollection.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRadiositySceneConverter.h"
+#include "vtkRadiosityRankExchange.h"
 #include "vtkRadiosityRequestGuard.h"
 #include "vtkVersion.h"
 
@@ -20,12 +23,14 @@
 #include "Radiosity/Meshless/MeshlessMethod.h"
 #include "Radiosity/Progressive/ProgressiveMethod.h"
 #include "Radiosity/Common/Lights.h"
+#include "Radiosity/Common/ScenePieces.h"
 #include "Radiosity/Common/SolutionMesh.h"
 
 #include <algorithm>
 #include <chrono>
 
 vtkStandardNewMacro(vtkRadiosityFilter);
+vtkCxxSetObjectMacro(vtkRadiosityFilter, Controller, vtkMultiProcessController);
 
 namespace
 {
@@ -41,10 +46,12 @@ vtkRadiosityFilter::vtkRadiosityFilter()
 {
   // Port 0: the surface solution; port 1: the method's own product.
   this->SetNumberOfOutputPorts(2);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 vtkRadiosityFilter::~vtkRadiosityFilter()
 {
   this->SetLightsFileName(nullptr);
+  this->SetController(nullptr);
 }
 
 void vtkRadiosityFilter::AddLight(vtkLight* light)
@@ -351,6 +358,106 @@ void vtkRadiosityFilter::Warn(const std::string& warning)
   vtkWarningMacro(<< warning);
 }
 
+bool vtkRadiosityFilter::LocalScene(vtkDataObject* input, radiosity::Scene& scene)
+{
+  std::string error;
+  std::vector<std::string> conversionWarnings;
+  if (!vtkRadiositySceneConverter::ToScene(input, scene, error, conversionWarnings))
+  {
+    return this->Fail("bad input: " + error) != 0;
+  }
+  // Lights go into the scene before the solver is made (a SceneError, a bad
+  // light, fails the request as bad input: vtkRadiosityGuardedRequest).
+  scene.Lighting = this->GatherLights();
+  for (const std::string& w : conversionWarnings)
+  {
+    this->Warn(w);
+  }
+  radiosity::ValidateScene(scene); // a SceneError is bad input (vtkRadiosityGuardedRequest)
+  this->Cleanup = radiosity::DropDegenerateTriangles(scene);
+  this->WarnDropped();
+  if (scene.Triangles.empty())
+  {
+    return this->Fail("bad input: the scene has no triangle of non-zero area") != 0;
+  }
+  return true;
+}
+
+bool vtkRadiosityFilter::GatheredScene(
+  vtkDataObject* input, radiosity::Scene& scene, std::vector<char>& mine)
+{
+  vtkMultiProcessController* controller = this->Controller;
+  const int rank = controller->GetLocalProcessId();
+  // This rank's piece, checked here; then every rank learns whether any
+  // failed before anything else is exchanged.
+  radiosity::Scene piece;
+  radiosity::PieceGlobalIds ids;
+  std::vector<std::string> conversionWarnings;
+  std::string localError;
+  vtkRadiosityGuardedRequest(
+    nullptr,
+    [&]
+    {
+      std::string error;
+      if (!vtkRadiositySceneConverter::ToScene(input, piece, error, conversionWarnings, &ids))
+      {
+        throw radiosity::SceneError(error);
+      }
+      piece.Lighting = this->GatherLights();
+      if (!piece.Triangles.empty()) // an empty piece is normal
+      {
+        radiosity::ValidateScene(piece);
+      }
+      return 1;
+    },
+    [&localError](const std::string& message)
+    {
+      localError = message;
+      return 0;
+    });
+  const std::string error = vtkRadiosityRankExchange::AgreeOnError(controller, localError);
+  if (!error.empty())
+  {
+    return this->Fail(error) != 0;
+  }
+  for (const std::string& w : conversionWarnings)
+  {
+    this->Warn(w);
+  }
+  const auto pieces = vtkRadiosityRankExchange::AllGatherBytes(
+    controller, radiosity::PackScenePiece(piece, ids), this->RankBytesReceived);
+  // The same bytes on every rank: the same scene, or the same SceneError.
+  radiosity::AssembledScene assembled = radiosity::AssembleScenePieces(pieces);
+  scene = std::move(assembled.Whole);
+  scene.Lighting = piece.Lighting;
+  this->RankTriangles.assign(assembled.RankTriangles.begin(), assembled.RankTriangles.end());
+  // Dropped from the whole scene, as on one process (the threshold is
+  // relative to the scene's size).
+  std::vector<std::uint32_t> kept;
+  this->Cleanup = radiosity::DropDegenerateTriangles(scene, &kept);
+  this->WarnDropped();
+  mine.assign(scene.Triangles.size(), 0);
+  for (std::size_t t = 0; t < kept.size(); ++t)
+  {
+    mine[t] = assembled.Owner[kept[t]] == static_cast<std::uint32_t>(rank);
+  }
+  if (scene.Triangles.empty())
+  {
+    return this->Fail("bad input: the scene has no triangle of non-zero area on any of the " +
+             std::to_string(controller->GetNumberOfProcesses()) + " ranks") != 0;
+  }
+  return true;
+}
+
+void vtkRadiosityFilter::WarnDropped()
+{
+  if (this->Cleanup.DegenerateTrianglesDropped > 0)
+  {
+    this->Warn("dropped " + std::to_string(this->Cleanup.DegenerateTrianglesDropped) +
+      " degenerate (zero-area) triangles");
+  }
+}
+
 int vtkRadiosityFilter::ExecuteRequest(
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -367,29 +474,14 @@ int vtkRadiosityFilter::ExecuteRequest(
   productOutput->Initialize();
 
   radiosity::Scene scene;
-  std::string error;
-  std::vector<std::string> conversionWarnings;
-  if (!vtkRadiositySceneConverter::ToScene(input, scene, error, conversionWarnings))
+  // Distributed: this rank's triangles of the gathered scene.
+  std::vector<char> mine;
+  const bool distributed = this->Controller && this->Controller->GetNumberOfProcesses() > 1;
+  this->RankTriangles.clear();
+  this->RankBytesReceived.clear();
+  if (!(distributed ? this->GatheredScene(input, scene, mine) : this->LocalScene(input, scene)))
   {
-    return this->Fail("bad input: " + error);
-  }
-  // Lights go into the scene before the solver is made (a SceneError, a bad
-  // light, fails the request as bad input: vtkRadiosityGuardedRequest).
-  scene.Lighting = this->GatherLights();
-  for (const std::string& w : conversionWarnings)
-  {
-    this->Warn(w);
-  }
-  radiosity::ValidateScene(scene); // a SceneError is bad input (vtkRadiosityGuardedRequest)
-  this->Cleanup = radiosity::DropDegenerateTriangles(scene);
-  if (this->Cleanup.DegenerateTrianglesDropped > 0)
-  {
-    this->Warn("dropped " + std::to_string(this->Cleanup.DegenerateTrianglesDropped) +
-      " degenerate (zero-area) triangles");
-  }
-  if (scene.Triangles.empty())
-  {
-    return this->Fail("bad input: the scene has no triangle of non-zero area");
+    return 0;
   }
   if (!scene.IsLit())
   {
@@ -442,21 +534,49 @@ int vtkRadiosityFilter::ExecuteRequest(
   {
     vtkWarningMacro(<< "aborted after " << this->Statistics.Iterations << " iterations");
   }
-  output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(*this->Solution, *this->LastScene));
+  // Distributed: this rank's elements only (the solution stays whole in
+  // GetSolution(), for probes and images).
+  std::vector<std::uint32_t> pointSource;
+  const radiosity::SolutionMesh own =
+    distributed ? radiosity::SolutionOfTriangles(*this->Solution, mine, &pointSource) : radiosity::SolutionMesh();
+  output->ShallowCopy(
+    vtkRadiositySceneConverter::FromSolution(distributed ? own : *this->Solution, *this->LastScene));
   output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
-  if (output->GetNumberOfPoints() == static_cast<vtkIdType>(this->Solution->Points.size()))
+  for (radiosity::ProductArray a : this->Solver->SurfacePointArrays())
   {
-    for (const radiosity::ProductArray& a : this->Solver->SurfacePointArrays())
+    if (a.Tuples() != this->Solution->Points.size())
     {
-      if (static_cast<vtkIdType>(a.Tuples()) == output->GetNumberOfPoints())
+      continue;
+    }
+    if (distributed)
+    {
+      radiosity::ProductArray subset(a.Name, a.Components, pointSource.size(), a.Type);
+      for (std::size_t p = 0; p < pointSource.size(); ++p)
       {
-        output->GetPointData()->AddArray(vtkRadiositySceneConverter::FromProductArray(a));
+        std::copy_n(a.Tuple(pointSource[p]), a.Components, subset.Tuple(p));
       }
+      a = std::move(subset);
+    }
+    output->GetPointData()->AddArray(vtkRadiositySceneConverter::FromProductArray(a));
+  }
+  if (distributed)
+  {
+    for (const auto& values : { std::make_pair("RankTriangles", &this->RankTriangles),
+           std::make_pair("RankBytesReceived", &this->RankBytesReceived) })
+    {
+      vtkNew<vtkIdTypeArray> a;
+      a->SetName(values.first);
+      for (vtkIdType v : *values.second)
+      {
+        a->InsertNextValue(v);
+      }
+      output->GetFieldData()->AddArray(a);
     }
   }
   // An aborted solve is not a solution to mesh downstream: the product
-  // stays empty (GetSolver() still gives the partial solution).
-  if (!aborted)
+  // stays empty (GetSolver() still gives the partial solution). The product
+  // of a distributed solve is the whole scene's: on rank 0 only.
+  if (!aborted && (!distributed || this->Controller->GetLocalProcessId() == 0))
   {
     offset = 0.9;
     scale = 0.1;
@@ -542,6 +662,8 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Solver: " << (this->Solver ? this->Solver->MethodName() : "(none)") << "\n";
   os << indent << "ErrorReference: " << this->ErrorReference.size() << " probes\n";
   os << indent << "StatusCallback: " << (this->StatusCallback ? "set" : "(none)") << "\n";
+  os << indent << "Controller: " << this->Controller << " ("
+     << (this->Controller ? this->Controller->GetNumberOfProcesses() : 1) << " processes)\n";
   os << indent << "LastError: " << this->LastError << "\n";
 }
 

@@ -29,6 +29,19 @@
  * empty. A bad light fails the request with an error naming the light's
  * index and field (and the file).
  *
+ * Distributed data (ParaView's MPI ranks, any vtkMultiProcessController of
+ * several processes; the global controller by default): light does not
+ * stop at a piece's boundary, so the ranks' pieces are gathered into one
+ * scene (radiosity::AssembleScenePieces: points welded by global id or
+ * position, triangles ordered by their cells' global ids when they have
+ * them), the scene is solved on every rank, and each rank's port 0 carries
+ * the solution on its own piece (the elements of its own triangles; point
+ * values are the whole scene's). An empty piece is normal; a rank's bad
+ * input fails the request on every rank. Port 1 (the product of the whole
+ * scene) is on rank 0 only, so that ParaView's delivery does not repeat it.
+ * The field data arrays `RankTriangles` and `RankBytesReceived` (one tuple
+ * per rank) say what each rank gave and received.
+ *
  * Bad input gives an error naming the array, cell or point and an empty
  * output (GetLastError() keeps the message). Progress events during the solve;
  * AbortExecute stops it (VTK then empties the output; the solution so far
@@ -62,6 +75,7 @@ class RadiositySolver;
 
 class vtkLight;
 class vtkLightCollection;
+class vtkMultiProcessController;
 
 class RADIOSITYFILTERS_EXPORT vtkRadiosityFilter : public vtkPolyDataAlgorithm
 {
@@ -442,6 +456,21 @@ public:
   std::shared_ptr<const radiosity::HierarchicalRadiosity> GetHierarchicalSolution() const;
   ///@}
 
+  ///@{
+  /**
+   * The processes the input is distributed over (the global controller by
+   * default; null or one process: the input is the whole scene). Every rank
+   * must execute the filter together (ParaView's pipeline does).
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  /// Triangles each rank gave to the last distributed solve and bytes each
+  /// received (one entry per rank; empty after a solve on one process).
+  const std::vector<vtkIdType>& GetRankTriangles() const { return this->RankTriangles; }
+  const std::vector<vtkIdType>& GetRankBytesReceived() const { return this->RankBytesReceived; }
+
   /// Called with the solver's phase, iteration and residual besides the
   /// progress events (for terminal progress bars); returning false aborts.
   void SetStatusCallback(radiosity::ProgressCallback callback) { this->StatusCallback = callback; }
@@ -497,6 +526,15 @@ private:
   int Fail(const std::string& message);
   /// RequestData inside vtkRadiosityGuardedRequest.
   int ExecuteRequest(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+  /// The scene of the request on one process: the input, validated, with
+  /// the lights; false after a Fail.
+  bool LocalScene(vtkDataObject* input, radiosity::Scene& scene);
+  /// The scene of the request gathered from every rank's piece
+  /// (collective); `mine` flags this rank's triangles. False after a Fail
+  /// (on every rank alike).
+  bool GatheredScene(vtkDataObject* input, radiosity::Scene& scene, std::vector<char>& mine);
+  /// Warns of the degenerate triangles Cleanup counts.
+  void WarnDropped();
   /// The one branch per method: its solver, built from the scene and the
   /// properties it reads.
   std::shared_ptr<radiosity::RadiositySolver> MakeSolver(
@@ -524,6 +562,8 @@ private:
   std::vector<radiosity::RGB> ErrorReference;
   vtkSmartPointer<vtkLightCollection> Lights;
   std::unique_ptr<radiosity::LightSet> SceneLights;
+  vtkMultiProcessController* Controller = nullptr;
+  std::vector<vtkIdType> RankTriangles, RankBytesReceived;
 };
 
 #endif

@@ -56,8 +56,35 @@ bool ReadColour(vtkCellData* cd, const char* name, vtkIdType cell, RGB& value, s
 }
 
 /// One dataset (one object) appended to the scene.
+/// The global ids (VTK's GetGlobalIds) of `pd`'s points and of the cells
+/// `object`'s triangles came from, appended to `ids`; false when `pd` lacks
+/// either (then `ids` is of no use: the caller drops it).
+bool AppendGlobalIds(vtkPolyData* pd, const radiosity::Scene& object, radiosity::PieceGlobalIds& ids)
+{
+  vtkDataArray* points = pd->GetPointData()->GetGlobalIds();
+  vtkDataArray* cells = pd->GetCellData()->GetGlobalIds();
+  if (!points || !cells || points->GetNumberOfTuples() != static_cast<vtkIdType>(object.Points.size()))
+  {
+    return false;
+  }
+  for (vtkIdType p = 0; p < points->GetNumberOfTuples(); ++p)
+  {
+    ids.Points.push_back(static_cast<long long>(points->GetComponent(p, 0)));
+  }
+  for (long long source : object.SourceCells)
+  {
+    if (source < 0 || source >= cells->GetNumberOfTuples())
+    {
+      return false;
+    }
+    ids.Triangles.push_back(static_cast<long long>(cells->GetComponent(source, 0)));
+  }
+  return true;
+}
+
 bool AppendDataSet(vtkDataSet* ds, const std::string& name, radiosity::Scene& scene,
-  std::string& error, std::vector<std::string>& warnings)
+  std::string& error, std::vector<std::string>& warnings, radiosity::PieceGlobalIds* ids,
+  bool& idsComplete)
 {
   vtkSmartPointer<vtkPolyData> pd = vtkPolyData::SafeDownCast(ds);
   if (!pd)
@@ -109,14 +136,14 @@ bool AppendDataSet(vtkDataSet* ds, const std::string& name, radiosity::Scene& sc
       polys->GetCellData()->AddArray(slice);
     }
   }
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName(SourceCellArray);
-  ids->SetNumberOfTuples(nPolys);
+  vtkNew<vtkIdTypeArray> sourceIds;
+  sourceIds->SetName(SourceCellArray);
+  sourceIds->SetNumberOfTuples(nPolys);
   for (vtkIdType i = 0; i < nPolys; ++i)
   {
-    ids->SetValue(i, nVerts + nLines + i);
+    sourceIds->SetValue(i, nVerts + nLines + i);
   }
-  polys->GetCellData()->AddArray(ids);
+  polys->GetCellData()->AddArray(sourceIds);
   vtkNew<vtkTriangleFilter> triangulate;
   triangulate->SetInputData(polys);
   triangulate->PassVertsOff();
@@ -227,6 +254,10 @@ bool AppendDataSet(vtkDataSet* ds, const std::string& name, radiosity::Scene& sc
     }
     object.ObjectIds = ids;
   }
+  if (ids && idsComplete)
+  {
+    idsComplete = AppendGlobalIds(pd, object, *ids);
+  }
   radiosity::AppendScene(scene, object);
   return true;
 }
@@ -268,9 +299,23 @@ radiosity::Light vtkRadiositySceneConverter::ToLight(vtkLight* vtk, double light
 }
 
 bool vtkRadiositySceneConverter::ToScene(vtkDataObject* input, radiosity::Scene& scene,
-  std::string& error, std::vector<std::string>& warnings)
+  std::string& error, std::vector<std::string>& warnings, radiosity::PieceGlobalIds* ids)
 {
   scene = radiosity::Scene();
+  if (ids)
+  {
+    *ids = radiosity::PieceGlobalIds();
+  }
+  // Cleared by the first block without global ids: then no block has them.
+  bool idsComplete = ids != nullptr;
+  const auto finish = [&](bool ok)
+  {
+    if (ids && !idsComplete)
+    {
+      *ids = radiosity::PieceGlobalIds();
+    }
+    return ok;
+  };
   if (!input)
   {
     error = "no input";
@@ -278,13 +323,13 @@ bool vtkRadiositySceneConverter::ToScene(vtkDataObject* input, radiosity::Scene&
   }
   if (auto* ds = vtkDataSet::SafeDownCast(input))
   {
-    return AppendDataSet(ds, "object 0", scene, error, warnings);
+    return finish(AppendDataSet(ds, "object 0", scene, error, warnings, ids, idsComplete));
   }
   auto* composite = vtkDataObjectTree::SafeDownCast(input);
   if (!composite)
   {
     error = std::string("unsupported input type ") + input->GetClassName();
-    return false;
+    return finish(false);
   }
   vtkSmartPointer<vtkDataObjectTreeIterator> it;
   it.TakeReference(composite->NewTreeIterator());
@@ -304,12 +349,12 @@ bool vtkRadiositySceneConverter::ToScene(vtkDataObject* input, radiosity::Scene&
       warnings.push_back(name + ": not a dataset, ignored");
       continue;
     }
-    if (!AppendDataSet(ds, name, scene, error, warnings))
+    if (!AppendDataSet(ds, name, scene, error, warnings, ids, idsComplete))
     {
-      return false;
+      return finish(false);
     }
   }
-  return true;
+  return finish(true);
 }
 
 vtkSmartPointer<vtkDoubleArray> vtkRadiositySceneConverter::NewDoubleArray(

@@ -18,6 +18,7 @@
 
 #include "Radiosity/Common/ConvergenceHistory.h" // for radiosity::ConvergenceHistory
 #include "Radiosity/Common/Scene.h"              // for radiosity::Scene
+#include "Radiosity/Common/ScenePieces.h"        // for radiosity::PieceGlobalIds
 #include "Radiosity/Common/SolutionMesh.h"       // for radiosity::SolutionMesh
 #include "Radiosity/Common/RadiositySolver.h"    // for radiosity::SolverProduct
 
@@ -42,9 +43,14 @@ public:
    * array, cell or block and the value; `warnings` collects what was ignored
    * or defaulted. Material values themselves are validated by the core
    * (radiosity::ValidateScene).
+   *
+   * `ids`, when given, receives the global ids of the scene's points and of
+   * each triangle's input cell (vtkPointData/vtkCellData GetGlobalIds, what
+   * ParaView's distributed pipelines carry), or nothing when some block
+   * lacks them (radiosity::AssembleScenePieces uses them).
    */
   static bool ToScene(vtkDataObject* input, radiosity::Scene& scene, std::string& error,
-    std::vector<std::string>& warnings);
+    std::vector<std::string>& warnings, radiosity::PieceGlobalIds* ids = nullptr);
 
   /**
    * A vtkLight as a SPEC light (SPEC.md "Scenes from VTK's scene graph"):

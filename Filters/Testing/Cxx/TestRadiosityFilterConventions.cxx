@@ -181,7 +181,7 @@ int TestRadiosityFilterConventions(int, char*[])
                                "MaxRefinementRounds", "PointRadius", "PointLevels", "GatherRays",
                                "VariationThreshold", "SolidAngleThreshold", "IrradianceBasis",
                                "RadiosityBasis", "TransferTolerance", "MaxBisections",
-                               "MaxMemory", "DiscontinuityMeshing", "MaxDiscontinuitiesPerLeaf",
+                               "MaxMemory", "DiscontinuityMeshing", "MaxDiscontinuitiesPerLeaf", "Controller",
                                "MinDiscontinuityWeight", "ConformingBoundaries", "Solver",
                                "ErrorReference", "StatusCallback" });
   ok &= PrintsAll(clusters, { "NumberOfLevels", "ShapeWeight" });

@@ -159,9 +159,13 @@ void ValidateScene(const Scene& scene)
   ValidateLights(lights);
 }
 
-SceneCleanupReport DropDegenerateTriangles(Scene& scene)
+SceneCleanupReport DropDegenerateTriangles(Scene& scene, std::vector<std::uint32_t>* kept)
 {
   SceneCleanupReport report;
+  if (kept)
+  {
+    kept->clear();
+  }
   const double diag = scene.Diagonal();
   // Relative threshold: a triangle whose area is below double rounding of the
   // scene size carries no power and has no usable normal.
@@ -175,6 +179,10 @@ SceneCleanupReport DropDegenerateTriangles(Scene& scene)
     {
       ++report.DegenerateTrianglesDropped;
       continue;
+    }
+    if (kept)
+    {
+      kept->push_back(static_cast<std::uint32_t>(t));
     }
     scene.Triangles[out] = scene.Triangles[t];
     scene.Materials[out] = scene.Materials[t];

@@ -6,6 +6,7 @@
 #include "Radiosity/Common/Lights.h"
 #include "Radiosity/Common/Types.h"
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -69,9 +70,10 @@ void ValidateScene(const Scene& scene);
 
 /**
  * Drops zero-area triangles (they never crash a solver; SPEC: dropped with a
- * count in the log). Returns what was removed.
+ * count in the log). Returns what was removed; `kept`, when given, receives
+ * the former index of every triangle kept.
  */
-SceneCleanupReport DropDegenerateTriangles(Scene& scene);
+SceneCleanupReport DropDegenerateTriangles(Scene& scene, std::vector<std::uint32_t>* kept = nullptr);
 
 /// Appends `other` to `scene`, offsetting point indices and object ids.
 void AppendScene(Scene& scene, const Scene& other);

@@ -1,0 +1,363 @@
+#include "Radiosity/Common/ScenePieces.h"
+
+#include <array>
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+
+namespace radiosity
+{
+namespace
+{
+constexpr std::uint32_t PieceMagic = 0x52505331; // "RPS1"
+
+class Writer
+{
+public:
+  template <typename T>
+  void Put(const T& value)
+  {
+    const auto* p = reinterpret_cast<const char*>(&value);
+    this->Bytes.insert(this->Bytes.end(), p, p + sizeof(T));
+  }
+  template <typename T>
+  void PutVector(const std::vector<T>& values)
+  {
+    this->Put(static_cast<std::uint64_t>(values.size()));
+    const auto* p = reinterpret_cast<const char*>(values.data());
+    this->Bytes.insert(this->Bytes.end(), p, p + values.size() * sizeof(T));
+  }
+  void PutString(const std::string& s)
+  {
+    this->Put(static_cast<std::uint64_t>(s.size()));
+    this->Bytes.insert(this->Bytes.end(), s.begin(), s.end());
+  }
+  std::vector<char> Bytes;
+};
+
+class Reader
+{
+public:
+  Reader(const std::vector<char>& bytes, std::size_t rank)
+    : Bytes(bytes)
+    , Rank(rank)
+  {
+  }
+  template <typename T>
+  T Get()
+  {
+    this->Need(sizeof(T));
+    T value;
+    std::memcpy(&value, this->Bytes.data() + this->At, sizeof(T));
+    this->At += sizeof(T);
+    return value;
+  }
+  template <typename T>
+  std::vector<T> GetVector()
+  {
+    const auto n = this->Get<std::uint64_t>();
+    if (n > (this->Bytes.size() - this->At) / sizeof(T))
+    {
+      this->Fail();
+    }
+    std::vector<T> values(static_cast<std::size_t>(n));
+    std::memcpy(values.data(), this->Bytes.data() + this->At, values.size() * sizeof(T));
+    this->At += values.size() * sizeof(T);
+    return values;
+  }
+  std::string GetString()
+  {
+    const auto n = this->Get<std::uint64_t>();
+    this->Need(static_cast<std::size_t>(n));
+    std::string s(this->Bytes.data() + this->At, static_cast<std::size_t>(n));
+    this->At += s.size();
+    return s;
+  }
+  [[noreturn]] void Fail() const
+  {
+    throw SceneError("rank " + std::to_string(this->Rank) + ": its scene piece (" +
+      std::to_string(this->Bytes.size()) + " bytes) is truncated or malformed");
+  }
+
+private:
+  void Need(std::size_t n) const
+  {
+    if (n > this->Bytes.size() - this->At)
+    {
+      this->Fail();
+    }
+  }
+  const std::vector<char>& Bytes;
+  std::size_t Rank;
+  std::size_t At = 0;
+};
+
+using Key = std::array<std::uint64_t, 3>;
+struct KeyHash
+{
+  std::size_t operator()(const Key& k) const
+  {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::uint64_t v : k)
+    {
+      h = (h ^ v) * 1099511628211ull;
+    }
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+
+Key PositionKey(const Vec3& p)
+{
+  Key k;
+  std::memcpy(&k[0], &p.x, 8);
+  std::memcpy(&k[1], &p.y, 8);
+  std::memcpy(&k[2], &p.z, 8);
+  return k;
+}
+} // namespace
+
+std::vector<char> PackScenePiece(const Scene& piece, const PieceGlobalIds& ids)
+{
+  Writer w;
+  w.Put(PieceMagic);
+  w.PutVector(piece.Points);
+  w.PutVector(piece.Triangles);
+  w.PutVector(piece.Materials);
+  w.PutVector(piece.ObjectIds);
+  w.PutVector(piece.SourceCells);
+  w.Put(static_cast<std::uint64_t>(piece.ObjectNames.size()));
+  for (const std::string& name : piece.ObjectNames)
+  {
+    w.PutString(name);
+  }
+  const std::vector<long long> none;
+  w.PutVector(ids.Points.size() == piece.Points.size() ? ids.Points : none);
+  w.PutVector(ids.Triangles.size() == piece.Triangles.size() ? ids.Triangles : none);
+  return std::move(w.Bytes);
+}
+
+AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
+{
+  struct Piece
+  {
+    Scene Part;
+    std::vector<long long> GlobalIds, CellIds;
+  };
+  std::vector<Piece> parts(pieces.size());
+  bool allGlobalIds = true, anyPoints = false, allCellIds = true;
+  for (std::size_t r = 0; r < pieces.size(); ++r)
+  {
+    Reader in(pieces[r], r);
+    if (in.Get<std::uint32_t>() != PieceMagic)
+    {
+      in.Fail();
+    }
+    Scene& s = parts[r].Part;
+    s.Points = in.GetVector<Vec3>();
+    s.Triangles = in.GetVector<Triangle>();
+    s.Materials = in.GetVector<Material>();
+    s.ObjectIds = in.GetVector<int>();
+    s.SourceCells = in.GetVector<long long>();
+    const auto names = in.Get<std::uint64_t>();
+    for (std::uint64_t i = 0; i < names; ++i)
+    {
+      s.ObjectNames.push_back(in.GetString());
+    }
+    parts[r].GlobalIds = in.GetVector<long long>();
+    parts[r].CellIds = in.GetVector<long long>();
+    const std::size_t n = s.Triangles.size();
+    if (s.Materials.size() != n || s.ObjectIds.size() != n ||
+      (!s.SourceCells.empty() && s.SourceCells.size() != n))
+    {
+      in.Fail();
+    }
+    for (std::size_t t = 0; t < n; ++t)
+    {
+      for (std::uint32_t v : s.Triangles[t].V)
+      {
+        if (v >= s.Points.size())
+        {
+          throw SceneError("rank " + std::to_string(r) + ": triangle " + std::to_string(t) +
+            " refers to point " + std::to_string(v) + " of " + std::to_string(s.Points.size()));
+        }
+      }
+      if (s.ObjectIds[t] < 0 || static_cast<std::size_t>(s.ObjectIds[t]) >= s.ObjectNames.size())
+      {
+        throw SceneError("rank " + std::to_string(r) + ": triangle " + std::to_string(t) +
+          " has object " + std::to_string(s.ObjectIds[t]) + " of " +
+          std::to_string(s.ObjectNames.size()));
+      }
+    }
+    if (!s.Points.empty())
+    {
+      anyPoints = true;
+      allGlobalIds = allGlobalIds && parts[r].GlobalIds.size() == s.Points.size();
+    }
+    if (n > 0)
+    {
+      allCellIds = allCellIds && parts[r].CellIds.size() == n;
+    }
+  }
+
+  AssembledScene out;
+  out.ByGlobalIds = anyPoints && allGlobalIds;
+  Scene& whole = out.Whole;
+  std::unordered_map<std::string, int> objectOfName;
+  std::unordered_map<long long, std::uint32_t> pointOfGlobalId;
+  // Position -> the assembled points at that position, in order of appearance.
+  std::unordered_map<Key, std::vector<std::uint32_t>, KeyHash> pointsAt;
+  for (std::size_t r = 0; r < parts.size(); ++r)
+  {
+    const Scene& s = parts[r].Part;
+    std::vector<std::uint32_t> pointMap(s.Points.size());
+    std::unordered_map<Key, std::size_t, KeyHash> seenHere; // k-th occurrence on this rank
+    std::vector<std::pair<Key, std::uint32_t>> added;
+    for (std::size_t p = 0; p < s.Points.size(); ++p)
+    {
+      std::uint32_t id = static_cast<std::uint32_t>(whole.Points.size());
+      bool shared = false;
+      if (out.ByGlobalIds)
+      {
+        const auto found = pointOfGlobalId.emplace(parts[r].GlobalIds[p], id);
+        shared = !found.second;
+        id = found.first->second;
+      }
+      else
+      {
+        const Key key = PositionKey(s.Points[p]);
+        const std::size_t k = seenHere[key]++;
+        const auto at = pointsAt.find(key);
+        if (at != pointsAt.end() && k < at->second.size())
+        {
+          shared = true;
+          id = at->second[k];
+        }
+        else
+        {
+          added.emplace_back(key, id); // visible to the higher ranks only
+        }
+      }
+      if (shared)
+      {
+        ++out.SharedPoints;
+      }
+      else
+      {
+        whole.Points.push_back(s.Points[p]);
+      }
+      pointMap[p] = id;
+    }
+    for (const auto& a : added)
+    {
+      pointsAt[a.first].push_back(a.second);
+    }
+    std::vector<int> objectMap(s.ObjectNames.size());
+    for (std::size_t o = 0; o < s.ObjectNames.size(); ++o)
+    {
+      const auto found =
+        objectOfName.emplace(s.ObjectNames[o], static_cast<int>(whole.ObjectNames.size()));
+      if (found.second)
+      {
+        whole.ObjectNames.push_back(s.ObjectNames[o]);
+      }
+      objectMap[o] = found.first->second;
+    }
+    for (std::size_t t = 0; t < s.Triangles.size(); ++t)
+    {
+      Triangle tri;
+      for (int k = 0; k < 3; ++k)
+      {
+        tri.V[k] = pointMap[s.Triangles[t].V[k]];
+      }
+      whole.Triangles.push_back(tri);
+      whole.Materials.push_back(s.Materials[t]);
+      whole.ObjectIds.push_back(objectMap[static_cast<std::size_t>(s.ObjectIds[t])]);
+      whole.SourceCells.push_back(s.SourceCells.empty() ? static_cast<long long>(t) : s.SourceCells[t]);
+      out.Owner.push_back(static_cast<std::uint32_t>(r));
+      out.LocalIndex.push_back(static_cast<std::uint32_t>(t));
+    }
+    out.RankTriangles.push_back(s.Triangles.size());
+  }
+  out.OrderedByGlobalCellIds = allCellIds && !whole.Triangles.empty();
+  if (out.OrderedByGlobalCellIds)
+  {
+    std::vector<std::uint32_t> order(whole.Triangles.size());
+    std::iota(order.begin(), order.end(), 0u);
+    const auto cellId = [&](std::uint32_t t) { return parts[out.Owner[t]].CellIds[out.LocalIndex[t]]; };
+    std::stable_sort(order.begin(), order.end(),
+      [&](std::uint32_t a, std::uint32_t b) { return cellId(a) < cellId(b); });
+    Scene sorted;
+    sorted.Points = std::move(whole.Points);
+    sorted.ObjectNames = std::move(whole.ObjectNames);
+    std::vector<std::uint32_t> owner, local;
+    for (std::uint32_t t : order)
+    {
+      sorted.Triangles.push_back(whole.Triangles[t]);
+      sorted.Materials.push_back(whole.Materials[t]);
+      sorted.ObjectIds.push_back(whole.ObjectIds[t]);
+      sorted.SourceCells.push_back(whole.SourceCells[t]);
+      owner.push_back(out.Owner[t]);
+      local.push_back(out.LocalIndex[t]);
+    }
+    whole = std::move(sorted);
+    out.Owner = std::move(owner);
+    out.LocalIndex = std::move(local);
+  }
+  return out;
+}
+
+SolutionMesh SolutionOfTriangles(const SolutionMesh& whole, const std::vector<char>& keep,
+  std::vector<std::uint32_t>* pointSource)
+{
+  SolutionMesh out;
+  const std::uint32_t unused = ~std::uint32_t(0);
+  std::vector<std::uint32_t> remap(whole.Points.size(), unused);
+  if (pointSource)
+  {
+    pointSource->clear();
+  }
+  for (std::size_t e = 0; e < whole.Triangles.size(); ++e)
+  {
+    const std::size_t source = whole.SourceTriangle[e];
+    if (source >= keep.size() || !keep[source])
+    {
+      continue;
+    }
+    Triangle tri;
+    for (int k = 0; k < 3; ++k)
+    {
+      std::uint32_t& id = remap[whole.Triangles[e].V[k]];
+      if (id == unused)
+      {
+        id = static_cast<std::uint32_t>(out.Points.size());
+        const std::uint32_t p = whole.Triangles[e].V[k];
+        out.Points.push_back(whole.Points[p]);
+        out.PointIrradiance.push_back(whole.PointIrradiance[p]);
+        out.PointRadiosity.push_back(whole.PointRadiosity[p]);
+        if (pointSource)
+        {
+          pointSource->push_back(p);
+        }
+      }
+      tri.V[k] = id;
+    }
+    out.Triangles.push_back(tri);
+    out.CellIrradiance.push_back(whole.CellIrradiance[e]);
+    out.CellRadiosity.push_back(whole.CellRadiosity[e]);
+    out.ElementId.push_back(whole.ElementId[e]);
+    out.Level.push_back(whole.Level[e]);
+    out.SourceTriangle.push_back(whole.SourceTriangle[e]);
+    if (e < whole.Samples.size())
+    {
+      out.Samples.push_back(whole.Samples[e]);
+    }
+    if (e < whole.Normals.size())
+    {
+      out.Normals.push_back(whole.Normals[e]);
+    }
+  }
+  return out;
+}
+} // namespace radiosity
