@@ -1,5 +1,6 @@
 #include "vtkRadiosityRankExchange.h"
 
+#include "vtkCommunicator.h"
 #include "vtkMultiProcessController.h"
 
 #include <limits>
@@ -35,6 +36,14 @@ std::string AgreeOnError(vtkMultiProcessController* controller, const std::strin
     controller->Broadcast(&message[0], length, root);
   }
   return message + " (rank " + std::to_string(root) + " of " + std::to_string(ranks) + ")";
+}
+
+bool AnyRank(vtkMultiProcessController* controller, bool flag)
+{
+  const int mine = flag ? 1 : 0;
+  int any = 0;
+  controller->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
+  return any != 0;
 }
 
 std::vector<std::vector<char>> AllGatherBytes(vtkMultiProcessController* controller,

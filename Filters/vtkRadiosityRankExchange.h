@@ -6,6 +6,7 @@
 #ifndef vtkRadiosityRankExchange_h
 #define vtkRadiosityRankExchange_h
 
+#include "RadiosityFiltersModule.h" // for export macro
 #include "vtkType.h"
 
 #include <string>
@@ -21,14 +22,18 @@ namespace vtkRadiosityRankExchange
  * " (rank r of n)" appended: a request fails on all ranks or on none, and
  * no rank waits in a later collective for one that gave up.
  */
-std::string AgreeOnError(vtkMultiProcessController* controller, const std::string& localError);
+RADIOSITYFILTERS_EXPORT std::string AgreeOnError(
+  vtkMultiProcessController* controller, const std::string& localError);
+
+/// Collective: whether `flag` is true on some rank.
+RADIOSITYFILTERS_EXPORT bool AnyRank(vtkMultiProcessController* controller, bool flag);
 
 /**
  * Collective. Every rank's bytes, in rank order (an all-gather of lengths,
  * then of the bytes). `received` (per rank, in rank order): how many bytes
  * each rank received from the others.
  */
-std::vector<std::vector<char>> AllGatherBytes(vtkMultiProcessController* controller,
+RADIOSITYFILTERS_EXPORT std::vector<std::vector<char>> AllGatherBytes(vtkMultiProcessController* controller,
   const std::vector<char>& mine, std::vector<vtkIdType>& received);
 }
 

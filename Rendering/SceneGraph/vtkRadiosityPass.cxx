@@ -14,6 +14,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkMatrix4x4.h"
@@ -21,6 +22,7 @@
 #include "vtkProp3D.h"
 #include "vtkRadiosityFilter.h"
 #include "vtkRadiosityPassDisplay.h"
+#include "vtkRadiosityRankExchange.h"
 #include "vtkRadiosityRendererNode.h"
 #include "vtkRadiositySceneConverter.h"
 #include "vtkRadiosityViewNodeFactory.h"
@@ -206,7 +208,17 @@ bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
   graph->Traverse(vtkViewNode::synchronize);
 
   const vtkRadiosityRendererNode::Signature signature = graph->GetSignature();
-  if (graph->IsSolvedFor(signature, this->Filter->GetMTime()))
+  // Distributed (the filter's controller: ParaView's ranks, each rendering
+  // its own actors): the ranks solve together or not at all, whichever
+  // rank's actors changed, since the solve gathers every rank's piece.
+  vtkMultiProcessController* controller = this->Filter->GetController();
+  const bool distributed = controller && controller->GetNumberOfProcesses() > 1;
+  bool solved = graph->IsSolvedFor(signature, this->Filter->GetMTime());
+  if (distributed)
+  {
+    solved = !vtkRadiosityRankExchange::AnyRank(controller, !solved);
+  }
+  if (solved)
   {
     return graph->HasSolution();
   }
@@ -237,10 +249,17 @@ bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
       ++i;
     }
   }
-  if (error.empty() && graph->GetSceneInput()->GetNumberOfBlocks() == 0)
+  // A rank may hold no actor of a distributed scene; the filter refuses a
+  // scene empty on every rank.
+  if (error.empty() && !distributed && graph->GetSceneInput()->GetNumberOfBlocks() == 0)
   {
     error = "the renderer has no solvable actor (visible, opaque, surface representation, with "
             "polygons)";
+  }
+  if (distributed)
+  {
+    // One rank's bad light fails every rank, before the filter's collectives.
+    error = vtkRadiosityRankExchange::AgreeOnError(controller, error);
   }
   this->Filter->SetInputData(graph->GetSceneInput());
   this->Filter->SetLights(lights);

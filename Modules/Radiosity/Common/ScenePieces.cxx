@@ -94,6 +94,7 @@ private:
   std::size_t At = 0;
 };
 
+/// A point's position, its coordinates' bits.
 using Key = std::array<std::uint64_t, 3>;
 struct KeyHash
 {
@@ -110,7 +111,7 @@ struct KeyHash
 
 Key PositionKey(const Vec3& p)
 {
-  Key k;
+  Key k{};
   std::memcpy(&k[0], &p.x, 8);
   std::memcpy(&k[1], &p.y, 8);
   std::memcpy(&k[2], &p.z, 8);
@@ -206,14 +207,44 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
   Scene& whole = out.Whole;
   std::unordered_map<std::string, int> objectOfName;
   std::unordered_map<long long, std::uint32_t> pointOfGlobalId;
-  // Position -> the assembled points at that position, in order of appearance.
-  std::unordered_map<Key, std::vector<std::uint32_t>, KeyHash> pointsAt;
+  // Position -> the lower ranks' points there, in order of appearance.
+  struct AtPosition
+  {
+    std::uint32_t Id;
+    int Object; ///< the object of the first triangle using it; -1: unused there
+    std::size_t TakenBy; ///< the last rank welded to it (+1; 0: none)
+  };
+  std::unordered_map<Key, std::vector<AtPosition>, KeyHash> pointsAt;
   for (std::size_t r = 0; r < parts.size(); ++r)
   {
     const Scene& s = parts[r].Part;
+    std::vector<int> objectMap(s.ObjectNames.size());
+    for (std::size_t o = 0; o < s.ObjectNames.size(); ++o)
+    {
+      const auto found =
+        objectOfName.emplace(s.ObjectNames[o], static_cast<int>(whole.ObjectNames.size()));
+      if (found.second)
+      {
+        whole.ObjectNames.push_back(s.ObjectNames[o]);
+      }
+      objectMap[o] = found.first->second;
+    }
+    // Welding by position joins points of one object (or a point no
+    // triangle of its rank uses): a scene's blocks have points of their
+    // own, and a crease between two objects (a wall on a floor) is no seam.
+    std::vector<int> objectOfPoint(s.Points.size(), -1);
+    for (std::size_t t = 0; t < s.Triangles.size(); ++t)
+    {
+      for (std::uint32_t v : s.Triangles[t].V)
+      {
+        if (objectOfPoint[v] < 0)
+        {
+          objectOfPoint[v] = objectMap[static_cast<std::size_t>(s.ObjectIds[t])];
+        }
+      }
+    }
     std::vector<std::uint32_t> pointMap(s.Points.size());
-    std::unordered_map<Key, std::size_t, KeyHash> seenHere; // k-th occurrence on this rank
-    std::vector<std::pair<Key, std::uint32_t>> added;
+    std::vector<std::pair<Key, AtPosition>> added;
     for (std::size_t p = 0; p < s.Points.size(); ++p)
     {
       std::uint32_t id = static_cast<std::uint32_t>(whole.Points.size());
@@ -226,17 +257,30 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
       }
       else
       {
+        // The first lower-rank point here of the same object that no point
+        // of this rank took yet: the k-th copy of a position is the k-th
+        // (two distinct points at one position stay two).
         const Key key = PositionKey(s.Points[p]);
-        const std::size_t k = seenHere[key]++;
+        const int object = objectOfPoint[p];
         const auto at = pointsAt.find(key);
-        if (at != pointsAt.end() && k < at->second.size())
+        if (at != pointsAt.end())
         {
-          shared = true;
-          id = at->second[k];
+          for (AtPosition& candidate : at->second)
+          {
+            if (candidate.TakenBy != r + 1 &&
+              (candidate.Object == object || candidate.Object < 0 || object < 0))
+            {
+              candidate.TakenBy = r + 1;
+              candidate.Object = std::max(candidate.Object, object);
+              shared = true;
+              id = candidate.Id;
+              break;
+            }
+          }
         }
-        else
+        if (!shared)
         {
-          added.emplace_back(key, id); // visible to the higher ranks only
+          added.push_back({ key, AtPosition{ id, object, 0 } }); // for the higher ranks
         }
       }
       if (shared)
@@ -252,17 +296,6 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
     for (const auto& a : added)
     {
       pointsAt[a.first].push_back(a.second);
-    }
-    std::vector<int> objectMap(s.ObjectNames.size());
-    for (std::size_t o = 0; o < s.ObjectNames.size(); ++o)
-    {
-      const auto found =
-        objectOfName.emplace(s.ObjectNames[o], static_cast<int>(whole.ObjectNames.size()));
-      if (found.second)
-      {
-        whole.ObjectNames.push_back(s.ObjectNames[o]);
-      }
-      objectMap[o] = found.first->second;
     }
     for (std::size_t t = 0; t < s.Triangles.size(); ++t)
     {
