@@ -25,6 +25,7 @@
 #include "Radiosity/Common/Lights.h"
 #include "Radiosity/Common/ScenePieces.h"
 #include "Radiosity/Common/SolutionMesh.h"
+#include "Radiosity/Common/WorkShare.h"
 
 #include <algorithm>
 #include <chrono>
@@ -295,6 +296,7 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.MaxIterations = this->MaxIterations;
       options.RelativeLinkTolerance = this->LinkTolerance;
       options.MinElementSize = this->MinElementSize;
+      options.Share = this->Share;
       options.MaxRefinementRounds = this->MaxRefinementRounds;
       radiosity::DiscontinuityMeshOptions meshing;
       meshing.Discontinuities = this->DiscontinuityMeshing;
@@ -315,6 +317,7 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.GatherRays = this->GatherRays;
       options.VariationThreshold = this->VariationThreshold;
       options.SolidAngleThreshold = this->SolidAngleThreshold;
+      options.Share = this->Share;
       return std::make_shared<radiosity::MeshlessMethod>(scene, options);
     }
     case FaceCluster:
@@ -347,6 +350,7 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.FormFactorTolerance = this->FormFactorTolerance;
       options.VisibilitySamples = this->VisibilitySamples;
       options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
+      options.Share = this->Share;
       return std::make_shared<radiosity::ProgressiveMethod>(scene, options);
     }
   }
@@ -479,6 +483,9 @@ int vtkRadiosityFilter::ExecuteRequest(
   const bool distributed = this->Controller && this->Controller->GetNumberOfProcesses() > 1;
   this->RankTriangles.clear();
   this->RankBytesReceived.clear();
+  this->RankWorkItems.clear();
+  this->RankSolveBytesReceived.clear();
+  this->Share = distributed ? vtkRadiosityRankExchange::MakeWorkShare(this->Controller) : nullptr;
   if (!(distributed ? this->GatheredScene(input, scene, mine) : this->LocalScene(input, scene)))
   {
     return 0;
@@ -495,7 +502,7 @@ int vtkRadiosityFilter::ExecuteRequest(
   // a progress bar (ParaView's) must not run backwards. The product (the
   // discontinuity mesh) takes the last tenth of the bar.
   double shown = 0.0, offset = 0.0, scale = 1.0;
-  auto progress = [this, &last, &shown, &offset, &scale](const radiosity::ProgressStatus& status)
+  auto local = [this, &last, &shown, &offset, &scale](const radiosity::ProgressStatus& status)
   {
     const auto now = Clock::now();
     if (std::chrono::duration<double>(now - last).count() > 0.05)
@@ -514,6 +521,14 @@ int vtkRadiosityFilter::ExecuteRequest(
     return !this->GetAbortExecute();
 #endif
   };
+  // During a distributed solve every progress call is made on every rank at
+  // the same point: an abort on one rank stops every rank there.
+  bool collective = false;
+  auto progress = [this, &local, &collective](const radiosity::ProgressStatus& status)
+  {
+    const bool go = local(status);
+    return collective ? !this->Share->AnyRank(!go) : go;
+  };
 
   // One path for every method: build its solver, solve, output the surface
   // (port 0) and the method's own product (port 1).
@@ -521,7 +536,26 @@ int vtkRadiosityFilter::ExecuteRequest(
   this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   last = Clock::now();
   scale = 0.9;
+  collective = distributed;
   this->Statistics = this->Solver->Solve(progress);
+  collective = false;
+  if (distributed)
+  {
+    // Each rank's share of the split loops, for the report (one all-gather).
+    const radiosity::WorkShareStatistics& mine = this->Share->Statistics();
+    std::vector<char> bytes;
+    radiosity::PutBytes(bytes, static_cast<std::uint64_t>(mine.Items));
+    radiosity::PutBytes(bytes, static_cast<std::uint64_t>(mine.BytesReceived));
+    std::vector<vtkIdType> ignored;
+    for (const std::vector<char>& theirs : vtkRadiosityRankExchange::AllGatherBytes(this->Controller, bytes, ignored))
+    {
+      std::uint64_t items = 0, received = 0;
+      const std::size_t at = radiosity::GetBytes(theirs.data(), theirs.size(), items);
+      radiosity::GetBytes(theirs.data() + at, theirs.size() - at, received);
+      this->RankWorkItems.push_back(static_cast<vtkIdType>(items));
+      this->RankSolveBytesReceived.push_back(static_cast<vtkIdType>(received));
+    }
+  }
   this->Solution = std::make_unique<radiosity::SolutionMesh>(this->Solver->Surface());
   if (this->Statistics.LinksWithBlockersCut > 0)
   {
@@ -541,7 +575,13 @@ int vtkRadiosityFilter::ExecuteRequest(
     distributed ? radiosity::SolutionOfTriangles(*this->Solution, mine, &pointSource) : radiosity::SolutionMesh();
   output->ShallowCopy(
     vtkRadiositySceneConverter::FromSolution(distributed ? own : *this->Solution, *this->LastScene));
-  output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
+  // Not on a distributed rank's empty output: VTK sends an empty data set
+  // between ranks as legacy ASCII, which cannot read back the history's NaN
+  // (ParaView's Fetch failed with "Unrecognized keyword").
+  if (!distributed || !own.Triangles.empty())
+  {
+    output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
+  }
   for (radiosity::ProductArray a : this->Solver->SurfacePointArrays())
   {
     if (a.Tuples() != this->Solution->Points.size())
@@ -562,7 +602,9 @@ int vtkRadiosityFilter::ExecuteRequest(
   if (distributed)
   {
     for (const auto& values : { std::make_pair("RankTriangles", &this->RankTriangles),
-           std::make_pair("RankBytesReceived", &this->RankBytesReceived) })
+           std::make_pair("RankBytesReceived", &this->RankBytesReceived),
+           std::make_pair("RankWorkItems", &this->RankWorkItems),
+           std::make_pair("RankSolveBytesReceived", &this->RankSolveBytesReceived) })
     {
       vtkNew<vtkIdTypeArray> a;
       a->SetName(values.first);

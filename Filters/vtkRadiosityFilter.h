@@ -34,13 +34,20 @@
  * stop at a piece's boundary, so the ranks' pieces are gathered into one
  * scene (radiosity::AssembleScenePieces: points welded by global id or
  * position, triangles ordered by their cells' global ids when they have
- * them), the scene is solved on every rank, and each rank's port 0 carries
+ * them), the scene is solved on every rank with the work split between the
+ * ranks (radiosity::WorkShare: the progressive shots' receivers, the
+ * meshless gathers, the hierarchical links; face cluster radiosity solves
+ * whole on every rank), the same answer as one process's to the bit, and
+ * each rank's port 0 carries
  * the solution on its own piece (the elements of its own triangles; point
  * values are the whole scene's). An empty piece is normal; a rank's bad
  * input fails the request on every rank. Port 1 (the product of the whole
  * scene) is on rank 0 only, so that ParaView's delivery does not repeat it.
  * The field data arrays `RankTriangles` and `RankBytesReceived` (one tuple
- * per rank) say what each rank gave and received.
+ * per rank) say what each rank gave and received of the scene,
+ * `RankWorkItems` and `RankSolveBytesReceived` each rank's share of the
+ * solve's split loops (items computed) and the bytes it received in them.
+ * A time limit or an abort on one rank stops every rank at the same point.
  *
  * Bad input gives an error naming the array, cell or point and an empty
  * output (GetLastError() keeps the message). Progress events during the solve;
@@ -65,6 +72,7 @@
 
 namespace radiosity
 {
+class WorkShare;
 struct SolutionMesh;
 struct SceneAnalysis;
 class HierarchicalRadiosity;
@@ -470,6 +478,10 @@ public:
   /// received (one entry per rank; empty after a solve on one process).
   const std::vector<vtkIdType>& GetRankTriangles() const { return this->RankTriangles; }
   const std::vector<vtkIdType>& GetRankBytesReceived() const { return this->RankBytesReceived; }
+  /// Items of the solve's split loops each rank computed, and bytes each
+  /// received in them (one entry per rank; empty on one process).
+  const std::vector<vtkIdType>& GetRankWorkItems() const { return this->RankWorkItems; }
+  const std::vector<vtkIdType>& GetRankSolveBytesReceived() const { return this->RankSolveBytesReceived; }
 
   /// Called with the solver's phase, iteration and residual besides the
   /// progress events (for terminal progress bars); returning false aborts.
@@ -563,7 +575,9 @@ private:
   vtkSmartPointer<vtkLightCollection> Lights;
   std::unique_ptr<radiosity::LightSet> SceneLights;
   vtkMultiProcessController* Controller = nullptr;
-  std::vector<vtkIdType> RankTriangles, RankBytesReceived;
+  std::vector<vtkIdType> RankTriangles, RankBytesReceived, RankWorkItems, RankSolveBytesReceived;
+  /// The ranks' split of the solve (null on one process).
+  std::shared_ptr<radiosity::WorkShare> Share;
 };
 
 #endif

@@ -1,5 +1,7 @@
 #include "vtkRadiosityRankExchange.h"
 
+#include "Radiosity/Common/WorkShare.h"
+
 #include "vtkCommunicator.h"
 #include "vtkMultiProcessController.h"
 
@@ -79,5 +81,33 @@ std::vector<std::vector<char>> AllGatherBytes(vtkMultiProcessController* control
     received[static_cast<std::size_t>(r)] = total - lengths[static_cast<std::size_t>(r)];
   }
   return pieces;
+}
+
+namespace
+{
+class ControllerExchange : public radiosity::RankExchange
+{
+public:
+  explicit ControllerExchange(vtkMultiProcessController* controller)
+    : Controller(controller)
+  {
+  }
+  int Rank() const override { return this->Controller->GetLocalProcessId(); }
+  int Ranks() const override { return this->Controller->GetNumberOfProcesses(); }
+  std::vector<std::vector<char>> AllGather(const std::vector<char>& mine) override
+  {
+    std::vector<vtkIdType> received;
+    return AllGatherBytes(this->Controller, mine, received);
+  }
+  bool AnyRank(bool value) override { return vtkRadiosityRankExchange::AnyRank(this->Controller, value); }
+
+private:
+  vtkMultiProcessController* Controller;
+};
+}
+
+std::shared_ptr<radiosity::WorkShare> MakeWorkShare(vtkMultiProcessController* controller)
+{
+  return std::make_shared<radiosity::WorkShare>(std::make_shared<ControllerExchange>(controller));
 }
 }

@@ -9,10 +9,15 @@
 #include "RadiosityFiltersModule.h" // for export macro
 #include "vtkType.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 class vtkMultiProcessController;
+namespace radiosity
+{
+class WorkShare;
+}
 
 namespace vtkRadiosityRankExchange
 {
@@ -35,6 +40,11 @@ RADIOSITYFILTERS_EXPORT bool AnyRank(vtkMultiProcessController* controller, bool
  */
 RADIOSITYFILTERS_EXPORT std::vector<std::vector<char>> AllGatherBytes(vtkMultiProcessController* controller,
   const std::vector<char>& mine, std::vector<vtkIdType>& received);
+
+/// The ranks' split of a solve's loops (radiosity::WorkShare) over
+/// `controller` (not owned: it must outlive the share).
+RADIOSITYFILTERS_EXPORT std::shared_ptr<radiosity::WorkShare> MakeWorkShare(
+  vtkMultiProcessController* controller);
 }
 
 #endif

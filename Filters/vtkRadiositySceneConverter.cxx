@@ -11,6 +11,7 @@
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
 #include "vtkIntArray.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
@@ -24,6 +25,8 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnsignedShortArray.h"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 vtkStandardNewMacro(vtkRadiositySceneConverter);
@@ -520,6 +523,27 @@ vtkSmartPointer<vtkDoubleArray> vtkRadiositySceneConverter::FromHistory(
       r.EnergyBalance, r.RmsError, r.MaxRelError, r.OvershootPowerW };
     a->SetTypedTuple(static_cast<vtkIdType>(i), row);
   }
+  // The magnitude range over the finite components: VTK's own (asked for by
+  // ParaView's data information) is NaN where a tuple holds a NaN (the error
+  // columns without a reference), and vtkDataWriter then skips the key but
+  // not its count, so the binary stream ParaView sends between ranks (pvbatch
+  // Fetch, client-server delivery) cannot be read back ("Unrecognized
+  // keyword"). Set here, after the last change of the values, VTK keeps it.
+  double range[2] = { 0.0, 0.0 };
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    double sum = 0.0;
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+    {
+      const double v = a->GetComponent(i, c);
+      sum += std::isfinite(v) ? v * v : 0.0;
+    }
+    const double norm = std::sqrt(sum);
+    range[0] = i == 0 ? norm : std::min(range[0], norm);
+    range[1] = i == 0 ? norm : std::max(range[1], norm);
+  }
+  a->GetInformation()->Set(vtkDataArray::L2_NORM_RANGE(), range, 2);
+  a->GetInformation()->Set(vtkDataArray::L2_NORM_FINITE_RANGE(), range, 2);
   return a;
 }
 

@@ -286,7 +286,10 @@ bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
         materials = vtkRadiositySceneConverter::FromScene(this->Filter->GetScene());
       }
       graph->SetSolution(surface, product, signature, this->Filter->GetMTime());
-      if (!this->Display->SetSolution(
+      // Distributed: a rank that holds none of the scene's triangles has
+      // nothing of the solution to draw (not an error).
+      const bool nothingHere = distributed && surface->GetNumberOfCells() == 0;
+      if (!nothingHere && !this->Display->SetSolution(
             graph->GetSolutionSurface(), graph->GetSolutionProduct(), materials, error))
       {
         error = "the solution cannot be drawn: " + error;
@@ -337,7 +340,10 @@ void vtkRadiosityPass::Render(const vtkRenderState* s)
       selector->Render(renderer, s->GetPropArray(), s->GetPropArrayCount());
     return;
   }
-  this->UpdateSolution(renderer);
+  if (this->SolveOnRender)
+  {
+    this->UpdateSolution(renderer);
+  }
   const bool solved = this->HasSolution();
   std::vector<vtkProp*> props;
   std::vector<vtkProp3D*> poked;
@@ -432,6 +438,7 @@ void vtkRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Method: " << vtkRadiosityFilter::GetMethodName(this->Filter->GetMethod()) << "\n";
   os << indent << "MaxReflectance: " << this->MaxReflectance << "\n";
   os << indent << "TwoSided: " << (this->TwoSided ? "On" : "Off") << "\n";
+  os << indent << "SolveOnRender: " << (this->SolveOnRender ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << this->ToneMapping << "\n";
   os << indent << "NumberOfSolves: " << this->NumberOfSolves << "\n";

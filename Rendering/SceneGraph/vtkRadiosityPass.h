@@ -173,6 +173,20 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Whether Render solves (calls UpdateSolution) before it draws. Default
+   * on. Off: the application calls UpdateSolution before each render, and
+   * Render only draws the last solution. ParaView's Radiosity Render View
+   * does so on MPI ranks: there IceT calls the pass's Render only on the
+   * ranks with something in view, and a distributed solve is a collective
+   * that every rank must enter.
+   */
+  vtkSetMacro(SolveOnRender, bool);
+  vtkGetMacro(SolveOnRender, bool);
+  vtkBooleanMacro(SolveOnRender, bool);
+  ///@}
+
+  ///@{
   /// Scale of the drawn radiance B / pi (the mappers' Exposure). Default 1,
   /// clamped to [0, 1e12]. Redraws; does not solve again.
   vtkSetClampMacro(Exposure, double, 0.0, 1e12);
@@ -224,6 +238,7 @@ protected:
 
   double MaxReflectance = 0.95;
   bool TwoSided = false;
+  bool SolveOnRender = true;
   double Exposure = 1.0;
   int ToneMapping = 0;
   int NumberOfSolves = 0;

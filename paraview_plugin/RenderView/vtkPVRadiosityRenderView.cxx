@@ -1,5 +1,11 @@
 #include "vtkPVRadiosityRenderView.h"
 
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCommunicator.h"
+#include "vtkDataObject.h"
+#include "vtkMapper.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVProgressHandler.h"
 #include "vtkPVSession.h"
@@ -30,6 +36,47 @@ vtkPVRadiosityRenderView::vtkPVRadiosityRenderView()
 vtkPVRadiosityRenderView::~vtkPVRadiosityRenderView()
 {
   this->SynchronizedRenderers->SetRenderPass(nullptr);
+}
+
+void vtkPVRadiosityRenderView::Render(bool interactive, bool skip_rendering)
+{
+  // Distributed rendering: every rank holds its own pieces and the solve is
+  // a collective over the ranks (IceT would call the pass's Render on the
+  // ranks with something in view only, so the solve runs here, where every
+  // rank is). Otherwise this process holds all that is drawn: a local solve.
+  const bool distributed = interactive ? this->GetUseDistributedRenderingForLODRender()
+                                       : this->GetUseDistributedRenderingForRender();
+  vtkMultiProcessController* global = vtkMultiProcessController::GetGlobalController();
+  const bool ranks = distributed && global && global->GetNumberOfProcesses() > 1;
+  this->RadiosityPass->GetFilter()->SetController(ranks ? global : nullptr);
+  this->RadiosityPass->SetSolveOnRender(!ranks);
+  // A view that shows nothing on any rank yet (the renders before the data
+  // of a Show arrives) has nothing to solve.
+  int shown = 0;
+  vtkActorCollection* actors = this->GetRenderer()->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    vtkMapper* mapper = actor->GetMapper();
+    vtkDataObject* data = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
+    if (actor->GetVisibility() && data && data->GetNumberOfElements(vtkDataObject::CELL) > 0)
+    {
+      shown = 1;
+      break;
+    }
+  }
+  if (ranks)
+  {
+    int any = 0;
+    global->AllReduce(&shown, &any, 1, vtkCommunicator::MAX_OP);
+    shown = any;
+  }
+  if (ranks && shown && !skip_rendering)
+  {
+    this->RadiosityPass->UpdateSolution(this->GetRenderer());
+  }
+  this->Superclass::Render(interactive, skip_rendering);
 }
 
 vtkRadiosityPass* vtkPVRadiosityRenderView::GetRadiosityPass()

@@ -27,8 +27,13 @@
  * progress bar (the filter is registered with the session's progress
  * handler).
  *
- * Built-in sessions and a single server process: each process's renderer
- * solves what it shows, so in parallel every rank solves its own pieces.
+ * On MPI ranks (pvbatch or pvserver under mpirun): when the view renders
+ * distributed (every rank draws its own pieces, IceT composites), the solve
+ * gathers every rank's pieces and each rank draws the whole scene's solution
+ * on its own (vtkRadiosityFilter's Controller); the view solves before
+ * ParaView's render, on every rank, since IceT calls the pass only on the
+ * ranks with something in view. When ParaView gathers the geometry onto one
+ * process to render (small data), that process solves alone.
  */
 #ifndef vtkPVRadiosityRenderView_h
 #define vtkPVRadiosityRenderView_h
@@ -77,6 +82,8 @@ public:
 
 protected:
   vtkPVRadiosityRenderView();
+  /// Solves on every rank (see the class doc), then renders as ParaView does.
+  void Render(bool interactive, bool skip_rendering) override;
   ~vtkPVRadiosityRenderView() override;
 
   vtkNew<vtkRadiosityPass> RadiosityPass;

@@ -117,6 +117,53 @@ Key PositionKey(const Vec3& p)
   std::memcpy(&k[2], &p.z, 8);
   return k;
 }
+
+/// The distinct planes (unit normals, up to three) of the triangles that
+/// use a point: what tells apart the copies of a vertex split along a crease.
+struct PointNormals
+{
+  std::array<Vec3, 3> N{};
+  int Count = 0;
+  void Add(const Vec3& n)
+  {
+    for (int i = 0; i < this->Count; ++i)
+    {
+      if (glm::dot(this->N[static_cast<std::size_t>(i)], n) > ParallelCosine)
+      {
+        return;
+      }
+    }
+    if (this->Count < 3)
+    {
+      this->N[static_cast<std::size_t>(this->Count++)] = n;
+    }
+  }
+  /// The largest cosine between a plane of this point and one of `other`'s
+  /// (1 when either is used by no triangle: such a point welds to any).
+  double Closeness(const PointNormals& other) const
+  {
+    if (this->Count == 0 || other.Count == 0)
+    {
+      return 1.0;
+    }
+    double best = -1.0;
+    for (int i = 0; i < this->Count; ++i)
+    {
+      for (int j = 0; j < other.Count; ++j)
+      {
+        best = std::max(best,
+          glm::dot(this->N[static_cast<std::size_t>(i)], other.N[static_cast<std::size_t>(j)]));
+      }
+    }
+    return best;
+  }
+  static constexpr double ParallelCosine = 0.99985; ///< cos 1 degree: one plane
+  /// Copies whose planes differ by more than 60 degrees are not one point:
+  /// the copies of a vertex split along a crease (a box's top and side).
+  /// Across a cut through a tessellated smooth surface, the neighbours' planes
+  /// differ by less (an icosahedron's faces by 42 degrees).
+  static constexpr double WeldCosine = 0.5;
+};
 } // namespace
 
 std::vector<char> PackScenePiece(const Scene& piece, const PieceGlobalIds& ids)
@@ -213,6 +260,7 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
     std::uint32_t Id;
     int Object; ///< the object of the first triangle using it; -1: unused there
     std::size_t TakenBy; ///< the last rank welded to it (+1; 0: none)
+    PointNormals Normals; ///< of the triangles using it there
   };
   std::unordered_map<Key, std::vector<AtPosition>, KeyHash> pointsAt;
   for (std::size_t r = 0; r < parts.size(); ++r)
@@ -233,6 +281,7 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
     // triangle of its rank uses): a scene's blocks have points of their
     // own, and a crease between two objects (a wall on a floor) is no seam.
     std::vector<int> objectOfPoint(s.Points.size(), -1);
+    std::vector<PointNormals> normalsOfPoint(out.ByGlobalIds ? 0 : s.Points.size());
     for (std::size_t t = 0; t < s.Triangles.size(); ++t)
     {
       for (std::uint32_t v : s.Triangles[t].V)
@@ -240,6 +289,10 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
         if (objectOfPoint[v] < 0)
         {
           objectOfPoint[v] = objectMap[static_cast<std::size_t>(s.ObjectIds[t])];
+        }
+        if (!out.ByGlobalIds)
+        {
+          normalsOfPoint[v].Add(s.Normal(t));
         }
       }
     }
@@ -257,30 +310,46 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
       }
       else
       {
-        // The first lower-rank point here of the same object that no point
-        // of this rank took yet: the k-th copy of a position is the k-th
-        // (two distinct points at one position stay two).
+        // A lower-rank point here of the same object that no point of this
+        // rank took yet (two distinct points at one position stay two): of
+        // several, the one whose triangles' planes are closest to this
+        // point's, and none whose planes all differ by more than 60 degrees
+        // (PointNormals::WeldCosine). The copies of a vertex split along a
+        // crease (a box's top and its sides, each with points of its own)
+        // keep to their own faces whatever order each rank holds them in.
         const Key key = PositionKey(s.Points[p]);
         const int object = objectOfPoint[p];
         const auto at = pointsAt.find(key);
         if (at != pointsAt.end())
         {
+          AtPosition* chosen = nullptr;
+          double closest = 0.0;
           for (AtPosition& candidate : at->second)
           {
             if (candidate.TakenBy != r + 1 &&
               (candidate.Object == object || candidate.Object < 0 || object < 0))
             {
-              candidate.TakenBy = r + 1;
-              candidate.Object = std::max(candidate.Object, object);
-              shared = true;
-              id = candidate.Id;
-              break;
+              double closeness = candidate.Normals.Closeness(normalsOfPoint[p]);
+              // One plane: the first such candidate (the k-th copy is the k-th).
+              closeness = closeness >= PointNormals::ParallelCosine ? 1.0 : closeness;
+              if (closeness >= PointNormals::WeldCosine && (!chosen || closeness > closest))
+              {
+                chosen = &candidate;
+                closest = closeness;
+              }
             }
+          }
+          if (chosen)
+          {
+            chosen->TakenBy = r + 1;
+            chosen->Object = std::max(chosen->Object, object);
+            shared = true;
+            id = chosen->Id;
           }
         }
         if (!shared)
         {
-          added.push_back({ key, AtPosition{ id, object, 0 } }); // for the higher ranks
+          added.push_back({ key, AtPosition{ id, object, 0, normalsOfPoint[p] } }); // for the higher ranks
         }
       }
       if (shared)

@@ -59,12 +59,17 @@ struct AssembledScene
  * A point several ranks hold (a vertex on a piece's boundary) becomes one
  * point, as it was before the scene was split (the solution's vertex values
  * average over every triangle around a point):
- *  - by global id, when every piece with points carries them (what
- *    ParaView's redistribution and partitioned readers leave);
- *  - otherwise by its exact coordinates: the k-th point of a rank at some
- *    position is the k-th point at that position of the lower ranks (copies
- *    of one point are bit-equal; two distinct points at one position, an
- *    unwelded seam, stay two when both ranks hold both).
+ *  - by global id, when every piece with points carries them (partitioned
+ *    readers; ParaView 5.11's RedistributeDataSet leaves none);
+ *  - otherwise by its exact coordinates (copies of one point are bit-equal),
+ *    within one object: a rank's point is welded to the lower ranks' point
+ *    there whose triangles' planes are closest to its own (the copies of a
+ *    vertex split along a crease, a box's top and sides with points of their
+ *    own, keep to their own faces in whatever order the ranks hold them),
+ *    never to one whose planes all differ from its own by more than 60
+ *    degrees (such a vertex, welded across a crease and cut there, stays
+ *    two), and among copies in one plane the k-th to the k-th (two distinct
+ *    points at one position, an unwelded seam, stay two).
  * Objects are matched by name (a composite's blocks have the same names on
  * every rank), numbered in order of first appearance. Throws SceneError on a
  * malformed piece (naming the rank).

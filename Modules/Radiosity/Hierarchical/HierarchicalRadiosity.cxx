@@ -267,6 +267,9 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
   const Scene& scene = this->SourceScene;
   // In blocks, so that an abort is seen between them (progress and abort go
   // through this thread, not the workers).
+  // MPI ranks: each computes its share of every block, then every rank holds
+  // every link (WorkShare.h); the blocks, and so the abort checks, are the same on every rank.
+  WorkShare& share = ShareOrAlone(this->Settings.Share);
   constexpr std::size_t Block = 1 << 14;
   for (std::size_t begin = 0; begin < pending.size(); begin += Block)
   {
@@ -274,7 +277,9 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
     {
       return false;
     }
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, std::min(pending.size(), begin + Block), 16),
+    const std::size_t blockSize = std::min(pending.size(), begin + Block) - begin;
+    const auto mine = share.Range(blockSize);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin + mine.first, begin + mine.second, 16),
       [&](const tbb::blocked_range<std::size_t>& range) {
         std::vector<TriangleCorners> blockerCorners;
         for (std::size_t i = range.begin(); i != range.end(); ++i)
@@ -405,6 +410,33 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
           link.Factor = f;
         }
       });
+    share.CombineItems(
+      blockSize,
+      [&](std::size_t i, std::vector<char>& bytes) {
+        const Result& res = results[begin + i];
+        PutBytes(bytes, res.Link);
+        PutBytes(bytes, static_cast<std::uint64_t>(res.Blockers.size()));
+        for (std::uint32_t b : res.Blockers)
+        {
+          PutBytes(bytes, b);
+        }
+      },
+      [&](std::size_t i, const char* data, std::size_t size) {
+        Result& res = results[begin + i];
+        std::size_t at = GetBytes(data, size, res.Link);
+        std::uint64_t count = 0;
+        at += GetBytes(data + at, size - at, count);
+        if (count > (size - at) / sizeof(std::uint32_t))
+        {
+          ThrowShortShare(size - at, static_cast<std::size_t>(count) * sizeof(std::uint32_t));
+        }
+        res.Blockers.resize(static_cast<std::size_t>(count));
+        for (std::uint32_t& b : res.Blockers)
+        {
+          at += GetBytes(data + at, size - at, b);
+        }
+        return at;
+      });
   }
   for (Result& r : results)
   {
@@ -438,7 +470,9 @@ void HierarchicalRadiosity::Normalize()
 {
   const ElementMesh& mesh = *this->Elements;
   const std::size_t n = mesh.Elements().size();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64),
+  WorkShare& share = ShareOrAlone(this->Settings.Share); // MPI ranks: a share of the leaves each
+  const auto mine = share.Range(n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.first, mine.second, 64),
     [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i)
       {
@@ -475,6 +509,7 @@ void HierarchicalRadiosity::Normalize()
         this->Normalization[e] = approximate > 0 ? exact / approximate : 1.0;
       }
     });
+  share.Combine(this->Normalization.data(), n);
 }
 
 std::vector<std::uint32_t> HierarchicalRadiosity::LinksOf(std::uint32_t e) const
@@ -723,7 +758,7 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
         stats.Stop = StopReason::Converged;
         break;
       }
-      if (ReachedLimit(iteration, this->Settings.MaxIterations, elapsed,
+      if (ReachedLimitOnAnyRank(ShareOrAlone(this->Settings.Share), iteration, this->Settings.MaxIterations, elapsed,
             this->Settings.MaxTimeSeconds, stats.Stop))
       {
         break;

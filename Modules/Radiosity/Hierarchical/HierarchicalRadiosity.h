@@ -42,6 +42,7 @@
 #define Radiosity_HierarchicalRadiosity_h
 
 #include "Radiosity/Hierarchical/Backprojection.h"
+#include "Radiosity/Common/WorkShare.h"
 #include "Radiosity/Common/ElementMesh.h"
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/SceneAnalysis.h"
@@ -83,6 +84,8 @@ struct HierarchicalOptions
   int SkySamples = 1024; ///< sky quadrature directions per light-link sample (DirectLighting)
   std::vector<Probe> ErrorProbes;   ///< reference irradiance: error in every history row
   std::vector<RGB> ErrorReference;
+  /// MPI ranks: the links' form factors and blockers split over them (WorkShare.h); none: all here.
+  std::shared_ptr<WorkShare> Share;
 };
 
 /// A transfer from a source node to a receiver node.

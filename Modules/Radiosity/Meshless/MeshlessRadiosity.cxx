@@ -248,9 +248,16 @@ void MeshlessRadiosity::Refine(Bounce& out, const ValueAt& valueAt)
   auto compute = [&](std::vector<std::uint32_t>& set) {
     std::sort(set.begin(), set.end()); // sorted by index is sorted by level
     set.erase(std::unique(set.begin(), set.end()), set.end());
-    tbb::parallel_for(std::size_t(0), set.size(), [&](std::size_t k) {
-      out.Value[set[k]] = valueAt(set[k]);
-    });
+    // This rank's share of the gathers; every rank then holds every value.
+    WorkShare& share = ShareOrAlone(this->Settings.Share);
+    std::vector<RGB> values(set.size());
+    const auto mine = share.Range(set.size());
+    tbb::parallel_for(mine.first, mine.second, [&](std::size_t k) { values[k] = valueAt(set[k]); });
+    share.Combine(values.data(), values.size());
+    for (std::size_t k = 0; k < set.size(); ++k)
+    {
+      out.Value[set[k]] = values[k];
+    }
     FitBatch(points, set, out.Value, *out.Field);
     for (std::uint32_t j : set)
     {
@@ -615,7 +622,9 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
         stats.Stop = StopReason::Converged;
         break;
       }
-      if (this->Settings.MaxTimeSeconds > 0 && clock.Seconds() >= this->Settings.MaxTimeSeconds)
+      // One rank's clock stops every rank at the same bounce.
+      if (ShareOrAlone(this->Settings.Share).AnyRank(
+            this->Settings.MaxTimeSeconds > 0 && clock.Seconds() >= this->Settings.MaxTimeSeconds))
       {
         stats.Stop = StopReason::TimeLimit;
         break;

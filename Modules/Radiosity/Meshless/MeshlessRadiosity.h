@@ -37,6 +37,8 @@
 #include "Radiosity/Common/SolverTypes.h"
 
 #include <functional>
+#include "Radiosity/Common/WorkShare.h"
+
 #include <memory>
 #include <vector>
 
@@ -65,6 +67,8 @@ struct MeshlessOptions
   double MemoryBudgetBytes = 0.0;
   std::vector<Probe> ErrorProbes;          ///< reference irradiance: error after every bounce
   std::vector<RGB> ErrorReference;
+  /// MPI ranks: the gathers split over them (WorkShare.h); none: all here.
+  std::shared_ptr<WorkShare> Share;
 };
 
 /// What the method did, in the columns of the paper's Table 1.

@@ -14,6 +14,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -38,12 +39,15 @@ struct Selection
 struct ProgressiveRadiosity::ShotResult
 {
   ElementSamples Delta;
-  ElementSamples History; ///< for new children: everything received before this shot
   double ShooterSideFormFactor = 0.0; ///< F from the shooter's centroid to this element
   std::uint32_t Analytic = 0, Disc = 0;
   bool FacingAway = false;
   bool Split = false;
+  /// For new children: everything received before this shot. Last: the
+  /// ranks' exchange leaves it off for the other receivers.
+  ElementSamples History;
 };
+static_assert(std::is_trivially_copyable<ElementSamples>::value, "ShotResult is exchanged as bytes");
 
 namespace
 {
@@ -354,6 +358,7 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
   const std::vector<std::uint32_t>& leaves, SolverStatistics& stats)
 {
   ElementMesh& mesh = *this->Elements;
+  WorkShare& share = ShareOrAlone(this->Settings.Share);
   const double shooterArea = mesh[shooter].Area;
   const double threshold = this->Settings.SubdivisionThreshold;
   const bool raysNeeded = !this->Rays->Empty();
@@ -398,12 +403,28 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
       }
     }
     sampleCounts.assign(needed.size(), ShotResult());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, needed.size(), 32),
+    // MPI ranks: this rank's share of the samples and of the receivers
+    // below, then every rank holds every value (WorkShare.h).
+    const auto mySamples = share.Range(needed.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(mySamples.first, mySamples.second, 32),
       [&](const tbb::blocked_range<std::size_t>& range)
       {
         this->SampleTransfers(needed.data() + range.begin(), range.size(), shooter,
           sampleCounts[range.begin()]);
       });
+    if (share.Distributed())
+    {
+      std::vector<double> factors(needed.size());
+      for (std::size_t k = mySamples.first; k < mySamples.second; ++k)
+      {
+        factors[k] = this->SampleFactor[needed[k]];
+      }
+      share.Combine(factors.data(), factors.size());
+      for (std::size_t k = 0; k < needed.size(); ++k)
+      {
+        this->SampleFactor[needed[k]] = factors[k];
+      }
+    }
     for (const ShotResult& c : sampleCounts)
     {
       stats.AnalyticFormFactors += c.Analytic;
@@ -424,7 +445,8 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
       this->LightCornerSamples(children);
     }
     results.assign(pending.size(), ShotResult());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 16),
+    const auto myReceivers = share.Range(pending.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(myReceivers.first, myReceivers.second, 16),
       [&](const tbb::blocked_range<std::size_t>& range)
       {
         TransferScratch scratch;
@@ -494,6 +516,16 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
         }
       });
 
+    // A new child's history travels only with it (most receivers have none).
+    share.CombineItems(
+      pending.size(),
+      [&](std::size_t i, std::vector<char>& bytes) {
+        const ShotResult& res = results[i];
+        PutBytes(bytes, res, fresh[i] ? sizeof(ShotResult) : offsetof(ShotResult, History));
+      },
+      [&](std::size_t i, const char* data, std::size_t size) {
+        return GetBytes(data, size, results[i], fresh[i] ? sizeof(ShotResult) : offsetof(ShotResult, History));
+      });
     std::vector<std::uint32_t> next;
     for (std::size_t i = 0; i < pending.size(); ++i)
     {
@@ -690,7 +722,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
         stats.Stop = StopReason::Converged;
         break;
       }
-      if (ReachedLimit(iteration, this->Settings.MaxIterations, elapsed,
+      if (ReachedLimitOnAnyRank(ShareOrAlone(this->Settings.Share), iteration, this->Settings.MaxIterations, elapsed,
             this->Settings.MaxTimeSeconds, stats.Stop))
       {
         break;

@@ -13,6 +13,7 @@
 #ifndef Radiosity_ProgressiveRadiosity_h
 #define Radiosity_ProgressiveRadiosity_h
 
+#include "Radiosity/Common/WorkShare.h"
 #include "Radiosity/Common/ElementMesh.h"
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/SceneAnalysis.h"
@@ -56,6 +57,8 @@ struct ProgressiveOptions
   /// solution's error there (error against run time).
   std::vector<Probe> ErrorProbes;
   std::vector<RGB> ErrorReference;
+  /// MPI ranks: the receivers of each shot split over them (WorkShare.h); none: all here.
+  std::shared_ptr<WorkShare> Share;
 };
 
 class ProgressiveRadiosity

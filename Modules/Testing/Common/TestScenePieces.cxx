@@ -350,3 +350,53 @@ TEST(ScenePieces, SolutionCutByTrianglesCoversEveryElementOnce)
   }
   EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(seen.size()));
 }
+
+TEST(ScenePieces, CreaseCopiesAreWeldedToTheirOwnFacesInAnyOrder)
+{
+  // The Cornell box's blocks: each quad has points of its own, so a block's
+  // corner is three coincident points of one object (top, and two sides).
+  // Cut at random over 4 ranks, each rank's triangles shuffled, no global ids
+  // (what ParaView's RedistributeDataSet leaves): each copy is welded to the
+  // copy of its own face, whatever order the ranks hold them in.
+  const Scene box = MakeCornellBox();
+  const std::size_t n = box.Triangles.size();
+  for (unsigned seed : { 1u, 2u, 3u, 4u, 5u })
+  {
+    std::vector<std::vector<std::size_t>> which(4);
+    std::uint64_t state = seed * 0x9E3779B97F4A7C15ull;
+    const auto next = [&state]() {
+      state ^= state << 13;
+      state ^= state >> 7;
+      state ^= state << 17;
+      return state;
+    };
+    for (std::size_t t = 0; t < n; ++t)
+    {
+      which[next() % 4].push_back(t);
+    }
+    std::vector<std::vector<char>> pieces;
+    for (auto& w : which)
+    {
+      for (std::size_t i = w.size(); i > 1; --i)
+      {
+        std::swap(w[i - 1], w[next() % i]);
+      }
+      pieces.push_back(PackScenePiece(PieceOf(box, w, true)));
+    }
+    const AssembledScene a = AssembleScenePieces(pieces);
+    ASSERT_EQ(a.Whole.Triangles.size(), n);
+    EXPECT_EQ(a.Whole.Points.size(), box.Points.size()) << "seed " << seed;
+    // Two corners share a point after assembly iff they did before.
+    std::map<std::uint32_t, std::uint32_t> toWhole, toBox;
+    for (std::size_t t = 0; t < n; ++t)
+    {
+      const std::size_t source = static_cast<std::size_t>(a.Whole.SourceCells[t]);
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::uint32_t p = box.Triangles[source].V[k], q = a.Whole.Triangles[t].V[k];
+        EXPECT_EQ(toWhole.emplace(p, q).first->second, q) << "seed " << seed << ", triangle " << source;
+        EXPECT_EQ(toBox.emplace(q, p).first->second, p) << "seed " << seed << ", triangle " << source;
+      }
+    }
+  }
+}
