@@ -356,6 +356,16 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
   }
 }
 
+const radiosity::SolutionMesh* vtkRadiosityFilter::GetSolution() const
+{
+  if (this->SolutionPending && this->Solver)
+  {
+    this->Solution = std::make_unique<radiosity::SolutionMesh>(this->Solver->Surface());
+    this->SolutionPending = false;
+  }
+  return this->Solution.get();
+}
+
 void vtkRadiosityFilter::Warn(const std::string& warning)
 {
   this->Warnings.push_back(warning);
@@ -471,6 +481,7 @@ int vtkRadiosityFilter::ExecuteRequest(
   this->Warnings.clear();
   this->Solver.reset();
   this->Solution.reset();
+  this->SolutionPending = false;
   this->Statistics = radiosity::SolverStatistics();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -556,7 +567,11 @@ int vtkRadiosityFilter::ExecuteRequest(
       this->RankSolveBytesReceived.push_back(static_cast<vtkIdType>(received));
     }
   }
-  this->Solution = std::make_unique<radiosity::SolutionMesh>(this->Solver->Surface());
+  if (!distributed)
+  {
+    this->Solution = std::make_unique<radiosity::SolutionMesh>(this->Solver->Surface());
+  }
+  this->SolutionPending = distributed;
   if (this->Statistics.LinksWithBlockersCut > 0)
   {
     this->Warn(std::to_string(this->Statistics.LinksWithBlockersCut) +
@@ -568,11 +583,12 @@ int vtkRadiosityFilter::ExecuteRequest(
   {
     vtkWarningMacro(<< "aborted after " << this->Statistics.Iterations << " iterations");
   }
-  // Distributed: this rank's elements only (the solution stays whole in
-  // GetSolution(), for probes and images).
+  // Distributed: this rank's elements only, the only ones evaluated where
+  // the output costs (meshless); GetSolution() gives the whole solution on
+  // demand, for probes and images.
   std::vector<std::uint32_t> pointSource;
   const radiosity::SolutionMesh own =
-    distributed ? radiosity::SolutionOfTriangles(*this->Solution, mine, &pointSource) : radiosity::SolutionMesh();
+    distributed ? this->Solver->SurfaceOf(mine, &pointSource) : radiosity::SolutionMesh();
   output->ShallowCopy(
     vtkRadiositySceneConverter::FromSolution(distributed ? own : *this->Solution, *this->LastScene));
   // Not on a distributed rank's empty output: VTK sends an empty data set
@@ -584,7 +600,10 @@ int vtkRadiosityFilter::ExecuteRequest(
   }
   for (radiosity::ProductArray a : this->Solver->SurfacePointArrays())
   {
-    if (a.Tuples() != this->Solution->Points.size())
+    const bool onSurface = distributed
+      ? std::all_of(pointSource.begin(), pointSource.end(), [&a](std::uint32_t p) { return p < a.Tuples(); })
+      : a.Tuples() == this->Solution->Points.size();
+    if (!onSurface)
     {
       continue;
     }

@@ -315,8 +315,10 @@ public:
   /// The last scene as the solver saw it and what was dropped from it.
   const radiosity::Scene& GetScene() const { return *this->LastScene; }
   const radiosity::SceneCleanupReport& GetCleanupReport() const { return this->Cleanup; }
-  /// The last solution in the core's form (for probes and images); null before a solve.
-  const radiosity::SolutionMesh* GetSolution() const { return this->Solution.get(); }
+  /// The last solution in the core's form (for probes and images); null
+  /// before a solve. The whole scene's, also on MPI ranks (where it is
+  /// evaluated at the first call: the output holds a rank's part only).
+  const radiosity::SolutionMesh* GetSolution() const;
   double GetPreprocessSeconds() const { return this->PreprocessSeconds; }
 
   /**
@@ -567,7 +569,9 @@ private:
   std::shared_ptr<const radiosity::Scene> LastScene;
   std::shared_ptr<radiosity::RadiositySolver> Solver;
   radiosity::SceneCleanupReport Cleanup;
-  std::unique_ptr<radiosity::SolutionMesh> Solution;
+  mutable std::unique_ptr<radiosity::SolutionMesh> Solution;
+  /// A distributed solve's whole solution, not evaluated yet (GetSolution).
+  mutable bool SolutionPending = false;
   double PreprocessSeconds = 0.0;
   radiosity::ProgressCallback StatusCallback;
   std::vector<radiosity::Probe> ErrorProbes;

@@ -1,5 +1,5 @@
 // vtkRadiosityFilter on MPI ranks (issue 19): the 1.5M-triangle bunny room
-// cut into consecutive pieces (a partitioned reader's, with VTK's global
+// cut into slabs along x (a partitioned reader's pieces, with VTK's global
 // ids), gathered and solved with the work split between the ranks.
 //   mpirun -np N bench_mpi <bunny index.js> [--method meshless|progressive|hierarchical]
 //          [--triangles T] [--threads K]
@@ -35,15 +35,29 @@ using namespace radiosity;
 
 namespace
 {
-/// Triangles [begin, end) of `scene` over the points they use, with the
+/// Rank `rank`'s slab of `scene`: the triangles in order of their
+/// centroids' x, cut into `ranks` equal runs (the spatial pieces a parallel
+/// reader or a redistribution leaves), over the points they use, with the
 /// scene's point and triangle indices as VTK's global ids.
-vtkSmartPointer<vtkPolyData> PieceOf(const Scene& scene, std::size_t begin, std::size_t end)
+vtkSmartPointer<vtkPolyData> PieceOf(const Scene& scene, int rank, int ranks)
 {
+  const std::size_t n = scene.Triangles.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    order[t] = t;
+  }
+  std::stable_sort(order.begin(), order.end(), [&scene](std::size_t a, std::size_t b) {
+    return scene.Centroid(a).x < scene.Centroid(b).x;
+  });
+  std::vector<std::size_t> mine(order.begin() + static_cast<std::ptrdiff_t>(n * rank / ranks),
+    order.begin() + static_cast<std::ptrdiff_t>(n * (rank + 1) / ranks));
+  std::sort(mine.begin(), mine.end());
   Scene piece;
   piece.ObjectNames = scene.ObjectNames;
   std::map<std::uint32_t, std::uint32_t> used;
   std::vector<long long> pointIds, cellIds;
-  for (std::size_t t = begin; t < end; ++t)
+  for (std::size_t t : mine)
   {
     Triangle tri = scene.Triangles[t];
     for (auto& v : tri.V)
@@ -131,7 +145,7 @@ int main(int argc, char* argv[])
   }
   const Scene room = MakeBunnyRoomWithTriangles(ReadNpmBunny(bunnyJs), triangles);
   const std::size_t n = room.Triangles.size();
-  vtkSmartPointer<vtkPolyData> piece = PieceOf(room, n * rank / ranks, n * (rank + 1) / ranks);
+  vtkSmartPointer<vtkPolyData> piece = PieceOf(room, rank, ranks);
 
   vtkNew<vtkRadiosityFilter> filter;
   filter->SetController(controller);

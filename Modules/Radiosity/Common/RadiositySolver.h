@@ -10,6 +10,7 @@
 
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/Scene.h"
+#include "Radiosity/Common/ScenePieces.h"
 #include "Radiosity/Common/SolutionMesh.h"
 #include "Radiosity/Common/SolverTypes.h"
 
@@ -79,6 +80,14 @@ public:
   virtual SolverStatistics Solve(const ProgressCallback& progress) = 0;
   /// The surface solution: the elements with the SPEC fields.
   virtual SolutionMesh Surface() const = 0;
+  /// The surface's elements of the input triangles t with keep[t] != 0 (an
+  /// MPI rank's own part; SolutionOfTriangles: `pointSource` the index of
+  /// each point in Surface()'s points). A method whose output costs
+  /// evaluates only those.
+  virtual SolutionMesh SurfaceOf(const std::vector<char>& keep, std::vector<std::uint32_t>* pointSource) const
+  {
+    return SolutionOfTriangles(this->Surface(), keep, pointSource);
+  }
   /// Point arrays of the surface beyond the SPEC fields (face cluster: the
   /// irradiance vectors for vtkVectorIrradianceMapper); none by default.
   virtual std::vector<ProductArray> SurfacePointArrays() const { return {}; }

@@ -1,5 +1,7 @@
 #include "Radiosity/Meshless/MeshlessMethod.h"
 
+#include "Radiosity/Common/ScenePieces.h"
+
 namespace radiosity
 {
 MeshlessMethod::MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options)
@@ -10,6 +12,12 @@ MeshlessMethod::MeshlessMethod(std::shared_ptr<const Scene> scene, const Meshles
 SolutionMesh MeshlessMethod::Surface() const
 {
   return this->Solver.Surface();
+}
+
+SolutionMesh MeshlessMethod::SurfaceOf(
+  const std::vector<char>& keep, std::vector<std::uint32_t>* pointSource) const
+{
+  return SolutionOfTriangles(this->Solver.Surface(&keep), keep, pointSource);
 }
 
 std::vector<RGB> MeshlessMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const

@@ -16,6 +16,9 @@ public:
   MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options);
   const char* MethodName() const override { return "meshless"; }
   SolutionMesh Surface() const override;
+  /// Only the kept triangles' elements evaluated (the field's evaluation is
+  /// the output's cost).
+  SolutionMesh SurfaceOf(const std::vector<char>& keep, std::vector<std::uint32_t>* pointSource) const override;
   /// From the Shepard field (MeshlessRadiosity::Evaluate).
   std::vector<RGB> EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered = nullptr) const override;
   /// Kind "ShepardField": vertices with `Level`, `Radius`, `Normal`,

@@ -398,7 +398,7 @@ RGB MeshlessRadiosity::ExactLightsAt(const Vec3& x, const Vec3& inner, const Vec
 }
 
 SolutionMesh MeshlessRadiosity::SampledSurface(const std::function<RGB(const Vec3& x, const Vec3& inner,
-    const Vec3& n, std::uint32_t triangle)>& value) const
+    const Vec3& n, std::uint32_t triangle)>& value, const std::vector<char>* keep) const
 {
   const Scene& scene = this->SourceScene;
   const double diagonal = scene.Diagonal();
@@ -408,8 +408,36 @@ SolutionMesh MeshlessRadiosity::SampledSurface(const std::function<RGB(const Vec
   {
     return ExtractSolution(mesh); // the zero solution (no emitter, or aborted before placement)
   }
+  // With `keep`: the kept triangles' elements and the elements that share a
+  // point with them (a vertex's value is the area-weighted mean of every
+  // element around it); the others stay zero.
+  std::vector<char> evaluated;
+  if (keep)
+  {
+    std::vector<char> marked(mesh.Points().size(), 0);
+    for (std::uint32_t l : leaves)
+    {
+      if ((*keep)[mesh[l].Source])
+      {
+        for (std::uint32_t v : mesh[l].V)
+        {
+          marked[v] = 1;
+        }
+      }
+    }
+    evaluated.assign(leaves.size(), 0);
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+    {
+      const Element& el = mesh[leaves[i]];
+      evaluated[i] = (*keep)[el.Source] || marked[el.V[0]] || marked[el.V[1]] || marked[el.V[2]];
+    }
+  }
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
     Element& el = mesh[leaves[i]];
+    if (keep && !evaluated[i])
+    {
+      return;
+    }
     // Corners just inside the element: a corner on a neighbour's plane would
     // take that neighbour's basis functions at a grazing normal.
     for (int k = 0; k < 3; ++k)
@@ -422,11 +450,13 @@ SolutionMesh MeshlessRadiosity::SampledSurface(const std::function<RGB(const Vec
   return ExtractSolution(mesh);
 }
 
-SolutionMesh MeshlessRadiosity::Surface() const
+SolutionMesh MeshlessRadiosity::Surface(const std::vector<char>* keep) const
 {
-  return this->SampledSurface([this](const Vec3& x, const Vec3&, const Vec3& n, std::uint32_t t) {
-    return this->Solution->Evaluate(x, n, static_cast<std::uint32_t>(this->SourceScene.ObjectIds[t]));
-  });
+  return this->SampledSurface(
+    [this](const Vec3& x, const Vec3&, const Vec3& n, std::uint32_t t) {
+      return this->Solution->Evaluate(x, n, static_cast<std::uint32_t>(this->SourceScene.ObjectIds[t]));
+    },
+    keep);
 }
 
 SolutionMesh MeshlessRadiosity::GatherSurface() const

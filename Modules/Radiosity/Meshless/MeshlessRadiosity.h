@@ -125,8 +125,10 @@ public:
   /// The field on the input surfaces: the triangles split uniformly to
   /// SurfaceElementSize, each element's corners and centre evaluated from the
   /// field (SPEC output arrays; the field itself is the solution, and
-  /// vtkShepardFieldProbe moves it onto any other mesh).
-  SolutionMesh Surface() const;
+  /// vtkShepardFieldProbe moves it onto any other mesh). `keep` (one entry
+  /// per input triangle): only the elements of the kept triangles and their
+  /// neighbours are evaluated, the others left zero (an MPI rank's own part).
+  SolutionMesh Surface(const std::vector<char>* keep = nullptr) const;
   /// Irradiance at probes: each is assigned to the nearest surface's group
   /// (normals within 90 degrees); NaN when no surface faces it.
   std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
@@ -154,7 +156,7 @@ private:
   std::unique_ptr<ShepardField> LightFit;
   /// The surface split to SurfaceElementSize, every sample from `value`.
   SolutionMesh SampledSurface(const std::function<RGB(const Vec3& x, const Vec3& inner, const Vec3& n,
-      std::uint32_t triangle)>& value) const;
+      std::uint32_t triangle)>& value, const std::vector<char>* keep = nullptr) const;
   std::vector<std::uint32_t> Emitters;
   std::vector<unsigned char> Touched; ///< per point: gathered to at least once
   double Scale = 0.0;                 ///< largest coarse direct irradiance (one channel)
