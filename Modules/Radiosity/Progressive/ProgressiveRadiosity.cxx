@@ -14,7 +14,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cstddef>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -43,11 +42,8 @@ struct ProgressiveRadiosity::ShotResult
   std::uint32_t Analytic = 0, Disc = 0;
   bool FacingAway = false;
   bool Split = false;
-  /// For new children: everything received before this shot. Last: the
-  /// ranks' exchange leaves it off for the other receivers.
-  ElementSamples History;
+  ElementSamples History; ///< for new children: everything received before this shot
 };
-static_assert(std::is_trivially_copyable<ElementSamples>::value, "ShotResult is exchanged as bytes");
 
 namespace
 {
@@ -516,15 +512,44 @@ void ProgressiveRadiosity::Shoot(std::uint32_t shooter, const RGB& shot,
         }
       });
 
-    // A new child's history travels only with it (most receivers have none).
+    // Each receiver's result as the loop below reads it: a receiver facing
+    // away or split sends its counts only, a new child its history too.
     share.CombineItems(
       pending.size(),
       [&](std::size_t i, std::vector<char>& bytes) {
         const ShotResult& res = results[i];
-        PutBytes(bytes, res, fresh[i] ? sizeof(ShotResult) : offsetof(ShotResult, History));
+        const unsigned char kind = res.FacingAway ? 1 : res.Split ? 2 : 0;
+        PutBytes(bytes, kind);
+        PutBytes(bytes, res.Analytic);
+        PutBytes(bytes, res.Disc);
+        if (kind == 0)
+        {
+          PutBytes(bytes, res.Delta);
+          PutBytes(bytes, res.ShooterSideFormFactor);
+        }
+        if (fresh[i])
+        {
+          PutBytes(bytes, res.History);
+        }
       },
       [&](std::size_t i, const char* data, std::size_t size) {
-        return GetBytes(data, size, results[i], fresh[i] ? sizeof(ShotResult) : offsetof(ShotResult, History));
+        ShotResult& res = results[i];
+        unsigned char kind = 0;
+        std::size_t at = GetBytes(data, size, kind);
+        at += GetBytes(data + at, size - at, res.Analytic);
+        at += GetBytes(data + at, size - at, res.Disc);
+        res.FacingAway = kind == 1;
+        res.Split = kind == 2;
+        if (kind == 0)
+        {
+          at += GetBytes(data + at, size - at, res.Delta);
+          at += GetBytes(data + at, size - at, res.ShooterSideFormFactor);
+        }
+        if (fresh[i])
+        {
+          at += GetBytes(data + at, size - at, res.History);
+        }
+        return at;
       });
     std::vector<std::uint32_t> next;
     for (std::size_t i = 0; i < pending.size(); ++i)
