@@ -1,5 +1,6 @@
 #include "vtkRadiosityFilter.h"
 
+#include "vtkCommunicator.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -23,6 +24,7 @@
 #include "Radiosity/Meshless/MeshlessMethod.h"
 #include "Radiosity/Progressive/ProgressiveMethod.h"
 #include "Radiosity/Common/Lights.h"
+#include "Radiosity/Common/MemoryBudget.h"
 #include "Radiosity/Common/ScenePieces.h"
 #include "Radiosity/Common/SolutionMesh.h"
 #include "Radiosity/Common/WorkShare.h"
@@ -273,7 +275,9 @@ void vtkRadiosityFilter::FillCommonOptions(Options& options) const
   options.Tolerance = this->Tolerance;
   options.MaxTimeSeconds = this->MaxTime;
   options.Threads = this->NumberOfThreads;
-  options.MemoryBudgetBytes = this->MaxMemory * 1e9; // 0: the core's default (75% of physical memory)
+  // 0: the core's default (75% of physical memory); on MPI ranks the
+  // smallest rank's, agreed before the solve.
+  options.MemoryBudgetBytes = this->AgreedMemoryBudget > 0 ? this->AgreedMemoryBudget : this->MaxMemory * 1e9;
 }
 
 template <typename Options>
@@ -497,6 +501,15 @@ int vtkRadiosityFilter::ExecuteRequest(
   this->RankWorkItems.clear();
   this->RankSolveBytesReceived.clear();
   this->Share = distributed ? vtkRadiosityRankExchange::MakeWorkShare(this->Controller) : nullptr;
+  // Ranks on machines of different memory would check the solver's budget
+  // against different limits, and a rank that refused alone would leave the
+  // others waiting in the solve's exchanges: every rank takes the smallest.
+  this->AgreedMemoryBudget = 0.0;
+  if (distributed)
+  {
+    const double mine = radiosity::ResolveMemoryBudget(this->MaxMemory * 1e9);
+    this->Controller->AllReduce(&mine, &this->AgreedMemoryBudget, 1, vtkCommunicator::MIN_OP);
+  }
   if (!(distributed ? this->GatheredScene(input, scene, mine) : this->LocalScene(input, scene)))
   {
     return 0;

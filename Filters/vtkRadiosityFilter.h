@@ -580,6 +580,8 @@ private:
   std::unique_ptr<radiosity::LightSet> SceneLights;
   vtkMultiProcessController* Controller = nullptr;
   std::vector<vtkIdType> RankTriangles, RankBytesReceived, RankWorkItems, RankSolveBytesReceived;
+  /// The smallest rank's memory budget, bytes (0 on one process).
+  double AgreedMemoryBudget = 0.0;
   /// The ranks' split of the solve (null on one process).
   std::shared_ptr<radiosity::WorkShare> Share;
 };

@@ -316,6 +316,29 @@ int main(int argc, char* argv[])
     ok &= Check(f->GetOutput()->GetNumberOfCells() == 0, "nothing is output");
   }
 
+  // One rank with a memory limit too small for the solve (ranks on machines
+  // of different memory): every rank refuses alike, none waits for the
+  // others in the solve's exchanges.
+  {
+    std::vector<vtkIdType> keep;
+    for (vtkIdType c = Rank; c < n; c += Ranks)
+    {
+      keep.push_back(c);
+    }
+    auto f = Solver(vtkRadiosityFilter::Meshless, controller);
+    f->SetInputData(Piece(box, keep, true, true));
+    if (Rank == 0)
+    {
+      f->SetMaxMemory(1e-6); // 1 kB
+    }
+    f->Update();
+    const std::string error = f->GetLastError();
+    std::printf("[rank %d] small memory on rank 0: %s\n", Rank, error.c_str());
+    ok &= Check(error.find("memory") != std::string::npos || error.find("budget") != std::string::npos,
+      "rank 0's memory limit refuses the solve on every rank");
+    ok &= Check(f->GetOutput()->GetNumberOfCells() == 0, "nothing is output");
+  }
+
   const int failed = ok ? 0 : 1;
   int anyFailed = 0;
   controller->AllReduce(&failed, &anyFailed, 1, vtkCommunicator::MAX_OP);
