@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPVProgressHandler.h"
 #include "vtkPVSession.h"
+#include "vtkProcessModule.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkRadiosityFilter.h"
 #include "vtkRadiosityPass.h"
@@ -48,8 +49,11 @@ void vtkPVRadiosityRenderView::Render(bool interactive, bool skip_rendering)
                                        : this->GetUseDistributedRenderingForRender();
   vtkMultiProcessController* global = vtkMultiProcessController::GetGlobalController();
   const bool ranks = distributed && global && global->GetNumberOfProcesses() > 1;
+  // A client of a server that renders (remote rendering) shows the server's
+  // image: it holds no geometry and solves nothing.
+  const bool client = distributed && vtkProcessModule::GetProcessType() == vtkProcessModule::PROCESS_CLIENT;
   this->RadiosityPass->GetFilter()->SetController(ranks ? global : nullptr);
-  this->RadiosityPass->SetSolveOnRender(!ranks);
+  this->RadiosityPass->SetSolveOnRender(!ranks && !client);
   // A view that shows nothing on any rank yet (the renders before the data
   // of a Show arrives) has nothing to solve.
   int shown = 0;
@@ -72,7 +76,7 @@ void vtkPVRadiosityRenderView::Render(bool interactive, bool skip_rendering)
     global->AllReduce(&shown, &any, 1, vtkCommunicator::MAX_OP);
     shown = any;
   }
-  if (ranks && shown && !skip_rendering)
+  if (ranks && !client && shown && !skip_rendering)
   {
     this->RadiosityPass->UpdateSolution(this->GetRenderer());
   }

@@ -33,7 +33,9 @@
  * on its own (vtkRadiosityFilter's Controller); the view solves before
  * ParaView's render, on every rank, since IceT calls the pass only on the
  * ranks with something in view. When ParaView gathers the geometry onto one
- * process to render (small data), that process solves alone.
+ * process to render (small data), that process solves alone; a client of a
+ * server that renders (remote rendering) solves nothing and shows the
+ * server's image.
  */
 #ifndef vtkPVRadiosityRenderView_h
 #define vtkPVRadiosityRenderView_h
