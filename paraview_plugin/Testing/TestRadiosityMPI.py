@@ -75,6 +75,7 @@ with CapturedMessages() as messages:
         view.Method = "Progressive"
         view.Tolerance = 0.01
         Show(shown, view)
+        Render(view)  # paraview.simple resets the camera at a view's first render
         view.CameraPosition = [0.278, 0.273, -0.8]
         view.CameraFocalPoint = [0.278, 0.273, 0.28]
         view.CameraViewUp = [0.0, 1.0, 0.0]
