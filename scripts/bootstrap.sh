@@ -11,7 +11,7 @@ PACKAGES=(
   libopenexr-dev libtbb-dev libeigen3-dev libnanoflann-dev libgtest-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
   xvfb xauth libgl1-mesa-dri
-  mpi-default-dev libglew-dev libgl-dev libx11-dev libexpat1-dev
+  mpi-default-dev mpi-default-bin libglew-dev libgl-dev libx11-dev libexpat1-dev
   libdouble-conversion-dev liblz4-dev liblzma-dev libjpeg-dev libtiff-dev
   libpng-dev zlib1g-dev libutfcpp-dev libpython3-dev
   assimp-testmodels clang libclang-rt-14-dev
