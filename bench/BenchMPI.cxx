@@ -12,6 +12,7 @@
 #include "vtkRadiosityFilter.h"
 #include "vtkRadiositySceneConverter.h"
 
+#include "Radiosity/Common/ScenePieces.h"
 #include "Radiosity/Common/SolverTypes.h"
 #include "Radiosity/Common/SystemInfo.h"
 #include "Radiosity/Scenes/BunnyScene.h"
@@ -26,7 +27,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -53,28 +53,10 @@ vtkSmartPointer<vtkPolyData> PieceOf(const Scene& scene, int rank, int ranks)
   std::vector<std::size_t> mine(order.begin() + static_cast<std::ptrdiff_t>(n * rank / ranks),
     order.begin() + static_cast<std::ptrdiff_t>(n * (rank + 1) / ranks));
   std::sort(mine.begin(), mine.end());
-  Scene piece;
-  piece.ObjectNames = scene.ObjectNames;
-  std::map<std::uint32_t, std::uint32_t> used;
-  std::vector<long long> pointIds, cellIds;
-  for (std::size_t t : mine)
-  {
-    Triangle tri = scene.Triangles[t];
-    for (auto& v : tri.V)
-    {
-      const auto found = used.emplace(v, static_cast<std::uint32_t>(piece.Points.size()));
-      if (found.second)
-      {
-        piece.Points.push_back(scene.Points[v]);
-        pointIds.push_back(v);
-      }
-      v = found.first->second;
-    }
-    piece.Triangles.push_back(tri);
-    piece.Materials.push_back(scene.Materials[t]);
-    piece.ObjectIds.push_back(scene.ObjectIds[t]);
-    cellIds.push_back(static_cast<long long>(t));
-  }
+  std::vector<std::uint32_t> pointSource;
+  const Scene piece = SceneOfTriangles(scene, mine, &pointSource);
+  const std::vector<long long> pointIds(pointSource.begin(), pointSource.end()),
+    cellIds(piece.SourceCells.begin(), piece.SourceCells.end());
   vtkSmartPointer<vtkPolyData> pd = vtkRadiositySceneConverter::FromScene(piece);
   for (auto* ids : { &pointIds, &cellIds })
   {

@@ -25,7 +25,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paraview import servermanager  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
-from radiosity_pvtest import CapturedMessages, check, finish, read_png  # noqa: E402
+from radiosity_pvtest import CapturedMessages, check, cornell_view_screenshot, finish, read_png  # noqa: E402
 
 plugin, mpirun, pvserver, reference_path, out_dir = sys.argv[1:6]
 reference = json.load(open(reference_path))
@@ -70,20 +70,8 @@ try:
             peak = max(sum(cells.GetComponent(c, k) for k in range(3)) / 3.0
                        for c in range(data.GetNumberOfCells())) if cells else 0.0
             results[name] = {"elements": data.GetNumberOfCells(), "peak": peak}
-        view = CreateView("RadiosityRenderView")
-        view.ViewSize = [300, 300]
-        view.OrientationAxesVisibility = 0
-        view.Method = "Progressive"
-        view.Tolerance = 0.01
-        view.RemoteRenderThreshold = 0  # render on the server ranks
-        Show(redistributed, view)
-        Render(view)  # paraview.simple resets the camera at a view's first render
-        view.CameraPosition = [0.278, 0.273, -0.8]
-        view.CameraFocalPoint = [0.278, 0.273, 0.28]
-        view.CameraViewUp = [0.0, 1.0, 0.0]
-        Render(view)
         image = os.path.join(out_dir, "TestRadiosityClientServer.png")
-        SaveScreenshot(image, view, ImageResolution=[300, 300])
+        cornell_view_screenshot(redistributed, image, remote_rendering=True)
     print(messages.text)
     check("ERR" not in messages.text and "Error" not in messages.text,
           "errors were printed on the client: %s" % messages.text[:2000])

@@ -25,7 +25,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paraview import servermanager  # noqa: E402
 from paraview.simple import *  # noqa: E402,F401,F403
-from radiosity_pvtest import CapturedMessages, check, finish, read_png  # noqa: E402
+from radiosity_pvtest import CapturedMessages, check, cornell_view_screenshot, finish, read_png  # noqa: E402
 from vtkmodules.vtkParallelCore import vtkMultiProcessController  # noqa: E402
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
@@ -69,19 +69,8 @@ with CapturedMessages() as messages:
     results["redistributed"] = summary(servermanager.Fetch(solve2))
 
     for name, shown in (("view_source", box), ("view_redistributed", redistributed)):
-        view = CreateView("RadiosityRenderView")
-        view.ViewSize = [300, 300]
-        view.OrientationAxesVisibility = 0
-        view.Method = "Progressive"
-        view.Tolerance = 0.01
-        Show(shown, view)
-        Render(view)  # paraview.simple resets the camera at a view's first render
-        view.CameraPosition = [0.278, 0.273, -0.8]
-        view.CameraFocalPoint = [0.278, 0.273, 0.28]
-        view.CameraViewUp = [0.0, 1.0, 0.0]
-        Render(view)
         image = os.path.splitext(output)[0] + "_" + name + ".png"
-        SaveScreenshot(image, view, ImageResolution=[300, 300])
+        view = cornell_view_screenshot(shown, image)
         results[name] = image
         Delete(view)
 print(messages.text)

@@ -67,3 +67,27 @@ class CapturedMessages:
     def __exit__(self, *args):
         self.text = self.window.GetOutput()
         vtkOutputWindow.SetInstance(None)
+
+
+def cornell_view_screenshot(source, image, remote_rendering=False):
+    """`source` (a Cornell box) in a Radiosity Render View solved by
+    progressive radiosity (tolerance 0.01), seen from the box's open side, its
+    300 x 300 screenshot written to `image`; `remote_rendering`: rendered on
+    the servers of a client-server session. Returns the view."""
+    from paraview.simple import CreateView, Render, SaveScreenshot, Show
+
+    view = CreateView("RadiosityRenderView")
+    view.ViewSize = [300, 300]
+    view.OrientationAxesVisibility = 0
+    view.Method = "Progressive"
+    view.Tolerance = 0.01
+    if remote_rendering:
+        view.RemoteRenderThreshold = 0
+    Show(source, view)
+    Render(view)  # paraview.simple resets the camera at a view's first render
+    view.CameraPosition = [0.278, 0.273, -0.8]
+    view.CameraFocalPoint = [0.278, 0.273, 0.28]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    Render(view)
+    SaveScreenshot(image, view, ImageResolution=[300, 300])
+    return view

@@ -462,4 +462,33 @@ SolutionMesh SolutionOfTriangles(const SolutionMesh& whole, const std::vector<ch
   }
   return out;
 }
+Scene SceneOfTriangles(
+  const Scene& scene, const std::vector<std::size_t>& which, std::vector<std::uint32_t>* pointSource)
+{
+  Scene piece;
+  piece.ObjectNames = scene.ObjectNames;
+  std::unordered_map<std::uint32_t, std::uint32_t> used;
+  for (std::size_t t : which)
+  {
+    Triangle tri = scene.Triangles[t];
+    for (auto& v : tri.V)
+    {
+      const auto found = used.emplace(v, static_cast<std::uint32_t>(piece.Points.size()));
+      if (found.second)
+      {
+        piece.Points.push_back(scene.Points[v]);
+        if (pointSource)
+        {
+          pointSource->push_back(v);
+        }
+      }
+      v = found.first->second;
+    }
+    piece.Triangles.push_back(tri);
+    piece.Materials.push_back(scene.Materials[t]);
+    piece.ObjectIds.push_back(scene.ObjectIds[t]);
+    piece.SourceCells.push_back(static_cast<long long>(t));
+  }
+  return piece;
+}
 } // namespace radiosity

@@ -84,6 +84,16 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
  */
 SolutionMesh SolutionOfTriangles(const SolutionMesh& whole, const std::vector<char>& keep,
   std::vector<std::uint32_t>* pointSource = nullptr);
+
+/**
+ * The triangles `which` of `scene`, in that order, over only the points they
+ * use (in order of first use): a piece as a partitioned reader gives it.
+ * Materials, object ids and names kept; SourceCells the triangles' indices
+ * in `scene`. `pointSource`, when given, receives each point's index in
+ * `scene` (VTK's global point ids of the piece).
+ */
+Scene SceneOfTriangles(const Scene& scene, const std::vector<std::size_t>& which,
+  std::vector<std::uint32_t>* pointSource = nullptr);
 } // namespace radiosity
 
 #endif

@@ -15,50 +15,35 @@ using namespace radiosity;
 namespace
 {
 /// The triangles `which` of `scene`, over all its points (`compact` false)
-/// or over only the points they use, in order of first use; `ids` receives
-/// the global ids (the scene's point and triangle indices).
+/// or over only the points they use, in order of first use
+/// (SceneOfTriangles); `ids` receives the global ids (the scene's point and
+/// triangle indices).
 Scene PieceOf(const Scene& scene, const std::vector<std::size_t>& which, bool compact,
   PieceGlobalIds* ids = nullptr)
 {
-  Scene piece;
-  piece.ObjectNames = scene.ObjectNames;
-  std::map<std::uint32_t, std::uint32_t> used;
+  std::vector<std::uint32_t> source;
+  Scene piece = SceneOfTriangles(scene, which, &source);
   if (!compact)
   {
+    // Every point of the scene, the triangles' indices unchanged.
+    for (Triangle& tri : piece.Triangles)
+    {
+      for (auto& v : tri.V)
+      {
+        v = source[v];
+      }
+    }
     piece.Points = scene.Points;
+    source.resize(scene.Points.size());
     for (std::uint32_t p = 0; p < scene.Points.size(); ++p)
     {
-      used[p] = p;
-    }
-  }
-  for (std::size_t t : which)
-  {
-    Triangle tri = scene.Triangles[t];
-    for (auto& v : tri.V)
-    {
-      const auto found = used.emplace(v, static_cast<std::uint32_t>(piece.Points.size()));
-      if (found.second)
-      {
-        piece.Points.push_back(scene.Points[v]);
-      }
-      v = found.first->second;
-    }
-    piece.Triangles.push_back(tri);
-    piece.Materials.push_back(scene.Materials[t]);
-    piece.ObjectIds.push_back(scene.ObjectIds[t]);
-    piece.SourceCells.push_back(static_cast<long long>(t));
-    if (ids)
-    {
-      ids->Triangles.push_back(static_cast<long long>(t));
+      source[p] = p;
     }
   }
   if (ids)
   {
-    ids->Points.assign(piece.Points.size(), 0);
-    for (const auto& u : used)
-    {
-      ids->Points[u.second] = u.first;
-    }
+    ids->Points.assign(source.begin(), source.end());
+    ids->Triangles.assign(piece.SourceCells.begin(), piece.SourceCells.end());
   }
   return piece;
 }
