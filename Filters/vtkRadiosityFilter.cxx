@@ -333,6 +333,7 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       settings.TransferTolerance = this->TransferTolerance;
       settings.MaxBisections = this->MaxBisections;
       settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
+      settings.Share = this->Share;
       // The hierarchy shared by every user of this scene (FaceClusterHierarchy::
       // Shared): one that vtkFaceClusterHierarchyFilter built upstream for
       // the same geometry, materials and options is reused, not rebuilt.

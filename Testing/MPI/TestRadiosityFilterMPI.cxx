@@ -339,6 +339,33 @@ int main(int argc, char* argv[])
     ok &= Check(f->GetOutput()->GetNumberOfCells() == 0, "nothing is output");
   }
 
+  // A time limit on rank 0 only: every rank stops at the same iteration
+  // (the ranks' clocks are agreed), none waits for the others.
+  for (int method : methods)
+  {
+    std::vector<vtkIdType> keep;
+    for (vtkIdType c = Rank; c < n; c += Ranks)
+    {
+      keep.push_back(c);
+    }
+    auto f = Solver(method, controller);
+    f->SetInputData(Piece(box, keep, true, true));
+    f->SetTolerance(1e-6);
+    if (Rank == 0)
+    {
+      f->SetMaxTime(1e-3);
+    }
+    f->Update();
+    const radiosity::SolverStatistics& stats = f->GetStatistics();
+    const long long iterations = stats.Iterations;
+    const std::string what = std::string(vtkRadiosityFilter::GetMethodName(method)) + " with a time limit on rank 0";
+    std::printf("[rank %d] %s: stopped by %s after %lld iterations\n", Rank, what.c_str(),
+      radiosity::ToString(stats.Stop), iterations);
+    ok &= Check(f->GetLastError().empty(), what + ": no error (" + f->GetLastError() + ")");
+    ok &= Check(stats.Stop == radiosity::StopReason::TimeLimit, what + ": every rank stops by the time limit");
+    ok &= Check(SumOverRanks(controller, iterations) == iterations * Ranks, what + ": at the same iteration");
+  }
+
   const int failed = ok ? 0 : 1;
   int anyFailed = 0;
   controller->AllReduce(&failed, &anyFailed, 1, vtkCommunicator::MAX_OP);

@@ -556,7 +556,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     std::vector<double> residuals;
     for (;;)
     {
-      if (ReachedLimit(this->Iteration, this->Settings.MaxIterations, clock.Seconds(),
+      if (ReachedLimitOnAnyRank(ShareOrAlone(this->Settings.Share), this->Iteration, this->Settings.MaxIterations, clock.Seconds(),
             this->Settings.MaxTimeSeconds, stats.Stop))
       {
         break;

@@ -28,6 +28,7 @@
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/SolutionMesh.h"
 #include "Radiosity/Common/SolverTypes.h"
+#include "Radiosity/Common/WorkShare.h"
 
 #include <array>
 #include <deque>
@@ -65,6 +66,10 @@ struct FaceClusterSettings
   /// lamp's falloff, a hard shadow edge): the lights are exact at every
   /// node, and the basis can only follow them on elements small enough.
   int MaxLightBisections = 10;
+  /// MPI ranks: the solve is whole on every rank; only its time limit is
+  /// agreed over them (WorkShare.h), so that every rank stops at the same
+  /// iteration. None: one rank.
+  std::shared_ptr<WorkShare> Share;
 };
 
 /// Irradiance vector: one vector per colour channel.
