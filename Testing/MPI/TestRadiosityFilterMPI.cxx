@@ -25,6 +25,11 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRadiosityFilter.h"
+#include "vtkRadiosityRankExchange.h"
+
+#include "Radiosity/Common/WorkShare.h"
+#include "Radiosity/Reference/PathTracer.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
 
 #include <algorithm>
 #include <cmath>
@@ -364,6 +369,45 @@ int main(int argc, char* argv[])
     ok &= Check(f->GetLastError().empty(), what + ": no error (" + f->GetLastError() + ")");
     ok &= Check(stats.Stop == radiosity::StopReason::TimeLimit, what + ": every rank stops by the time limit");
     ok &= Check(SumOverRanks(controller, iterations) == iterations * Ranks, what + ": at the same iteration");
+  }
+
+  // The path tracer's paths split over the ranks (the references' method):
+  // a few sensors with many samples (the chunks split) and many sensors (the
+  // sensors split) give one process's estimates to the bit.
+  {
+    const radiosity::Scene scene = radiosity::MakeCornellBox();
+    for (std::size_t sensors : { std::size_t(8), std::size_t(300) })
+    {
+      std::vector<radiosity::Probe> probes;
+      for (std::size_t i = 0; i < sensors; ++i)
+      {
+        radiosity::Probe p;
+        p.Position = radiosity::Vec3(0.05 + 0.45 * (i + 0.5) / sensors, 0.001, 0.28);
+        p.Normal = radiosity::Vec3(0.0, 1.0, 0.0);
+        probes.push_back(p);
+      }
+      radiosity::PathTracerOptions options;
+      options.Threads = 1;
+      const std::size_t samples = sensors > 100 ? 64 : 4096;
+      const radiosity::PathTracer alone(scene, options);
+      options.Share = vtkRadiosityRankExchange::MakeWorkShare(controller);
+      const radiosity::PathTracer split(scene, options);
+      const std::vector<radiosity::ReferenceValue> one = alone.Irradiance(probes, samples, 0);
+      const std::vector<radiosity::ReferenceValue> many = split.Irradiance(probes, samples, 0);
+      double worst = 0.0, peak = 0.0;
+      for (std::size_t i = 0; i < probes.size(); ++i)
+      {
+        worst = std::max(worst, radiosity::MaxComponent(glm::abs(one[i].Value - many[i].Value)));
+        peak = std::max(peak, radiosity::MaxComponent(one[i].Value));
+      }
+      const radiosity::WorkShareStatistics& stats = options.Share->Statistics();
+      const std::string what = "path tracer, " + std::to_string(sensors) + " sensors";
+      std::printf("[rank %d] %s: this rank %zu of %zu items, worst difference %.3g (peak %.4g)\n", Rank,
+        what.c_str(), stats.Items, stats.TotalItems, worst, peak);
+      ok &= Check(peak > 0.0 && worst == 0.0, what + ": the ranks' estimates equal one process's to the bit");
+      ok &= Check(stats.Items > 0 && stats.Items * static_cast<std::size_t>(Ranks) <= stats.TotalItems + Ranks,
+        what + ": this rank traced its share");
+    }
   }
 
   const int failed = ok ? 0 : 1;

@@ -428,12 +428,15 @@ std::vector<ReferenceValue> PathTracer::Internals::Estimate(const Scene& scene,
   // Chunk moments are summed per sensor in chunk order in both branches, so
   // the branch (chosen by the sensor count alone) does not change any bit.
   const bool perSensor = sensors.size() >= 256;
+  WorkShare& share = ShareOrAlone(options.Share);
   const auto work = [&]()
   {
     if (perSensor)
     {
-      // Many sensors (images, sensor grids): one task per sensor, no buffer.
-      tbb::parallel_for(std::size_t(0), sensors.size(),
+      // Many sensors (images, sensor grids): one task per sensor, no buffer;
+      // on MPI ranks a share of the sensors each.
+      const auto mine = share.Range(sensors.size());
+      tbb::parallel_for(mine.first, mine.second,
         [&](std::size_t s)
         {
           Moments total;
@@ -445,12 +448,16 @@ std::vector<ReferenceValue> PathTracer::Internals::Estimate(const Scene& scene,
           }
           finish(s, total);
         });
+      share.Combine(result.data(), result.size());
       return;
     }
-    // Few sensors with many samples: the chunks are the parallel work.
+    // Few sensors with many samples: the chunks are the parallel work (on
+    // MPI ranks a share of the chunks each).
     std::vector<Moments> partial(sensors.size() * chunks);
-    tbb::parallel_for(std::size_t(0), partial.size(),
+    const auto mine = share.Range(partial.size());
+    tbb::parallel_for(mine.first, mine.second,
       [&](std::size_t item) { partial[item] = chunkMoments(item / chunks, item % chunks); });
+    share.Combine(partial.data(), partial.size());
     for (std::size_t s = 0; s < sensors.size(); ++s)
     {
       Moments total;

@@ -21,6 +21,7 @@
 #ifndef Radiosity_PathTracer_h
 #define Radiosity_PathTracer_h
 
+#include "Radiosity/Common/WorkShare.h"
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/RadianceImage.h"
 #include "Radiosity/Common/Scene.h"
@@ -52,6 +53,11 @@ struct PathTracerOptions
   int RouletteStart = 3;  ///< vertices at this depth and deeper may be killed
   int Threads = 0;        ///< 0: TBB's default
   PathSampling Sampling = PathSampling::MultipleImportance;
+  /// MPI ranks: the paths split over them, in chunks of one sensor's
+  /// samples (or, with many sensors, whole sensors), each with its own random
+  /// stream, so that any number of ranks gives the same estimates to the
+  /// bit (WorkShare.h). None: all here.
+  std::shared_ptr<WorkShare> Share;
 };
 
 struct ReferenceValue
