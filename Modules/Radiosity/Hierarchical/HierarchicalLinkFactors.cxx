@@ -1,0 +1,264 @@
+// Hierarchical radiosity's link form factors (Hanrahan, Salzman and
+// Aupperle 1991, section 4; the blockers of partial links for Hardt and
+// Teller's backprojection) and the row normalisation that keeps a closed
+// room's form factors summing to one; on MPI ranks each rank computes its
+// share (WorkShare.h).
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+
+#include "Radiosity/Common/FormFactor.h"
+#include "Radiosity/Common/Visibility.h"
+#include "Radiosity/Hierarchical/HierarchicalNodeRules.h"
+#include "Radiosity/Hierarchical/Shaft.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+namespace radiosity
+{
+using hierarchical::At;
+using hierarchical::RuleA;
+using hierarchical::RuleB;
+
+bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending,
+  SolverStatistics& stats, const std::function<bool()>& keepGoing)
+{
+  struct Result
+  {
+    HierarchicalLink Link;
+    std::vector<std::uint32_t> Blockers;
+  };
+  std::vector<Result> results(pending.size());
+  const Scene& scene = this->SourceScene;
+  // In blocks, so that an abort is seen between them (progress and abort go
+  // through this thread, not the workers).
+  // MPI ranks: each computes its share of every block, then every rank holds
+  // every link (WorkShare.h); the blocks, and so the abort checks, are the same on every rank.
+  WorkShare& share = ShareOrAlone(this->Settings.Share);
+  constexpr std::size_t Block = 1 << 14;
+  for (std::size_t begin = 0; begin < pending.size(); begin += Block)
+  {
+    if (!keepGoing())
+    {
+      return false;
+    }
+    const std::size_t blockSize = std::min(pending.size(), begin + Block) - begin;
+    const auto mine = share.Range(blockSize);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin + mine.first, begin + mine.second, 16),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        std::vector<TriangleCorners> blockerCorners;
+        for (std::size_t i = range.begin(); i != range.end(); ++i)
+        {
+          Result& res = results[i];
+          HierarchicalLink& link = res.Link;
+          link.Receiver = pending[i].Receiver;
+          link.Source = pending[i].Source;
+          const TriangleCorners p = this->Corners(link.Receiver);
+          const TriangleCorners q = this->Corners(link.Source);
+          const Vec3& n = (*this->Elements)[link.Receiver].Normal;
+          // Candidate blockers: occluders near the shaft (the BVH's boxes that
+          // meet its bounding sphere), inside the shaft's hull planes and with a
+          // vertex in front of both nodes. A superset is harmless:
+          // backprojection is exact, and a candidate that hides nothing
+          // subtracts nothing.
+          const Element& pe = (*this->Elements)[link.Receiver];
+          const Element& qe = (*this->Elements)[link.Source];
+          if (!this->Rays->Empty())
+          {
+            const Vec3 centre = (p[0] + p[1] + p[2] + q[0] + q[1] + q[2]) / 6.0;
+            double radius = 0.0;
+            for (int k = 0; k < 3; ++k)
+            {
+              radius = std::max({ radius, glm::length(p[k] - centre), glm::length(q[k] - centre) });
+            }
+            std::vector<std::uint32_t> near;
+            this->Rays->OccludersInSphere(centre, radius, near);
+            const Shaft shaft(p, q);
+            for (std::uint32_t b : near)
+            {
+              if (b == pe.Source || b == qe.Source ||
+                shaft.Excludes({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) }))
+              {
+                continue;
+              }
+              bool frontP = false, frontQ = false;
+              for (int k = 0; k < 3; ++k)
+              {
+                const Vec3 v = scene.Vertex(b, k);
+                frontP = frontP || glm::dot(v - pe.Centroid, pe.Normal) > this->PlaneTolerance;
+                frontQ = frontQ || glm::dot(v - qe.Centroid, qe.Normal) > this->PlaneTolerance;
+              }
+              if (frontP && frontQ)
+              {
+                res.Blockers.push_back(b);
+              }
+            }
+            std::sort(res.Blockers.begin(), res.Blockers.end());
+            res.Blockers.erase(std::unique(res.Blockers.begin(), res.Blockers.end()), res.Blockers.end());
+          }
+          if (res.Blockers.size() > this->Settings.MaxBlockersPerLink)
+          {
+            {
+              // Too many candidates: keep those the rays between the nodes meet.
+              std::vector<std::uint32_t> hit;
+              Vec3 from[16], to[16];
+              for (int a = 0; a < 4; ++a)
+              {
+                for (int b = 0; b < 4; ++b)
+                {
+                  from[4 * a + b] = At(p, RuleA[a]);
+                  to[4 * a + b] = At(q, RuleA[b]);
+                }
+              }
+              Vec3 f[32], t[32];
+              for (int a = 0; a < 4; ++a)
+              {
+                for (int b = 0; b < 4; ++b)
+                {
+                  f[8 * a + 2 * b] = At(p, RuleA[a]);
+                  t[8 * a + 2 * b] = At(q, RuleB[b]);
+                  f[8 * a + 2 * b + 1] = At(p, RuleB[a]);
+                  t[8 * a + 2 * b + 1] = At(q, RuleA[b]);
+                }
+              }
+              this->Rays->CollectOccluders(from, to, 16, hit);
+              this->Rays->CollectOccluders(f, t, 32, hit);
+              std::sort(hit.begin(), hit.end());
+              hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
+              hit.erase(std::remove_if(hit.begin(), hit.end(),
+                          [&](std::uint32_t b) { return b == pe.Source || b == qe.Source; }),
+                hit.end());
+              if (hit.size() > this->Settings.MaxBlockersPerLink)
+              {
+                hit.resize(this->Settings.MaxBlockersPerLink);
+              }
+              link.BlockersCut = true;
+              res.Blockers.swap(hit);
+            }
+          }
+          link.Kind = res.Blockers.empty() ? HierarchicalLink::Visible : HierarchicalLink::Partial;
+          blockerCorners.clear();
+          for (std::uint32_t b : res.Blockers)
+          {
+            blockerCorners.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
+          }
+          // Receiver-area mean of the point form factor: the centroids of the
+          // uniform midpoint subdivision, finer where the source is close (the
+          // kernel varies fastest there, and the sums over a closed room must
+          // stay 1 to 1e-4 for reflectance 0.999).
+          const double distance = glm::length(
+            (*this->Elements)[link.Source].Centroid - (*this->Elements)[link.Receiver].Centroid);
+          const double size = this->Elements->LongestEdge(link.Receiver);
+          const int splits = distance < 1.5 * size ? 8 : distance < 4 * size ? 4 : 2;
+          double f = 0.0;
+          int count = 0;
+          auto accumulate = [&](double s, double t) {
+            const double w[3] = { 1.0 - s - t, s, t };
+            const Vec3 x = At(p, w);
+            f += link.Kind == HierarchicalLink::Partial
+              ? VisibleFormFactor(x, n, q, blockerCorners.data(), blockerCorners.size())
+              : PointToPolygonFormFactor(x, n, q.data(), 3);
+            ++count;
+          };
+          for (int i = 0; i < splits; ++i)
+          {
+            for (int j = 0; i + j < splits; ++j)
+            {
+              accumulate((i + 1.0 / 3) / splits, (j + 1.0 / 3) / splits);
+              if (i + j < splits - 1)
+              {
+                accumulate((i + 2.0 / 3) / splits, (j + 2.0 / 3) / splits);
+              }
+            }
+          }
+          f /= count;
+          link.Factor = f;
+        }
+      });
+    share.CombineItems(
+      blockSize,
+      [&](std::size_t i, std::vector<char>& bytes) {
+        const Result& res = results[begin + i];
+        PutBytes(bytes, res.Link);
+        PutBytes(bytes, static_cast<std::uint64_t>(res.Blockers.size()));
+        for (std::uint32_t b : res.Blockers)
+        {
+          PutBytes(bytes, b);
+        }
+      },
+      [&](std::size_t i, const char* data, std::size_t size) {
+        Result& res = results[begin + i];
+        std::size_t at = GetBytes(data, size, res.Link);
+        std::uint64_t count = 0;
+        at += GetBytes(data + at, size - at, count);
+        if (count > (size - at) / sizeof(std::uint32_t))
+        {
+          ThrowShortShare(size - at, static_cast<std::size_t>(count) * sizeof(std::uint32_t));
+        }
+        res.Blockers.resize(static_cast<std::size_t>(count));
+        for (std::uint32_t& b : res.Blockers)
+        {
+          at += GetBytes(data + at, size - at, b);
+        }
+        return at;
+      });
+  }
+  for (Result& r : results)
+  {
+    r.Link.FirstBlocker = static_cast<std::uint32_t>(this->BlockerPool.size());
+    r.Link.BlockerCount = static_cast<std::uint32_t>(r.Blockers.size());
+    this->BlockerPool.insert(this->BlockerPool.end(), r.Blockers.begin(), r.Blockers.end());
+    this->LinkList.push_back(r.Link);
+    stats.PartialLinks += r.Link.Kind == HierarchicalLink::Partial;
+    stats.HiddenLinks += r.Link.Kind == HierarchicalLink::Hidden;
+  }
+  return true;
+}
+
+void HierarchicalRadiosity::Normalize()
+{
+  const ElementMesh& mesh = *this->Elements;
+  const std::size_t n = mesh.Elements().size();
+  WorkShare& share = ShareOrAlone(this->Settings.Share); // MPI ranks: a share of the leaves each
+  const auto mine = share.Range(n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.first, mine.second, 64),
+    [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+      {
+        const auto e = static_cast<std::uint32_t>(i);
+        if (!mesh[e].IsLeaf())
+        {
+          continue;
+        }
+        const TriangleCorners p = this->Corners(e);
+        Vec3 points[4];
+        for (int k = 0; k < 4; ++k)
+        {
+          points[k] = At(p, RuleA[k]);
+        }
+        double approximate = 0.0, exact = 0.0;
+        for (std::int32_t a = static_cast<std::int32_t>(e); a >= 0; a = mesh[static_cast<std::uint32_t>(a)].Parent)
+        {
+          const auto node = static_cast<std::uint32_t>(a);
+          for (std::uint32_t l = this->LinkOffsets[node]; l < this->LinkOffsets[node + 1]; ++l)
+          {
+            const HierarchicalLink& link = this->LinkList[l];
+            if (link.Kind != HierarchicalLink::Visible)
+            {
+              continue;
+            }
+            approximate += link.Factor;
+            const TriangleCorners q = this->Corners(link.Source);
+            for (const Vec3& x : points)
+            {
+              exact += 0.25 * PointToPolygonFormFactor(x, mesh[e].Normal, q.data(), 3);
+            }
+          }
+        }
+        this->Normalization[e] = approximate > 0 ? exact / approximate : 1.0;
+      }
+    });
+  share.Combine(this->Normalization.data(), n);
+}
+} // namespace radiosity
