@@ -278,6 +278,7 @@ void vtkRadiosityFilter::FillCommonOptions(Options& options) const
   // 0: the core's default (75% of physical memory); on MPI ranks the
   // smallest rank's, agreed before the solve.
   options.MemoryBudgetBytes = this->AgreedMemoryBudget > 0 ? this->AgreedMemoryBudget : this->MaxMemory * 1e9;
+  options.Share = this->Share; // MPI ranks: the split loops (null on one process)
 }
 
 template <typename Options>
@@ -300,7 +301,6 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.MaxIterations = this->MaxIterations;
       options.RelativeLinkTolerance = this->LinkTolerance;
       options.MinElementSize = this->MinElementSize;
-      options.Share = this->Share;
       options.MaxRefinementRounds = this->MaxRefinementRounds;
       radiosity::DiscontinuityMeshOptions meshing;
       meshing.Discontinuities = this->DiscontinuityMeshing;
@@ -321,7 +321,6 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.GatherRays = this->GatherRays;
       options.VariationThreshold = this->VariationThreshold;
       options.SolidAngleThreshold = this->SolidAngleThreshold;
-      options.Share = this->Share;
       return std::make_shared<radiosity::MeshlessMethod>(scene, options);
     }
     case FaceCluster:
@@ -333,7 +332,6 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       settings.TransferTolerance = this->TransferTolerance;
       settings.MaxBisections = this->MaxBisections;
       settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
-      settings.Share = this->Share;
       // The hierarchy shared by every user of this scene (FaceClusterHierarchy::
       // Shared): one that vtkFaceClusterHierarchyFilter built upstream for
       // the same geometry, materials and options is reused, not rebuilt.
@@ -355,7 +353,6 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.FormFactorTolerance = this->FormFactorTolerance;
       options.VisibilitySamples = this->VisibilitySamples;
       options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
-      options.Share = this->Share;
       return std::make_shared<radiosity::ProgressiveMethod>(scene, options);
     }
   }
