@@ -36,8 +36,8 @@
  * position, triangles ordered by their cells' global ids when they have
  * them), the scene is solved on every rank with the work split between the
  * ranks (radiosity::WorkShare: the progressive shots' receivers, the
- * meshless gathers, the hierarchical links; face cluster radiosity solves
- * whole on every rank), the same answer as one process's to the bit, and
+ * meshless gathers, the hierarchical links, the face cluster refinement
+ * rounds' transfers), the same answer as one process's to the bit, and
  * each rank's port 0 carries
  * the solution on its own piece (the elements of its own triangles; point
  * values are the whole scene's). An empty piece is normal; a rank's bad

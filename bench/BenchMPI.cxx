@@ -1,7 +1,7 @@
 // vtkRadiosityFilter on MPI ranks (issue 19): the 1.5M-triangle bunny room
 // cut into slabs along x (a partitioned reader's pieces, with VTK's global
 // ids), gathered and solved with the work split between the ranks.
-//   mpirun -np N bench_mpi <bunny index.js> [--method meshless|progressive|hierarchical]
+//   mpirun -np N bench_mpi <bunny index.js> [--method meshless|progressive|hierarchical|facecluster]
 //          [--triangles T] [--threads K]
 // Rank 0 prints one markdown row: ranks, threads per rank (0: all cores),
 // method, triangles; the request's wall time, of it the scene's gather with
@@ -135,6 +135,7 @@ int main(int argc, char* argv[])
   filter->SetNumberOfThreads(threads);
   filter->SetMethod(method == "progressive" ? vtkRadiosityFilter::Progressive
       : method == "hierarchical"            ? vtkRadiosityFilter::Hierarchical
+      : method == "facecluster"             ? vtkRadiosityFilter::FaceCluster
                                             : vtkRadiosityFilter::Meshless);
   controller->Barrier();
   const auto start = std::chrono::steady_clock::now();

@@ -262,8 +262,7 @@ int main(int argc, char* argv[])
         auto* triangles = vtkIdTypeArray::SafeDownCast(output->GetFieldData()->GetArray("RankTriangles"));
         ok &= Check(triangles && triangles->GetNumberOfTuples() == Ranks, what + ": RankTriangles");
         // The work split: every rank computed its share of the split loops
-        // (contiguous shares differ by one item per loop at most), face
-        // cluster radiosity none (it solves whole on every rank).
+        // (contiguous shares differ by one item per loop at most).
         const std::vector<vtkIdType>& items = distributed->GetRankWorkItems();
         const std::vector<vtkIdType>& bytes = distributed->GetRankSolveBytesReceived();
         ok &= Check(items.size() == static_cast<std::size_t>(Ranks) && bytes.size() == items.size(),
@@ -277,18 +276,13 @@ int main(int argc, char* argv[])
           std::printf("[rank %d] %s: rank %zu computed %lld items, received %lld bytes\n", Rank, what.c_str(),
             r, static_cast<long long>(items[r]), static_cast<long long>(bytes[r]));
         }
-        if (method == vtkRadiosityFilter::FaceCluster)
-        {
-          ok &= Check(total == 0, what + ": face cluster solves whole on every rank");
-        }
-        else
-        {
-          // Measured: the shares differ by 0.1% (progressive, 2 ranks) to 3%
-          // (4 ranks); bound 5% of the mean share.
-          ok &= Check(least > 0 && static_cast<double>(most - least) <= 0.05 * total / Ranks,
-            what + ": every rank computed its share, within 5% of the mean");
-          ok &= Check(bytes[0] > 0, what + ": the shares were exchanged");
-        }
+        // Measured, the larger shares rotating over the ranks (WorkShare):
+        // at most 0.01% of the mean share apart for progressive, 0.1%
+        // hierarchical and meshless, 1.5% face cluster (198 to 201 items on
+        // 4 ranks: many small refinement rounds); bound 3%.
+        ok &= Check(least > 0 && static_cast<double>(most - least) <= 0.03 * total / Ranks,
+          what + ": every rank computed its share, within 3% of the mean");
+        ok &= Check(bytes[0] > 0, what + ": the shares were exchanged");
       }
     }
   }

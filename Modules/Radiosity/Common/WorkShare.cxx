@@ -19,7 +19,7 @@ WorkShare::WorkShare(std::shared_ptr<RankExchange> exchange)
 std::pair<std::size_t, std::size_t> WorkShare::RangeOf(std::size_t n, int rank) const
 {
   const std::size_t ranks = static_cast<std::size_t>(this->Ranks());
-  const std::size_t r = static_cast<std::size_t>(rank);
+  const std::size_t r = (static_cast<std::size_t>(rank) + this->Combines) % ranks;
   return { n / ranks * r + std::min(r, n % ranks), n / ranks * (r + 1) + std::min(r + 1, n % ranks) };
 }
 
@@ -52,6 +52,11 @@ void WorkShare::CombineItems(std::size_t n,
   {
     return;
   }
+  struct NextRotation // after the ranges below are read, also when unpack throws
+  {
+    std::size_t& Combines;
+    ~NextRotation() { ++this->Combines; }
+  } rotate{ this->Combines };
   const Stopwatch clock;
   std::vector<char> bytes;
   for (std::size_t i = mine.first; i < mine.second; ++i)

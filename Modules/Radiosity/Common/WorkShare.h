@@ -62,8 +62,11 @@ public:
   int Rank() const { return this->Exchange ? this->Exchange->Rank() : 0; }
   int Ranks() const { return this->Exchange ? this->Exchange->Ranks() : 1; }
 
-  /// This rank's items [first, second) of a loop over `n`: contiguous, the
-  /// ranks in order, sizes differing by one at most.
+  /// This rank's items [first, second) of the next Combine's loop over `n`:
+  /// contiguous, sizes differing by one at most. The ranks that take the
+  /// larger shares rotate from one Combine to the next, so that many small
+  /// loops (the face cluster refinement's rounds) do not always load the
+  /// same ranks.
   std::pair<std::size_t, std::size_t> Range(std::size_t n) const { return RangeOf(n, this->Rank()); }
   std::pair<std::size_t, std::size_t> RangeOf(std::size_t n, int rank) const;
 
@@ -96,6 +99,7 @@ private:
   void CombineBytes(char* values, std::size_t n, std::size_t size);
   std::shared_ptr<RankExchange> Exchange;
   WorkShareStatistics Stats;
+  std::size_t Combines = 0; ///< CombineItems calls so far: the shares' rotation
 };
 
 /// Appends the first `size` bytes of `value` (trivially copyable) to `bytes`.

@@ -13,10 +13,6 @@ namespace radiosity
 {
 namespace
 {
-// The largest |Phi| of the Legendre products up to cubic: sqrt(7) * sqrt(7)
-// bounds every function on [0, 1]^2; a bound on an expansion's range.
-constexpr double BasisBound = 7.0;
-
 double Magnitude(const std::vector<RGB>& coefficients)
 {
   double m = 0.0;
@@ -268,233 +264,11 @@ bool FaceClusterRadiosity::HasUnshot(const FaceClusterElement& e) const
   return Magnitude(e.Unshot) > 0.0;
 }
 
-void FaceClusterRadiosity::AddShooter(std::int32_t receiver, std::int32_t emitter)
+double FaceClusterRadiosity::UnshotMagnitude(const FaceClusterElement& e) const
 {
-  const FaceClusterElement& i = this->Nodes[receiver];
-  const FaceClusterElement& j = this->Nodes[emitter];
-  if (receiver != emitter && this->HasUnshot(j) && ClusterFaces(i.Data, j.Data) &&
-    ClusterFaces(j.Data, i.Data))
-  {
-    this->Nodes[receiver].Shooters.push_back(emitter);
-  }
+  return Magnitude(e.Unshot);
 }
 
-void FaceClusterRadiosity::Gather(std::int32_t i, std::int32_t j, std::vector<IrradianceVector>& into)
-{
-  const FaceClusterElement& receiver = this->Nodes[i];
-  const FaceClusterElement& emitter = this->Nodes[j];
-  // Bounds on the emitter's radiosity: the range over its leaves' nodes
-  // (its emission's in the first shot), widened by the expansion's own.
-  double higher = 0.0;
-  for (std::size_t b = 1; b < emitter.Unshot.size(); ++b)
-  {
-    higher += std::abs(Mean(emitter.Unshot[b]));
-  }
-  const double mean = Mean(emitter.Unshot[0]);
-  const double bMin = std::max(0.0, std::min(emitter.UnshotMin, mean - BasisBound * higher));
-  const double bMax = std::max(emitter.UnshotMax, mean + BasisBound * higher);
-  const Transfer t = ComputeTransfer(
-    { &receiver.Data, receiver.Cluster, &receiver.Rule, this->IrradianceBasis.Size() },
-    { &emitter.Data, emitter.Cluster, &emitter.Rule, this->RadiosityBasis.Size(),
-      emitter.IsTriangle() ? emitter.Corners.data() : nullptr },
-    emitter.Unshot, bMin, bMax, *this->Visibility, this->Settings.Rule);
-  // Below the input triangles only receivers are refined, and only where
-  // their basis cannot follow the irradiance (the fit error at their nodes
-  // and corners, judged at the input triangle's area): an emitter's parts
-  // would each cast a field no smoother across the receiver than the whole
-  // triangle's, and the bounds of 3.3.2 never tighten next to a shared
-  // edge. Measured in a closed room (rho 0.5) halving both ends four times
-  // on the bounds: 3.3% worst error against 0.3% without halving.
-  const bool clusterReceiver = !receiver.Data.IsLeaf();
-  const bool clusterEmitter = !emitter.Data.IsLeaf();
-  // A part's error is judged at its input triangle's area, so that halving
-  // a receiver does not halve the error of its irradiance that is accepted
-  // (3.3.2's delta is a power).
-  const double scale = receiver.Bisections > 0 && receiver.Data.Area > 0.0f
-    ? this->GetScene().Area(receiver.Cluster) / receiver.Data.Area
-    : 1.0;
-  const bool fitFails = scale * t.FitError > this->Epsilon;
-  const bool bisect = !clusterReceiver && fitFails && this->CanSubdivide(receiver);
-  if (scale * t.Error <= this->Epsilon || (!clusterReceiver && !clusterEmitter && !bisect))
-  {
-    const int ne = t.Receivers, nb = t.Emitters;
-    for (int a = 0; a < ne; ++a)
-    {
-      for (int b = 0; b < nb; ++b)
-      {
-        const Vec3& k = t.K[a * nb + b];
-        for (int c = 0; c < 3; ++c)
-        {
-          into[a][c] += emitter.Unshot[b][c] * k;
-        }
-      }
-    }
-    ++this->Stats.Transfers;
-    return;
-  }
-  ++this->Stats.Refinements;
-  // A receiver whose basis cannot follow the irradiance is split whatever
-  // the sizes.
-  if (clusterEmitter && !bisect && !(clusterReceiver && fitFails) &&
-    (!clusterReceiver || emitter.Data.Area > receiver.Data.Area))
-  {
-    this->Subdivide(j);
-    const std::int32_t k0 = this->Nodes[j].Child[0], k1 = this->Nodes[j].Child[1];
-    this->AddShooter(i, k0);
-    this->AddShooter(i, k1);
-  }
-  else
-  {
-    this->Subdivide(i);
-    const std::int32_t k0 = this->Nodes[i].Child[0], k1 = this->Nodes[i].Child[1];
-    this->AddShooter(k0, j);
-    this->AddShooter(k1, j);
-  }
-}
-
-void FaceClusterRadiosity::TransportLight(std::int32_t i, const std::vector<IrradianceVector>& up)
-{
-  const int ne = this->IrradianceBasis.Size(), nb = this->RadiosityBasis.Size();
-  std::vector<IrradianceVector> dE(ne, IrradianceVector{});
-  if (!up.empty())
-  {
-    const FaceClusterElement& e = this->Nodes[i];
-    const Vec3 n = e.Data.MeanNormal();
-    for (int c = 0; c < 3; ++c)
-    {
-      if (glm::dot(n, up[0][c]) <= 0.0)
-      {
-        continue; // 3.3.4: not into a child it does not face
-      }
-      for (int b = 0; b < ne; ++b)
-      {
-        for (int a = 0; a < ne; ++a)
-        {
-          dE[b][c] += e.PushE[a * ne + b] * up[a][c];
-        }
-      }
-    }
-  }
-  while (!this->Nodes[i].Shooters.empty())
-  {
-    const std::int32_t j = this->Nodes[i].Shooters.back();
-    this->Nodes[i].Shooters.pop_back();
-    this->Gather(i, j, dE);
-  }
-  // 3.3.3: the self-transfer of a non-convex element, refined into its
-  // children's mutual transfers when its error bound is too large.
-  {
-    const FaceClusterElement& e = this->Nodes[i];
-    if (!e.Data.Convex && !e.Data.IsLeaf() && this->HasUnshot(e))
-    {
-      const double bMax = this->Iteration == 0 ? Mean(RGB(e.Data.EmissionMax))
-                                               : Magnitude(e.Unshot) * BasisBound;
-      if (SelfTransferError(e.Data, bMax) > this->Epsilon)
-      {
-        this->Subdivide(i);
-        const std::int32_t k0 = this->Nodes[i].Child[0], k1 = this->Nodes[i].Child[1];
-        this->AddShooter(k0, k1);
-        this->AddShooter(k1, k0);
-      }
-    }
-  }
-  // The lights are external emitters of the first iteration (SPEC "Lights
-  // and sky"): an element whose light varies over its nodes by more than the
-  // transfer tolerance is subdivided, as a transfer would be, and each leaf
-  // receives the lights' vector irradiance fitted at its own nodes.
-  std::vector<IrradianceVector> lightAtNodes;
-  if (this->Lights && this->Iteration == 0 && this->Nodes[i].IsLeaf())
-  {
-    double spread = 0.0;
-    if (this->Nodes[i].Data.IsLeaf())
-    {
-      lightAtNodes = this->LightAtNodes(i, &spread);
-    }
-    // A cluster is always opened down to its triangles: its few nodes can
-    // miss a spot's cone or a shadow altogether (a floor cluster whose nodes
-    // all lay outside a spot's cone received nothing).
-    const bool cluster = !this->Nodes[i].Data.IsLeaf();
-    if (this->Nodes[i].IsLeaf() && (cluster || spread > this->Epsilon) &&
-      this->CanSubdivideForLight(this->Nodes[i]))
-    {
-      this->Subdivide(i);
-      lightAtNodes.clear();
-    }
-  }
-  FaceClusterElement& e = this->Nodes[i];
-  if (e.IsLeaf() && !lightAtNodes.empty())
-  {
-    for (std::size_t q = 0; q < e.Rule.Size(); ++q)
-    {
-      for (int a = 0; a < ne; ++a)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          dE[a][c] += e.Rule.Dual[q * ne + a] * lightAtNodes[q][c];
-        }
-      }
-    }
-  }
-  std::fill(e.Next.begin(), e.Next.end(), RGB(0.0));
-  e.NextMin = std::numeric_limits<double>::infinity();
-  e.NextMax = 0.0;
-  if (e.IsLeaf())
-  {
-    const double self = 0.5 * (e.Data.SelfFormFactorLower() + e.Data.SelfFormFactorUpper());
-    for (int a = 0; a < ne; ++a)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        e.Irradiance[a][c] += dE[a][c];
-        e.LastIncrement[a][c] = dE[a][c];
-      }
-    }
-    // The reflected radiosity at the element's nodes, (1 - F_ii) rho n . dE
-    // with each node's own normal, fitted by the radiosity basis.
-    const SurfaceRule& rule = e.Rule;
-    for (std::size_t q = 0; q < rule.Size(); ++q)
-    {
-      RGB reflected(0.0);
-      for (int c = 0; c < 3; ++c)
-      {
-        Vec3 atNode(0.0);
-        for (int a = 0; a < ne; ++a)
-        {
-          atNode += rule.Phi[q * ne + a] * dE[a][c];
-        }
-        const double b = (1.0 - self) * e.Data.ReflectanceMean[c] * std::max(glm::dot(rule.Normals[q], atNode), 0.0);
-        reflected[c] = b;
-        for (int a = 0; a < nb; ++a)
-        {
-          e.Next[a][c] += e.RadiosityDual[q * nb + a] * b;
-        }
-      }
-      e.NextMin = std::min(e.NextMin, Mean(reflected));
-      e.NextMax = std::max(e.NextMax, Mean(reflected));
-    }
-    return;
-  }
-  const std::int32_t children[2] = { e.Child[0], e.Child[1] };
-  for (std::int32_t k : children)
-  {
-    this->TransportLight(k, dE);
-  }
-  // Pull: the children's radiosity fitted by the parent's basis.
-  FaceClusterElement& p = this->Nodes[i];
-  for (std::int32_t k : children)
-  {
-    const FaceClusterElement& child = this->Nodes[k];
-    for (int a = 0; a < nb; ++a)
-    {
-      for (int b = 0; b < nb; ++b)
-      {
-        p.Next[a] += child.PullB[a * nb + b] * child.Next[b];
-      }
-    }
-    p.NextMin = std::min(p.NextMin, child.NextMin);
-    p.NextMax = std::max(p.NextMax, child.NextMax);
-  }
-}
 
 std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(std::int32_t i, double* spread) const
 {
@@ -561,18 +335,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       {
         break;
       }
-      for (std::int32_t i : this->Top)
-      {
-        this->Nodes[i].Shooters.clear();
-        for (std::int32_t j : this->Top)
-        {
-          this->AddShooter(i, j);
-        }
-      }
-      for (std::int32_t i : this->Top)
-      {
-        this->TransportLight(i, {});
-      }
+      this->Transport();
       double residual = 0.0;
       for (FaceClusterElement& e : this->Nodes)
       {

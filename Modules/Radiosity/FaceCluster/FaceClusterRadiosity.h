@@ -66,9 +66,10 @@ struct FaceClusterSettings
   /// lamp's falloff, a hard shadow edge): the lights are exact at every
   /// node, and the basis can only follow them on elements small enough.
   int MaxLightBisections = 10;
-  /// MPI ranks: the solve is whole on every rank; only its time limit is
-  /// agreed over them (WorkShare.h), so that every rank stops at the same
-  /// iteration. None: one rank.
+  /// MPI ranks: every rank holds the whole hierarchy and computes its share
+  /// of each round's transfers and of the lights at the leaves; the shares
+  /// are exchanged (WorkShare.h) and the time limit agreed, so every rank
+  /// refines alike and stops at the same iteration. None: one rank.
   std::shared_ptr<WorkShare> Share;
 };
 
@@ -92,7 +93,6 @@ struct FaceClusterElement
   double UnshotMin = 0.0, UnshotMax = 0.0, NextMin = 0.0, NextMax = 0.0;
   std::vector<IrradianceVector> Irradiance; ///< N_e coefficients, leaves only
   std::vector<IrradianceVector> LastIncrement;
-  std::vector<std::int32_t> Shooters;
   /// Per channel, the bounds of the expansion's components at the nodes:
   /// the limiter of Expansion (leaves, after the solve).
   IrradianceVector Lowest{}, Highest{};
@@ -186,9 +186,36 @@ private:
   bool CanSubdivideForLight(const FaceClusterElement& e) const;
   void Subdivide(std::int32_t e);
   bool HasUnshot(const FaceClusterElement& e) const;
-  void TransportLight(std::int32_t i, const std::vector<IrradianceVector>& up);
-  void Gather(std::int32_t i, std::int32_t j, std::vector<IrradianceVector>& into);
-  void AddShooter(std::int32_t receiver, std::int32_t emitter);
+  /// The largest coefficient of e's unshot radiosity (any channel).
+  double UnshotMagnitude(const FaceClusterElement& e) const;
+
+  // One iteration's transport (FaceClusterTransport.cxx): refinement in
+  // rounds of pending transfers, then push-pull.
+  struct PendingTransfer
+  {
+    std::int32_t Receiver, Emitter;
+  };
+  void Transport();
+  /// A pending pair when the two elements face each other and the emitter
+  /// has unshot radiosity (ASSIGN-SHOOTER).
+  void AddShooter(std::int32_t receiver, std::int32_t emitter, std::vector<PendingTransfer>& pending) const;
+  /// Coupling and error of 3.3.2 for receiver i and emitter j.
+  Transfer TransferOf(std::int32_t i, std::int32_t j) const;
+  /// TransferOf for n pairs: in parallel, each rank its share (WorkShare).
+  std::vector<Transfer> ComputeTransfers(const PendingTransfer* pairs, std::size_t n);
+  /// Accepts the pair's transfer into Accepted, or subdivides an end and
+  /// appends the children's pairs to `next`.
+  void Resolve(const PendingTransfer& pair, const Transfer& t, std::vector<PendingTransfer>& next);
+  /// 3.3.3: a non-convex element's children's mutual pairs.
+  void CheckSelfTransfer(std::int32_t i, std::vector<PendingTransfer>& next);
+  /// First iteration: the lights at the leaves not checked yet (fitted
+  /// into Accepted, or the leaf subdivided); true when any was subdivided.
+  bool ResolveLights(std::vector<char>& checked);
+  /// 3.3.4: push from the parent (`up`, null at the top), store at the
+  /// leaves, pull the new unshot radiosity.
+  void PushPull(std::int32_t i, const IrradianceVector* up);
+  /// Per element, N_e coefficients: the irradiance accepted this iteration.
+  std::vector<IrradianceVector> Accepted;
   /// The lights' vector irradiance at element e's rule nodes (external
   /// emitters of the first iteration), and their scalar spread over the
   /// nodes times the element's area: a transfer error bound in W.
