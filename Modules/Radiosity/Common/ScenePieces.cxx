@@ -254,6 +254,7 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
   Scene& whole = out.Whole;
   std::unordered_map<std::string, int> objectOfName;
   std::unordered_map<long long, std::uint32_t> pointOfGlobalId;
+  std::vector<long long> globalIdOfPoint; // of whole's points, when welded by global ids
   // Position -> the lower ranks' points there, in order of appearance.
   struct AtPosition
   {
@@ -359,6 +360,10 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
       else
       {
         whole.Points.push_back(s.Points[p]);
+        if (out.ByGlobalIds)
+        {
+          globalIdOfPoint.push_back(parts[r].GlobalIds[p]);
+        }
       }
       pointMap[p] = id;
     }
@@ -406,6 +411,54 @@ AssembledScene AssembleScenePieces(const std::vector<std::vector<char>>& pieces)
     whole = std::move(sorted);
     out.Owner = std::move(owner);
     out.LocalIndex = std::move(local);
+    // Objects numbered in order of their first triangle, as one process
+    // numbers them (which rank holds an object first does not matter).
+    std::vector<int> renumbered(whole.ObjectNames.size(), -1);
+    std::vector<std::string> names;
+    for (int& o : whole.ObjectIds)
+    {
+      if (renumbered[static_cast<std::size_t>(o)] < 0)
+      {
+        renumbered[static_cast<std::size_t>(o)] = static_cast<int>(names.size());
+        names.push_back(whole.ObjectNames[static_cast<std::size_t>(o)]);
+      }
+      o = renumbered[static_cast<std::size_t>(o)];
+    }
+    for (std::size_t o = 0; o < renumbered.size(); ++o)
+    {
+      if (renumbered[o] < 0)
+      {
+        names.push_back(whole.ObjectNames[o]);
+      }
+    }
+    whole.ObjectNames = std::move(names);
+  }
+  if (out.ByGlobalIds)
+  {
+    // Points in the order of their global ids: where the ids are the
+    // original data set's point numbers (a partitioned reader's, or
+    // RedistributeDataSet's), the scene is the one process's point for point,
+    // and so is every answer that depends on the numbering (the face
+    // cluster hierarchy's tie-breaks).
+    std::vector<std::uint32_t> order(whole.Points.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+      [&](std::uint32_t a, std::uint32_t b) { return globalIdOfPoint[a] < globalIdOfPoint[b]; });
+    std::vector<std::uint32_t> newIndex(order.size());
+    std::vector<Vec3> points(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+      newIndex[order[k]] = static_cast<std::uint32_t>(k);
+      points[k] = whole.Points[order[k]];
+    }
+    whole.Points = std::move(points);
+    for (Triangle& t : whole.Triangles)
+    {
+      for (std::uint32_t& v : t.V)
+      {
+        v = newIndex[v];
+      }
+    }
   }
   return out;
 }
@@ -467,22 +520,34 @@ Scene SceneOfTriangles(
 {
   Scene piece;
   piece.ObjectNames = scene.ObjectNames;
-  std::unordered_map<std::uint32_t, std::uint32_t> used;
+  // The points used, in their order in `scene`.
+  const std::uint32_t unused = ~std::uint32_t(0);
+  std::vector<std::uint32_t> index(scene.Points.size(), unused);
+  for (std::size_t t : which)
+  {
+    for (std::uint32_t v : scene.Triangles[t].V)
+    {
+      index[v] = 0;
+    }
+  }
+  for (std::size_t p = 0; p < scene.Points.size(); ++p)
+  {
+    if (index[p] != unused)
+    {
+      index[p] = static_cast<std::uint32_t>(piece.Points.size());
+      piece.Points.push_back(scene.Points[p]);
+      if (pointSource)
+      {
+        pointSource->push_back(static_cast<std::uint32_t>(p));
+      }
+    }
+  }
   for (std::size_t t : which)
   {
     Triangle tri = scene.Triangles[t];
     for (auto& v : tri.V)
     {
-      const auto found = used.emplace(v, static_cast<std::uint32_t>(piece.Points.size()));
-      if (found.second)
-      {
-        piece.Points.push_back(scene.Points[v]);
-        if (pointSource)
-        {
-          pointSource->push_back(v);
-        }
-      }
-      v = found.first->second;
+      v = index[v];
     }
     piece.Triangles.push_back(tri);
     piece.Materials.push_back(scene.Materials[t]);

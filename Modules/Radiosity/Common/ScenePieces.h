@@ -42,10 +42,11 @@ struct AssembledScene
   std::vector<std::size_t> RankTriangles;
   /// Points that two or more ranks hold (one point each in Whole).
   std::size_t SharedPoints = 0;
-  /// True when the points were matched by their global ids, false when by
-  /// their coordinates.
+  /// True when the points were matched by their global ids (and are in
+  /// their order), false when by their coordinates.
   bool ByGlobalIds = false;
-  /// True when the triangles were ordered by their cells' global ids.
+  /// True when the triangles were ordered by their cells' global ids (and
+  /// the objects numbered in order of their first triangle).
   bool OrderedByGlobalCellIds = false;
 };
 
@@ -87,7 +88,7 @@ SolutionMesh SolutionOfTriangles(const SolutionMesh& whole, const std::vector<ch
 
 /**
  * The triangles `which` of `scene`, in that order, over only the points they
- * use (in order of first use): a piece as a partitioned reader gives it.
+ * use (in their order in `scene`): a piece as a partitioned reader gives it.
  * Materials, object ids and names kept; SourceCells the triangles' indices
  * in `scene`. `pointSource`, when given, receives each point's index in
  * `scene` (VTK's global point ids of the piece).
