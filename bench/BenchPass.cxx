@@ -11,18 +11,10 @@
 // Writes <output dir>/pass.md. Quick: the office by meshless and
 // progressive only. Run under a display (Xvfb: llvmpipe).
 #include "BenchArguments.h"
+#include "BenchRenderSupport.h"
 
-#include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkCellArray.h"
-#include "vtkCellData.h"
-#include "vtkDoubleArray.h"
-#include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRadiosityFilter.h"
 #include "vtkRadiosityPass.h"
 #include "vtkRenderWindow.h"
@@ -32,82 +24,13 @@
 #include "Radiosity/Scenes/OfficeScene.h"
 
 #include <algorithm>
-#include <chrono>
 #include <fstream>
 #include <functional>
 #include <iomanip>
-#include <sstream>
 #include <vector>
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double Since(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-/// One actor per object of `scene`: its triangles, DiffuseColor its
-/// reflectance, an `Emission` cell array where it emits.
-void AddActors(vtkRenderer* renderer, const radiosity::Scene& scene)
-{
-  const int objects = static_cast<int>(std::max<std::size_t>(1, scene.ObjectNames.size()));
-  for (int object = 0; object < objects; ++object)
-  {
-    std::vector<vtkIdType> remap(scene.Points.size(), -1);
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    vtkNew<vtkCellArray> triangles;
-    vtkNew<vtkDoubleArray> emission;
-    emission->SetName("Emission");
-    emission->SetNumberOfComponents(3);
-    bool emits = false;
-    radiosity::RGB colour(0.0);
-    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-    {
-      if (scene.ObjectIds[t] != object)
-      {
-        continue;
-      }
-      vtkIdType ids[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        const std::uint32_t v = scene.Triangles[t].V[k];
-        if (remap[v] < 0)
-        {
-          const radiosity::Vec3& p = scene.Points[v];
-          remap[v] = points->InsertNextPoint(p.x, p.y, p.z);
-        }
-        ids[k] = remap[v];
-      }
-      triangles->InsertNextCell(3, ids);
-      const radiosity::Material& m = scene.Materials[t];
-      emission->InsertNextTuple3(m.Emission.r, m.Emission.g, m.Emission.b);
-      emits = emits || radiosity::MaxComponent(m.Emission) > 0.0;
-      colour = m.Reflectance;
-    }
-    if (triangles->GetNumberOfCells() == 0)
-    {
-      continue;
-    }
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    data->SetPolys(triangles);
-    if (emits)
-    {
-      data->GetCellData()->AddArray(emission);
-    }
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(data);
-    mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(colour.r, colour.g, colour.b);
-    renderer->AddActor(actor);
-  }
-}
-
 struct Case
 {
   std::string Scene;
@@ -124,20 +47,6 @@ struct Row
   int Solves = 0;
 };
 
-std::string GlRenderer(vtkRenderWindow* window)
-{
-  std::istringstream in(window->ReportCapabilities());
-  std::string line;
-  while (std::getline(in, line))
-  {
-    if (line.find("OpenGL renderer string") != std::string::npos)
-    {
-      return line.substr(line.find(':') + 1);
-    }
-  }
-  return " (unknown)";
-}
-
 Row Run(const Case& c, std::string& renderer)
 {
   const radiosity::Scene scene = c.Make();
@@ -146,30 +55,9 @@ Row Run(const Case& c, std::string& renderer)
   window->SetMultiSamples(0);
   vtkNew<vtkRenderer> ren;
   window->AddRenderer(ren);
-  AddActors(ren, scene);
   vtkNew<vtkRadiosityPass> pass;
   pass->SetMethod(c.Method);
-  pass->SetLightScale(1.0); // vtkLight Intensity in W/sr
-  for (const radiosity::Light& l : scene.Lighting.Lights)
-  {
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPositional(true);
-    light->SetPosition(l.Position.x, l.Position.y, l.Position.z);
-    const radiosity::Vec3 to = l.Position + l.Direction;
-    light->SetFocalPoint(to.x, to.y, to.z);
-    light->SetConeAngle(l.OuterConeAngle * 180.0 / radiosity::Pi);
-    light->SetIntensity(l.Intensity.r);
-    ren->AddLight(light);
-  }
-  if (scene.Lighting.SkyLight.Enabled())
-  {
-    const radiosity::Sky& sky = scene.Lighting.SkyLight;
-    pass->SetSkyModel(vtkRadiosityFilter::SkyCieOvercast);
-    pass->SetSkyRadiance(sky.Radiance.r, sky.Radiance.g, sky.Radiance.b);
-    pass->SetSkyUp(sky.Up.x, sky.Up.y, sky.Up.z);
-  }
-  ren->SetPass(pass);
+  bench::SetUpPass(ren, pass, scene);
   vtkCamera* camera = ren->GetActiveCamera();
   camera->SetPosition(c.Position);
   camera->SetFocalPoint(c.Focal);
@@ -181,20 +69,14 @@ Row Run(const Case& c, std::string& renderer)
   row.Scene = c.Scene;
   row.Method = vtkRadiosityFilter::GetMethodName(c.Method);
   row.Triangles = scene.Triangles.size();
-  const Clock::time_point start = Clock::now();
-  window->Render();
-  window->WaitForCompletion();
-  row.FirstImage = Since(start);
-  renderer = GlRenderer(window);
+  row.FirstImage = bench::TimedRender(window);
+  renderer = bench::GlRenderer(window);
   std::vector<double> redraws;
   for (int i = 0; i < 30; ++i)
   {
     camera->Azimuth(1.0);
     ren->ResetCameraClippingRange();
-    const Clock::time_point t = Clock::now();
-    window->Render();
-    window->WaitForCompletion();
-    redraws.push_back(Since(t));
+    redraws.push_back(bench::TimedRender(window));
   }
   std::sort(redraws.begin(), redraws.end());
   row.MedianRedraw = redraws[redraws.size() / 2];
