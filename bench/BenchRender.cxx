@@ -24,6 +24,7 @@
 // started.
 //
 //   bench_render <output dir> [--quick] [--bunny index.js] [--frames N] [--png dir]
+//                [--scene cornell|office|bunny]   (--scene: that scene alone)
 //
 // Writes <output dir>/render.md. 60 frames a size, 30 on the bunny room
 // (--frames: N everywhere). Quick (CI): the Cornell box only, 3 frames a
@@ -408,7 +409,7 @@ int main(int argc, char* argv[])
   }
   int frames = 0; // each scene's own
 
-  std::string pngDir;
+  std::string pngDir, only;
   std::string command = "bench_render";
   for (int i = 1; i < argc; ++i)
   {
@@ -421,6 +422,10 @@ int main(int argc, char* argv[])
     else if (a == "--png" && i + 1 < argc)
     {
       pngDir = argv[i + 1];
+    }
+    else if (a == "--scene" && i + 1 < argc)
+    {
+      only = argv[i + 1];
     }
   }
   std::string why;
@@ -452,6 +457,10 @@ int main(int argc, char* argv[])
   std::string gl;
   for (const SceneCase& sc : scenes)
   {
+    if (!only.empty() && sc.Name.compare(0, only.size(), only) != 0)
+    {
+      continue;
+    }
     const radiosity::Scene scene = sc.Make();
     Solutions solutions(scene);
     for (const Display& d : Displays)
