@@ -327,7 +327,10 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       this->Top.push_back(this->NewElement(root, -1));
     }
 
-    std::vector<double> residuals;
+    // Per iteration: the infinity norm of the unshot radiosity relative to
+    // the brightest emission (the stop), and the power of the next shot
+    // (the decay rate of the series).
+    std::vector<double> residuals, powers;
     for (;;)
     {
       if (ReachedLimitOnAnyRank(ShareOrAlone(this->Settings.Share), this->Iteration, this->Settings.MaxIterations, clock.Seconds(),
@@ -353,6 +356,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       ++this->Iteration;
       const double relative = residual / brightest;
       residuals.push_back(relative);
+      powers.push_back(this->NextPower);
       ConvergenceRow row;
       row.Iteration = this->Iteration;
       row.TimeSeconds = clock.Seconds();
@@ -370,12 +374,20 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
         break;
       }
       // A steady geometric decay: the tail of the series is added at once.
-      const std::size_t k = residuals.size();
-      if (k >= 3 && residuals[k - 2] > 0.0 && residuals[k - 3] > 0.0)
+      // The rate is the shot power's (energy is conserved: in a closed
+      // scene of uniform reflectance it is rho from the first bounce on;
+      // the infinity norm's ratio drifts with where the light is), and it
+      // must be known well enough for the tail r / (1 - r): a change of
+      // the rate by d moves the tail by d / (1 - r)^2, so the stop waits
+      // until d <= 1e-3 (1 - r), a 0.1% tail. With the norms' ratio steady
+      // to 1% (r 0.987 where the decay is 0.99), a closed sphere of
+      // reflectance 0.99 came out 18% low, 0.999 74% low.
+      const std::size_t k = powers.size();
+      if (k >= 3 && powers[k - 2] > 0.0 && powers[k - 3] > 0.0)
       {
-        const double r = residuals[k - 1] / residuals[k - 2];
-        const double previous = residuals[k - 2] / residuals[k - 3];
-        if (r < 1.0 && std::abs(r - previous) < 0.01 * r)
+        const double r = powers[k - 1] / powers[k - 2];
+        const double previous = powers[k - 2] / powers[k - 3];
+        if (r < 1.0 && std::abs(r - previous) <= 1e-3 * (1.0 - r))
         {
           stats.Stop = StopReason::Converged;
           break;
@@ -383,10 +395,10 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       }
     }
     // Aitken: the increments still to come, r / (1 - r) times the last one.
-    const std::size_t k = residuals.size();
-    if (stats.Stop != StopReason::Aborted && k >= 2 && residuals[k - 2] > 0.0)
+    const std::size_t k = powers.size();
+    if (stats.Stop != StopReason::Aborted && k >= 2 && powers[k - 2] > 0.0)
     {
-      const double r = residuals[k - 1] / residuals[k - 2];
+      const double r = powers[k - 1] / powers[k - 2];
       if (r > 0.0 && r < 1.0)
       {
         const double tail = r / (1.0 - r);

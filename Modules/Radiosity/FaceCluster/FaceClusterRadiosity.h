@@ -216,6 +216,9 @@ private:
   void PushPull(std::int32_t i, const IrradianceVector* up);
   /// Per element, N_e coefficients: the irradiance accepted this iteration.
   std::vector<IrradianceVector> Accepted;
+  /// The power (W, mean of the channels) that the leaves' new unshot
+  /// radiosity sends out of them: the next shot's, for the decay rate.
+  double NextPower = 0.0;
   /// The lights' vector irradiance at element e's rule nodes (external
   /// emitters of the first iteration), and their scalar spread over the
   /// nodes times the element's area: a transfer error bound in W.

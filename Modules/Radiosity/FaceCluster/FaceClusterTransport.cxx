@@ -181,17 +181,29 @@ void FaceClusterRadiosity::Resolve(
 void FaceClusterRadiosity::CheckSelfTransfer(std::int32_t i, std::vector<PendingTransfer>& next)
 {
   // 3.3.3: the self-transfer of a non-convex element, refined into its
-  // children's mutual transfers when its error bound is too large.
+  // children's mutual transfers when its error bound is too large. An
+  // element that has children exchanges its light between them whatever
+  // the bound: only a leaf keeps its self-transfer (PushPull's F_ii), and
+  // a subdivided element's own light between its parts went nowhere (the
+  // inside of a sphere, one object and so one root, lost 0.2% of the light
+  // per bounce: 18% low at reflectance 0.99).
   const FaceClusterElement& e = this->Nodes[i];
   if (e.Data.Convex || e.Data.IsLeaf() || !this->HasUnshot(e))
   {
     return;
   }
-  const double bMax = this->Iteration == 0 ? Mean(RGB(e.Data.EmissionMax)) : this->UnshotMagnitude(e) * BasisBound;
-  if (SelfTransferError(e.Data, bMax) > this->Epsilon)
+  if (e.IsLeaf())
   {
+    const double bMax = this->Iteration == 0 ? Mean(RGB(e.Data.EmissionMax)) : this->UnshotMagnitude(e) * BasisBound;
+    if (SelfTransferError(e.Data, bMax) <= this->Epsilon)
+    {
+      return;
+    }
     this->Subdivide(i);
-    const std::int32_t k0 = this->Nodes[i].Child[0], k1 = this->Nodes[i].Child[1];
+  }
+  const std::int32_t k0 = this->Nodes[i].Child[0], k1 = this->Nodes[i].Child[1];
+  if (k0 >= 0)
+  {
     this->AddShooter(k0, k1, next);
     this->AddShooter(k1, k0, next);
   }
@@ -298,13 +310,25 @@ void FaceClusterRadiosity::Transport()
     }
   }
   std::size_t visited = 0; // elements whose self-transfer was checked
+  std::vector<char> leafWhenVisited; // and were leaves then
   std::vector<char> lightsChecked;
   const bool lights = this->Lights && this->Iteration == 0;
   for (;;)
   {
+    // An element subdivided since its visit exchanges light between its
+    // new children too (CheckSelfTransfer).
+    for (std::size_t e = 0; e < visited; ++e)
+    {
+      if (leafWhenVisited[e] && !this->Nodes[e].IsLeaf())
+      {
+        leafWhenVisited[e] = 0;
+        this->CheckSelfTransfer(static_cast<std::int32_t>(e), pending);
+      }
+    }
     for (; visited < this->Nodes.size(); ++visited)
     {
       this->CheckSelfTransfer(static_cast<std::int32_t>(visited), pending);
+      leafWhenVisited.push_back(this->Nodes[visited].IsLeaf() ? 1 : 0);
     }
     this->Accepted.resize(this->Nodes.size() * ne, IrradianceVector{});
     if (!pending.empty())
@@ -332,6 +356,7 @@ void FaceClusterRadiosity::Transport()
     }
   }
   this->Accepted.resize(this->Nodes.size() * ne, IrradianceVector{});
+  this->NextPower = 0.0;
   for (std::int32_t i : this->Top)
   {
     this->PushPull(i, nullptr);
@@ -374,18 +399,22 @@ void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up)
   e.NextMax = 0.0;
   if (e.IsLeaf())
   {
+    // A non-convex leaf cluster lights itself: of the light it reflects, the
+    // fraction F_ii lands on it again (3.3.3's estimate, the mean of the
+    // bounds) and is reflected in turn, B = rho (n . dE + F_ii B), so
+    // B = rho n . dE / (1 - rho F_ii), and that self-irradiance F_ii B is
+    // part of what it receives. The paper's (1 - F_ii) rho n . dE drops it
+    // instead, while the transfers from the cluster already send only the
+    // part that leaves it (exact visibility over its nodes): a loss of
+    // rho F_ii per bounce, amplified by 1 / (1 - rho) in a closed scene
+    // (the inside of a sphere of 1280 facets: 0.4% low at rho 0.8, 8% at
+    // 0.99 from this alone).
     const double self = 0.5 * (e.Data.SelfFormFactorLower() + e.Data.SelfFormFactorUpper());
-    for (int a = 0; a < ne; ++a)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        e.Irradiance[a][c] += dE[a][c];
-        e.LastIncrement[a][c] = dE[a][c];
-      }
-    }
-    // The reflected radiosity at the element's nodes, (1 - F_ii) rho n . dE
-    // with each node's own normal, fitted by the radiosity basis.
+    // The reflected radiosity at the element's nodes with each node's own
+    // normal, fitted by the radiosity basis; the self-irradiance along the
+    // nodes' normals, fitted by the irradiance basis.
     const SurfaceRule& rule = e.Rule;
+    std::vector<IrradianceVector> selfLight(ne, IrradianceVector{});
     for (std::size_t q = 0; q < rule.Size(); ++q)
     {
       RGB reflected(0.0);
@@ -396,16 +425,32 @@ void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up)
         {
           atNode += rule.Phi[q * ne + a] * dE[a][c];
         }
-        const double b =
-          (1.0 - self) * e.Data.ReflectanceMean[c] * std::max(glm::dot(rule.Normals[q], atNode), 0.0);
+        const double rho = e.Data.ReflectanceMean[c];
+        const double b = rho * std::max(glm::dot(rule.Normals[q], atNode), 0.0) / (1.0 - rho * self);
         reflected[c] = b;
         for (int a = 0; a < nb; ++a)
         {
           e.Next[a][c] += e.RadiosityDual[q * nb + a] * b;
         }
+        if (self > 0.0)
+        {
+          for (int a = 0; a < ne; ++a)
+          {
+            selfLight[a][c] += rule.Dual[q * ne + a] * (self * b) * rule.Normals[q];
+          }
+        }
       }
       e.NextMin = std::min(e.NextMin, Mean(reflected));
       e.NextMax = std::max(e.NextMax, Mean(reflected));
+      this->NextPower += (1.0 - self) * rule.Weights[q] * Mean(reflected); // the part that leaves it
+    }
+    for (int a = 0; a < ne; ++a)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        e.Irradiance[a][c] += dE[a][c] + selfLight[a][c];
+        e.LastIncrement[a][c] = dE[a][c] + selfLight[a][c];
+      }
     }
     return;
   }
