@@ -218,12 +218,15 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
       atNode[p * nb] = v * exactVector(x, normal);
     }
   });
-  // An emitter of a few triangles hidden in part from any of the
+  // A light source of a few triangles (an emitting cluster: the sharp
+  // shadows are the direct light's) hidden in part from any of the
   // receiver's points: its visible fraction at every point from the finer
   // sets (a point whose nine nodes all happened to be visible, or all
-  // hidden, is not spared).
+  // hidden, is not spared). For every partly hidden emitter it doubled the
+  // bunny room's solve (100k triangles: 30.6 s against 17.8 s).
   constexpr std::uint32_t FineTriangles = 4;
-  if (exactConstant && (emitter.Corners || ej.Count <= FineTriangles) &&
+  const bool source = std::max({ ej.EmissionMax.x, ej.EmissionMax.y, ej.EmissionMax.z }) > 0.0f;
+  if (exactConstant && source && (emitter.Corners || ej.Count <= FineTriangles) &&
     std::any_of(shadowed.begin(), shadowed.end(), [](char c) { return c != 0; }))
   {
     std::vector<Vec3> corners;
