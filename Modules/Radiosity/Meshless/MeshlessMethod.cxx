@@ -2,6 +2,8 @@
 
 #include "Radiosity/Common/ScenePieces.h"
 
+#include <tbb/parallel_for.h>
+
 namespace radiosity
 {
 MeshlessMethod::MeshlessMethod(std::shared_ptr<const Scene> scene, const MeshlessOptions& options)
@@ -63,9 +65,16 @@ SolverProduct MeshlessMethod::Product(const ProgressCallback&) const
     {
       coefficient.SetRGB(i, total[i]);
       directCoefficient.SetRGB(i, direct[i]);
-      irradiance.SetRGB(i, this->Solver.Irradiance().Evaluate(p.Position, p.Normal, p.Group));
     }
     gathered.Values[i] = this->Solver.WasGatheredTo(i) ? 1.0 : 0.0;
+  }
+  if (valued)
+  {
+    // The field at its own points, in parallel.
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+      const MeshlessPoint& p = points[i];
+      irradiance.SetRGB(i, this->Solver.Irradiance().Evaluate(p.Position, p.Normal, p.Group));
+    });
   }
   product.PointArrays = { std::move(level), std::move(radius), std::move(normal), std::move(group),
     std::move(coefficient), std::move(directCoefficient), std::move(irradiance), std::move(gathered) };

@@ -304,6 +304,18 @@ PointHierarchy::~PointHierarchy() = default;
 void PointHierarchy::Supporting(
   int level, std::uint32_t group, const Vec3& x, std::vector<std::uint32_t>& out) const
 {
+  this->Search(level, group, x, 0.0, true, out);
+}
+
+void PointHierarchy::Reaching(
+  int level, std::uint32_t group, const Vec3& c, double reach, std::vector<std::uint32_t>& out) const
+{
+  this->Search(level, group, c, reach, false, out);
+}
+
+void PointHierarchy::Search(int level, std::uint32_t group, const Vec3& c, double reach, bool sorted,
+  std::vector<std::uint32_t>& out) const
+{
   if (level < 0 || level >= this->NumberOfLevels())
   {
     return;
@@ -315,13 +327,17 @@ void PointHierarchy::Supporting(
   }
   thread_local std::vector<std::pair<std::size_t, double>> matches;
   matches.clear();
-  const double q[3] = { x.x, x.y, x.z };
-  index.KdTree->radiusSearch(q, index.MaxRadius * index.MaxRadius, matches, nanoflann::SearchParams());
+  const double q[3] = { c.x, c.y, c.z };
+  const double far = index.MaxRadius + reach;
+  nanoflann::SearchParams params;
+  params.sorted = sorted;
+  index.KdTree->radiusSearch(q, far * far, matches, params);
   for (const auto& m : matches)
   {
     const std::size_t j = index.Points.Global(m.first);
     const MeshlessPoint& p = this->All[j];
-    if (p.Group == group && m.second < p.Radius * p.Radius)
+    const double r = p.Radius + reach;
+    if (p.Group == group && m.second < r * r)
     {
       out.push_back(static_cast<std::uint32_t>(j));
     }

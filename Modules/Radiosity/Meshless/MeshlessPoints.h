@@ -79,12 +79,21 @@ public:
   /// Indices of the points of `level` and `group` whose support contains x
   /// (|x - x_j| < r_j), appended to `out`. Thread-safe.
   void Supporting(int level, std::uint32_t group, const Vec3& x, std::vector<std::uint32_t>& out) const;
+  /// Indices of the points of `level` and `group` whose support reaches
+  /// within `reach` of c (|c - x_j| < r_j + reach): every point that
+  /// Supporting finds for some x within `reach` of c, from one search (the
+  /// samples of an output element). Unordered. Thread-safe.
+  void Reaching(int level, std::uint32_t group, const Vec3& c, double reach, std::vector<std::uint32_t>& out) const;
 
   /// Proposals rejected by the inside-geometry ray (statistics).
   std::size_t RejectedInside() const { return this->Inside; }
 
 private:
   struct Index;
+  /// Supporting (reach 0, sorted by distance, as the solve has always
+  /// summed) and Reaching (unsorted).
+  void Search(int level, std::uint32_t group, const Vec3& c, double reach, bool sorted,
+    std::vector<std::uint32_t>& out) const;
   std::vector<MeshlessPoint> All;
   std::vector<std::size_t> LevelStart; ///< NumberOfLevels() + 1 entries
   std::vector<std::unique_ptr<Index>> Indices; ///< one per level

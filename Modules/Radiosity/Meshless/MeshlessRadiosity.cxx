@@ -4,6 +4,7 @@
 #include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/MemoryBudget.h"
+#include "Radiosity/Common/Morton.h"
 #include "Radiosity/Common/MeshProbeTracker.h"
 #include "Radiosity/Common/SceneAnalysis.h"
 #include "Radiosity/Common/Stopwatch.h"
@@ -397,8 +398,49 @@ RGB MeshlessRadiosity::ExactLightsAt(const Vec3& x, const Vec3& inner, const Vec
   return this->Solution->Evaluate(x, n, group);
 }
 
-SolutionMesh MeshlessRadiosity::SampledSurface(const std::function<RGB(const Vec3& x, const Vec3& inner,
-    const Vec3& n, std::uint32_t triangle)>& value, const std::vector<char>* keep) const
+namespace
+{
+/// The leaves of `mesh` (those `evaluated` marks, all when empty) in tiles
+/// of at most `size` neighbours of one object: sorted by object, then
+/// along a Morton curve of their centroids. Returns the tiles' starts into
+/// `order` (one past the last at the end).
+std::vector<std::size_t> Tiles(const ElementMesh& mesh, const Scene& scene,
+  const std::vector<std::uint32_t>& leaves, const std::vector<char>& evaluated, std::size_t size,
+  std::vector<std::uint32_t>& order)
+{
+  Vec3 low, high;
+  scene.BoundingBox(low, high);
+  const Vec3 extent = glm::max(high - low, Vec3(1e-300));
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+  keyed.reserve(leaves.size());
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+  {
+    if (evaluated.empty() || evaluated[i])
+    {
+      keyed.emplace_back(Morton((mesh[leaves[i]].Centroid - low) / extent), leaves[i]);
+    }
+  }
+  const auto object = [&](std::uint32_t leaf) { return scene.ObjectIds[mesh[leaf].Source]; };
+  std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
+    const auto oa = object(a.second), ob = object(b.second);
+    return oa != ob ? oa < ob : a.first < b.first;
+  });
+  order.clear();
+  std::vector<std::size_t> starts;
+  for (std::size_t i = 0; i < keyed.size(); ++i)
+  {
+    if (starts.empty() || i - starts.back() == size || object(keyed[i].second) != object(order.back()))
+    {
+      starts.push_back(i);
+    }
+    order.push_back(keyed[i].second);
+  }
+  starts.push_back(order.size());
+  return starts;
+}
+}
+
+SolutionMesh MeshlessRadiosity::SampledSurface(const TileSampler& value, const std::vector<char>* keep) const
 {
   const Scene& scene = this->SourceScene;
   const double diagonal = scene.Diagonal();
@@ -432,37 +474,64 @@ SolutionMesh MeshlessRadiosity::SampledSurface(const std::function<RGB(const Vec
       evaluated[i] = (*keep)[el.Source] || marked[el.V[0]] || marked[el.V[1]] || marked[el.V[2]];
     }
   }
-  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
-    Element& el = mesh[leaves[i]];
-    if (keep && !evaluated[i])
+  std::vector<std::uint32_t> order;
+  const std::vector<std::size_t> tiles = Tiles(mesh, scene, leaves, evaluated, 32, order);
+  tbb::parallel_for(std::size_t(0), tiles.size() - 1, [&](std::size_t t) {
+    const std::size_t first = tiles[t], count = tiles[t + 1] - first;
+    thread_local std::vector<Vec3> x, n;
+    thread_local std::vector<RGB> h;
+    x.resize(4 * count);
+    n.resize(count);
+    h.resize(4 * count);
+    for (std::size_t e = 0; e < count; ++e)
     {
-      return;
+      const std::uint32_t leaf = order[first + e];
+      const Element& el = mesh[leaf];
+      // Corners just inside the element: a corner on a neighbour's plane
+      // would take that neighbour's basis functions at a grazing normal.
+      for (int k = 0; k < 3; ++k)
+      {
+        x[4 * e + k] = mesh.Corner(leaf, k) + 1e-7 * (el.Centroid - mesh.Corner(leaf, k));
+      }
+      x[4 * e + 3] = el.Centroid;
+      n[e] = el.Normal;
     }
-    // Corners just inside the element: a corner on a neighbour's plane would
-    // take that neighbour's basis functions at a grazing normal.
-    for (int k = 0; k < 3; ++k)
+    value(x.data(), n.data(), order.data() + first, count, mesh, h.data());
+    for (std::size_t e = 0; e < count; ++e)
     {
-      const Vec3 x = mesh.Corner(leaves[i], k) + 1e-7 * (el.Centroid - mesh.Corner(leaves[i], k));
-      el.Irradiance.Corner[k] = value(x, el.Centroid, el.Normal, el.Source);
+      Element& el = mesh[order[first + e]];
+      el.Irradiance.Corner = { h[4 * e], h[4 * e + 1], h[4 * e + 2] };
+      el.Irradiance.Centre = h[4 * e + 3];
     }
-    el.Irradiance.Centre = value(el.Centroid, el.Centroid, el.Normal, el.Source);
   });
   return ExtractSolution(mesh);
 }
 
 SolutionMesh MeshlessRadiosity::Surface(const std::vector<char>* keep) const
 {
+  // A tile's samples from one search of the point index per level
+  // (ShepardField::EvaluateTile), not one per sample.
   return this->SampledSurface(
-    [this](const Vec3& x, const Vec3&, const Vec3& n, std::uint32_t t) {
-      return this->Solution->Evaluate(x, n, static_cast<std::uint32_t>(this->SourceScene.ObjectIds[t]));
+    [this](const Vec3* x, const Vec3* n, const std::uint32_t* leaves, std::size_t count,
+      const ElementMesh& mesh, RGB* h) {
+      const auto group = static_cast<std::uint32_t>(this->SourceScene.ObjectIds[mesh[leaves[0]].Source]);
+      this->Solution->EvaluateTile(x, n, count, 4, group, h);
     },
     keep);
 }
 
 SolutionMesh MeshlessRadiosity::GatherSurface() const
 {
-  return this->SampledSurface([this](const Vec3& x, const Vec3& inner, const Vec3& n, std::uint32_t t) {
-    return this->ExactLightsAt(x, inner, n, t);
+  return this->SampledSurface([this](const Vec3* x, const Vec3* n, const std::uint32_t* leaves,
+                                std::size_t count, const ElementMesh& mesh, RGB* h) {
+    for (std::size_t e = 0; e < count; ++e)
+    {
+      const Element& el = mesh[leaves[e]];
+      for (std::size_t k = 0; k < 4; ++k)
+      {
+        h[4 * e + k] = this->ExactLightsAt(x[4 * e + k], el.Centroid, n[e], el.Source);
+      }
+    }
   });
 }
 

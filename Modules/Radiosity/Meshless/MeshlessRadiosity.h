@@ -45,6 +45,7 @@
 namespace radiosity
 {
 class Visibility;
+class ElementMesh;
 
 struct MeshlessOptions
 {
@@ -154,9 +155,14 @@ private:
   /// The lights' and the sky's part of Direct (null without lights or sky):
   /// IrradianceAt replaces it by their exact value at the point.
   std::unique_ptr<ShepardField> LightFit;
-  /// The surface split to SurfaceElementSize, every sample from `value`.
-  SolutionMesh SampledSurface(const std::function<RGB(const Vec3& x, const Vec3& inner, const Vec3& n,
-      std::uint32_t triangle)>& value, const std::vector<char>* keep = nullptr) const;
+  /// A tile of `count` neighbouring elements of one object (`leaves`, in
+  /// the element mesh): their samples x (four each: the corners, just
+  /// inside, and the centre) with the element's normal n, into h.
+  using TileSampler = std::function<void(const Vec3* x, const Vec3* n, const std::uint32_t* leaves,
+    std::size_t count, const ElementMesh& mesh, RGB* h)>;
+  /// The surface split to SurfaceElementSize, every element's samples from
+  /// `value`, tile by tile in parallel.
+  SolutionMesh SampledSurface(const TileSampler& value, const std::vector<char>* keep = nullptr) const;
   std::vector<std::uint32_t> Emitters;
   std::vector<unsigned char> Touched; ///< per point: gathered to at least once
   double Scale = 0.0;                 ///< largest coarse direct irradiance (one channel)

@@ -1,5 +1,7 @@
 #include "Radiosity/Meshless/ShepardField.h"
 
+#include <algorithm>
+
 namespace radiosity
 {
 ShepardField::ShepardField(const PointHierarchy& points)
@@ -48,6 +50,89 @@ RGB ShepardField::Evaluate(const Vec3& x, const Vec3& n, std::uint32_t group, in
     }
   }
   return f;
+}
+
+namespace
+{
+/// The centre of `count` points and a distance beyond which none lies.
+std::pair<Vec3, double> Enclosing(const Vec3* x, std::size_t count)
+{
+  Vec3 centre(0.0);
+  for (std::size_t s = 0; s < count; ++s)
+  {
+    centre += x[s];
+  }
+  centre /= static_cast<double>(std::max<std::size_t>(count, 1));
+  double reach = 0.0;
+  for (std::size_t s = 0; s < count; ++s)
+  {
+    reach = std::max(reach, glm::length(x[s] - centre));
+  }
+  // A little more, so that rounding cannot leave out a function whose
+  // support ends at a point (its weight there is zero anyway).
+  return { centre, reach * (1.0 + 1e-9) + 1e-12 * glm::length(centre) };
+}
+}
+
+void ShepardField::EvaluateTile(const Vec3* x, const Vec3* n, std::size_t sets, std::size_t perSet,
+  std::uint32_t group, RGB* out) const
+{
+  const std::size_t count = sets * perSet;
+  std::fill(out, out + count, RGB(0.0));
+  const auto [centre, reach] = Enclosing(x, count);
+  thread_local std::vector<std::pair<Vec3, double>> around; // per set
+  around.resize(sets);
+  for (std::size_t set = 0; set < sets; ++set)
+  {
+    around[set] = Enclosing(x + set * perSet, perSet);
+  }
+  const std::vector<MeshlessPoint>& points = this->Hierarchy->Points();
+  thread_local std::vector<std::uint32_t> tile, near;
+  thread_local std::vector<double> weights, total;
+  for (int level = 0; level < this->Hierarchy->NumberOfLevels(); ++level)
+  {
+    tile.clear();
+    this->Hierarchy->Reaching(level, group, centre, reach, tile);
+    for (std::size_t set = 0; set < sets; ++set)
+    {
+      // The tile's functions that reach this set (as Reaching would find).
+      near.clear();
+      const auto& [c, r] = around[set];
+      for (std::uint32_t j : tile)
+      {
+        const MeshlessPoint& p = points[j];
+        const Vec3 d = p.Position - c;
+        if (glm::dot(d, d) < (p.Radius + r) * (p.Radius + r))
+        {
+          near.push_back(j);
+        }
+      }
+      // Eqs. 12 and 8 at each point of the set, within the level.
+      const Vec3* xs = x + set * perSet;
+      RGB* values = out + set * perSet;
+      weights.assign(near.size() * perSet, 0.0);
+      total.assign(perSet, 0.0);
+      for (std::size_t k = 0; k < near.size(); ++k)
+      {
+        for (std::size_t s = 0; s < perSet; ++s)
+        {
+          const double w = ShepardWeight(points[near[k]], xs[s], n[set]);
+          weights[k * perSet + s] = w > 0.0 ? w : 0.0;
+          total[s] += weights[k * perSet + s];
+        }
+      }
+      for (std::size_t k = 0; k < near.size(); ++k)
+      {
+        for (std::size_t s = 0; s < perSet; ++s)
+        {
+          if (weights[k * perSet + s] > 0.0)
+          {
+            values[s] += weights[k * perSet + s] / total[s] * this->Alpha[near[k]];
+          }
+        }
+      }
+    }
+  }
 }
 
 void ShepardField::Fit(const std::vector<RGB>& values)

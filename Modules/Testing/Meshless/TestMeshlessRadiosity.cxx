@@ -109,3 +109,43 @@ TEST(MeshlessRadiosity, CornellBoxAgainstThePathTracer)
   EXPECT_LT(e.Rms, 0.06);
   EXPECT_LT(e.Max, 0.26);
 }
+
+TEST(MeshlessRadiosity, SurfaceOfKeptTrianglesIsTheWholeSurfacesThere)
+{
+  // An MPI rank evaluates the output of its own triangles only
+  // (Surface(&keep)): there it is the whole surface's, tile for tile
+  // (SampledSurface tiles the elements to evaluate, not all of them);
+  // elsewhere it is left zero.
+  const Scene box = MakeCornellBox();
+  MeshlessOptions options;
+  options.Placement.Levels = 3;
+  MeshlessRadiosity solver(box, options);
+  solver.Solve();
+  std::vector<char> keep(box.Triangles.size(), 0);
+  for (std::size_t t = 0; t < keep.size(); t += 3)
+  {
+    keep[t] = 1;
+  }
+  const SolutionMesh whole = solver.Surface(), part = solver.Surface(&keep);
+  ASSERT_EQ(whole.Triangles.size(), part.Triangles.size());
+  std::size_t kept = 0, zero = 0;
+  for (std::size_t e = 0; e < whole.Triangles.size(); ++e)
+  {
+    const double peak = std::max(1.0, MaxComponent(whole.Samples[e].Mean()));
+    if (keep[whole.SourceTriangle[e]])
+    {
+      ++kept;
+      for (int k = 0; k < 3; ++k)
+      {
+        EXPECT_LT(MaxComponent(glm::abs(part.Samples[e].Corner[k] - whole.Samples[e].Corner[k])), 1e-12 * peak);
+      }
+      EXPECT_LT(MaxComponent(glm::abs(part.Samples[e].Centre - whole.Samples[e].Centre)), 1e-12 * peak);
+    }
+    else if (MaxComponent(part.Samples[e].Mean()) == 0.0)
+    {
+      ++zero;
+    }
+  }
+  EXPECT_GT(kept, 0u);
+  EXPECT_GT(zero, 0u); // elements of neither a kept triangle nor its neighbours
+}
