@@ -335,7 +335,12 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       // The hierarchy shared by every user of this scene (FaceClusterHierarchy::
       // Shared): one that vtkFaceClusterHierarchyFilter built upstream for
       // the same geometry, materials and options is reused, not rebuilt.
-      return std::make_shared<radiosity::FaceClusterMethod>(scene, settings);
+      // Built (or found) here, where it is timed: FaceClusterMethod would
+      // build it before FaceClusterRadiosity's own clock starts.
+      const auto start = std::chrono::steady_clock::now();
+      auto hierarchy = radiosity::FaceClusterHierarchy::Shared(scene, settings.Clustering);
+      this->HierarchySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return std::make_shared<radiosity::FaceClusterMethod>(scene, settings, std::move(hierarchy));
     }
     case Auto:
     case Progressive:
@@ -485,6 +490,8 @@ int vtkRadiosityFilter::ExecuteRequest(
   this->Solution.reset();
   this->SolutionPending = false;
   this->Statistics = radiosity::SolverStatistics();
+  this->PreprocessSeconds = this->SolveWallSeconds = this->OutputSeconds = this->ProductSeconds = 0.0;
+  this->HierarchySeconds = 0.0;
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* productOutput = vtkPolyData::GetData(outputVector, 1);
@@ -557,10 +564,13 @@ int vtkRadiosityFilter::ExecuteRequest(
   this->Solver = this->MakeSolver(sharedScene);
   this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   last = Clock::now();
+  const auto solving = last;
   scale = 0.9;
   collective = distributed;
   this->Statistics = this->Solver->Solve(progress);
   collective = false;
+  const auto solved = Clock::now();
+  this->SolveWallSeconds = std::chrono::duration<double>(solved - solving).count();
   if (distributed)
   {
     // Each rank's share of the split loops, for the report (one all-gather).
@@ -578,11 +588,13 @@ int vtkRadiosityFilter::ExecuteRequest(
       this->RankSolveBytesReceived.push_back(static_cast<vtkIdType>(received));
     }
   }
-  if (!distributed)
+  // Without SurfaceOutput the surface is evaluated when first asked for.
+  const bool surface = distributed || this->SurfaceOutput;
+  if (!distributed && surface)
   {
     this->Solution = std::make_unique<radiosity::SolutionMesh>(this->Solver->Surface());
   }
-  this->SolutionPending = distributed;
+  this->SolutionPending = distributed || !surface;
   if (this->Statistics.LinksWithBlockersCut > 0)
   {
     this->Warn(std::to_string(this->Statistics.LinksWithBlockersCut) +
@@ -600,8 +612,8 @@ int vtkRadiosityFilter::ExecuteRequest(
   std::vector<std::uint32_t> pointSource;
   const radiosity::SolutionMesh own =
     distributed ? this->Solver->SurfaceOf(mine, &pointSource) : radiosity::SolutionMesh();
-  output->ShallowCopy(
-    vtkRadiositySceneConverter::FromSolution(distributed ? own : *this->Solution, *this->LastScene));
+  output->ShallowCopy(vtkRadiositySceneConverter::FromSolution(
+    distributed ? own : surface ? *this->Solution : radiosity::SolutionMesh(), *this->LastScene));
   // Not on a distributed rank's empty output: VTK sends an empty data set
   // between ranks as legacy ASCII, which cannot read back the history's NaN
   // (ParaView's Fetch failed with "Unrecognized keyword").
@@ -609,7 +621,8 @@ int vtkRadiosityFilter::ExecuteRequest(
   {
     output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
   }
-  for (radiosity::ProductArray a : this->Solver->SurfacePointArrays())
+  for (radiosity::ProductArray a :
+    surface ? this->Solver->SurfacePointArrays() : std::vector<radiosity::ProductArray>())
   {
     const bool onSurface = distributed
       ? std::all_of(pointSource.begin(), pointSource.end(), [&a](std::uint32_t p) { return p < a.Tuples(); })
@@ -648,7 +661,9 @@ int vtkRadiosityFilter::ExecuteRequest(
   // An aborted solve is not a solution to mesh downstream: the product
   // stays empty (GetSolver() still gives the partial solution). The product
   // of a distributed solve is the whole scene's: on rank 0 only.
-  if (!aborted && (!distributed || this->Controller->GetLocalProcessId() == 0))
+  const auto evaluated = Clock::now();
+  this->OutputSeconds = std::chrono::duration<double>(evaluated - solved).count();
+  if (!aborted && (distributed ? this->Controller->GetLocalProcessId() == 0 : this->ProductOutput))
   {
     offset = 0.9;
     scale = 0.1;
@@ -674,6 +689,7 @@ int vtkRadiosityFilter::ExecuteRequest(
       vtkRadiositySceneConverter::AttachPointProduct(productOutput, output);
     }
   }
+  this->ProductSeconds = std::chrono::duration<double>(Clock::now() - evaluated).count();
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -710,6 +726,8 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DiscontinuityMeshing: " << (this->DiscontinuityMeshing ? "On" : "Off") << "\n";
   os << indent << "MaxDiscontinuitiesPerLeaf: " << this->MaxDiscontinuitiesPerLeaf << "\n";
   os << indent << "MinDiscontinuityWeight: " << this->MinDiscontinuityWeight << "\n";
+  os << indent << "SurfaceOutput: " << (this->SurfaceOutput ? "On" : "Off") << "\n";
+  os << indent << "ProductOutput: " << (this->ProductOutput ? "On" : "Off") << "\n";
   os << indent << "ConformingBoundaries: " << (this->ConformingBoundaries ? "On" : "Off") << "\n";
   os << indent << "Lights: " << this->Lights->GetNumberOfItems() << " vtkLights\n";
   {

@@ -320,6 +320,17 @@ public:
   /// evaluated at the first call: the output holds a rank's part only).
   const radiosity::SolutionMesh* GetSolution() const;
   double GetPreprocessSeconds() const { return this->PreprocessSeconds; }
+  /// Wall-clock seconds of the last request's later phases, which follow
+  /// the preprocessing one after another: the solve (the solver's own
+  /// SolveSeconds and its bookkeeping), the output evaluation (the surface
+  /// solution evaluated and made port 0's arrays) and the method's product
+  /// (port 1: the discontinuity mesh, the Shepard field, the leaf clusters).
+  double GetSolveWallSeconds() const { return this->SolveWallSeconds; }
+  double GetOutputSeconds() const { return this->OutputSeconds; }
+  double GetProductSeconds() const { return this->ProductSeconds; }
+  /// Of the preprocessing, the face cluster hierarchy's build (0 when one
+  /// built upstream was reused, or for another method).
+  double GetHierarchySeconds() const { return this->HierarchySeconds; }
 
   /**
    * Reference irradiance at probe points: every row of the convergence
@@ -431,6 +442,23 @@ public:
 
   ///@{
   /**
+   * What the request evaluates beyond the solve, for a caller that needs
+   * less (the command line evaluates only what its options ask for):
+   * SurfaceOutput off leaves port 0 without the surface (no points, no
+   * cells; the field data as usual) and GetSolution() evaluates it at its
+   * first call; ProductOutput off leaves port 1 empty. On by default. Both
+   * apply to one process (a distributed request evaluates both).
+   */
+  vtkSetMacro(SurfaceOutput, bool);
+  vtkGetMacro(SurfaceOutput, bool);
+  vtkBooleanMacro(SurfaceOutput, bool);
+  vtkSetMacro(ProductOutput, bool);
+  vtkGetMacro(ProductOutput, bool);
+  vtkBooleanMacro(ProductOutput, bool);
+  ///@}
+
+  ///@{
+  /**
    * Method Hierarchical: the product on port 1 is Hardt & Teller's
    * discontinuity mesh with its quadratic irradiance interpolants
    * (cell array `QuadraticInterpolant`, for vtkQuadraticInterpolantMapper).
@@ -523,6 +551,8 @@ protected:
   int MaxBisections = 0;
   double MaxMemory = 0.0;
   bool DiscontinuityMeshing = true;
+  bool SurfaceOutput = true;
+  bool ProductOutput = true;
   int MaxDiscontinuitiesPerLeaf = 10;
   double MinDiscontinuityWeight = 0.05;
   bool ConformingBoundaries = true;
@@ -573,6 +603,11 @@ private:
   /// A distributed solve's whole solution, not evaluated yet (GetSolution).
   mutable bool SolutionPending = false;
   double PreprocessSeconds = 0.0;
+  double SolveWallSeconds = 0.0;
+  double OutputSeconds = 0.0;
+  double ProductSeconds = 0.0;
+  /// Set by MakeSolver (const: it builds the solver, this is its clock).
+  mutable double HierarchySeconds = 0.0;
   radiosity::ProgressCallback StatusCallback;
   std::vector<radiosity::Probe> ErrorProbes;
   std::vector<radiosity::RGB> ErrorReference;

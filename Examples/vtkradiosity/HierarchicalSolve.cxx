@@ -53,7 +53,7 @@ namespace solve
 /// constant leaves, port 1 the discontinuity mesh.
 int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
   std::vector<RGB>& reference, std::string& referenceKind, const LightSet& lights,
-  SolveTarget& target, double loadSeconds, Clock::time_point start)
+  SolveTarget& target, RunPhases& phases)
 {
   if (!(args.LinkTolerance > 0.0))
   {
@@ -69,12 +69,11 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   filter->SetMaxDiscontinuitiesPerLeaf(args.DiscontinuitiesPerLeaf);
   filter->SetMinDiscontinuityWeight(args.MinDiscontinuityWeight);
   cli::ProgressBar bar;
-  RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar);
+  RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar, phases);
   const std::vector<std::string>& warnings = filter->GetWarnings();
   const SceneCleanupReport& cleanup = filter->GetCleanupReport();
   const Scene& scene = filter->GetScene();
   const SolverStatistics& stats = filter->GetStatistics();
-  const double preprocessSeconds = filter->GetPreprocessSeconds();
 
   auto method = std::dynamic_pointer_cast<const HierarchicalMethod>(filter->GetSolver());
   if (!method)
@@ -92,19 +91,25 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   const HierarchicalOptions& options = solver.Options();
   std::string error;
 
-  nlohmann::json phases;
-  phases["load_s"] = loadSeconds;
-  phases["preprocessing_s"] = preprocessSeconds;
-  phases["solve_s"] = stats.SolveSeconds;
-  phases["meshing_s"] = meshing ? nlohmann::json(mesh.Seconds) : nlohmann::json();
+  // The discontinuity mesh is the method's product.
+  phases.Part("meshing_s", meshing ? nlohmann::json(mesh.Seconds) : nlohmann::json(), "product_s");
   if (!args.Output.empty())
   {
     WriteVtp(solved, args.Output);
+    phases.End("write_s");
   }
-  const auto renderStart = Clock::now();
+  SolutionMesh interpolants; // for --exr only
   RenderOutputs(args, solved,
-    meshing ? cli::InterpolantSolution(mesh, scene) : leaves, scene, nullptr, target.Camera());
-  phases["render_s"] = Since(renderStart);
+    [&]() -> const SolutionMesh* {
+      if (!meshing)
+      {
+        return &leaves;
+      }
+      interpolants = cli::InterpolantSolution(mesh, scene);
+      return &interpolants;
+    },
+    scene, nullptr, target.Camera());
+  phases.End("render_s");
 
   // Probes: from the interpolants (meshing) or the constant leaves; a probe
   // on no surface is gathered from the leaves' radiosity; the punctual
@@ -122,8 +127,10 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       }
     }
   }
+  phases.End("probes_s");
   WriteProbesAndHistory(
     args, probes, probeValues, stats.History, ", hierarchical radiosity", scene);
+  phases.End("write_s");
 
   if (!args.Report.empty())
   {
@@ -174,7 +181,6 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
     }
     report["lights"] = LightsReport(scene);
     report["scene"]["import"] = target.ImportReport();
-    ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {
       report["error"] = nullptr; // no reference known
@@ -203,6 +209,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       AddProbeOutputErrors(e, RelativeErrors(probeValues, reference));
       report["error"] = e;
     }
+    ReportRunAndHistory(report, phases, stats);
     Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
   }
   std::cerr << "solved " << args.Scene << " (" << EmitterSummary(scene) << "): " << stats.Elements

@@ -40,6 +40,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -52,6 +53,63 @@ namespace solve
 double Since(Clock::time_point t)
 {
   return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+void RunPhases::End(const std::string& name)
+{
+  const auto now = Clock::now();
+  const double seconds = std::chrono::duration<double>(now - this->Mark).count();
+  this->Mark = now;
+  for (auto& phase : this->Phases)
+  {
+    if (phase.first == name)
+    {
+      phase.second += seconds;
+      return;
+    }
+  }
+  this->Phases.emplace_back(name, seconds);
+}
+
+void RunPhases::EndFilter(const vtkRadiosityFilter& filter)
+{
+  const double block = Since(this->Mark);
+  const std::pair<const char*, double> own[] = { { "preprocessing_s", filter.GetPreprocessSeconds() },
+    { "solve_s", filter.GetSolveWallSeconds() }, { "output_evaluation_s", filter.GetOutputSeconds() },
+    { "product_s", filter.GetProductSeconds() } };
+  double measured = 0.0;
+  for (const auto& phase : own)
+  {
+    this->Phases.emplace_back(phase.first, phase.second);
+    measured += phase.second;
+  }
+  this->Phases.emplace_back("pipeline_s", std::max(0.0, block - measured));
+  this->Mark += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(block));
+}
+
+void RunPhases::Part(const std::string& name, const nlohmann::json& seconds, const std::string& of)
+{
+  this->Parts[name] = seconds;
+  this->PartOf[name] = of;
+}
+
+nlohmann::json RunPhases::Json() const
+{
+  nlohmann::json time = this->Parts;
+  nlohmann::json names = nlohmann::json::array();
+  double sum = 0.0;
+  for (const auto& phase : this->Phases)
+  {
+    time[phase.first] = phase.second;
+    names.push_back(phase.first);
+    sum += phase.second;
+  }
+  const double total = Since(this->Start);
+  time["phases"] = names;
+  time["part_of"] = this->PartOf;
+  time["total_s"] = total;
+  time["unaccounted_s"] = total - sum;
+  return time;
 }
 
 vtkSmartPointer<vtkTable> HistoryTable(const ConvergenceHistory& history)
@@ -137,8 +195,9 @@ void WriteVtp(vtkPolyData* data, const std::string& file)
 /// per pixel when the polydata has them, and splats `shepardField` per pixel
 /// when given) and --exr by ray casting `radiance` from the same camera;
 /// --reference-exr path traces that view.
-void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
-  const Scene& scene, vtkPolyData* shepardField, const cli::ViewCamera* camera)
+void RenderOutputs(const SolveArguments& args, vtkPolyData* solved,
+  const std::function<const SolutionMesh*()>& radiance, const Scene& scene,
+  vtkPolyData* shepardField, const cli::ViewCamera* camera)
 {
   if (args.Image.empty() && args.Exr.empty())
   {
@@ -179,7 +238,7 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const Soluti
     camera->GetViewUp(v);
     pinhole.ViewUp = Vec3(v[0], v[1], v[2]);
     pinhole.ViewAngleDegrees = camera->GetViewAngle();
-    const RadianceImage image = RenderRadiance(radiance, pinhole, args.Width, args.Height);
+    const RadianceImage image = RenderRadiance(*radiance(), pinhole, args.Width, args.Height);
     Check(cli::WriteExrHalf(args.Exr, image, error), error);
     if (!args.ReferenceExr.empty())
     {
@@ -365,7 +424,7 @@ void ComputeReference(const SolveArguments& args, const Scene& scene, const std:
 
 void RunRadiosityFilter(SolveTarget& target, const SolveArguments& args,
   const std::vector<Probe>& probes, std::vector<RGB>& reference, std::string& referenceKind,
-  const LightSet& lights, cli::ProgressBar& bar)
+  const LightSet& lights, cli::ProgressBar& bar, RunPhases& phases)
 {
   vtkRadiosityFilter* filter = target.Filter();
   filter->SetSceneLights(target.SceneLights(lights));
@@ -378,6 +437,7 @@ void RunRadiosityFilter(SolveTarget& target, const SolveArguments& args,
   filter->GlobalWarningDisplayOff(); // messages go through our own stderr lines
   filter->SetStatusCallback([&bar](const ProgressStatus& status) { return bar.Update(status); });
   target.Update();
+  phases.EndFilter(*filter);
   filter->GlobalWarningDisplayOn();
   try
   {
@@ -396,6 +456,7 @@ void RunRadiosityFilter(SolveTarget& target, const SolveArguments& args,
     (args.Reference == "analytic" || args.Reference == "pathtraced"))
   {
     ComputeReference(args, filter->GetScene(), probes, reference, referenceKind);
+    phases.End("reference_s");
   }
   for (const auto& w : target.PassWarnings())
   {
@@ -437,13 +498,12 @@ void WriteProbesAndHistory(const SolveArguments& args, const std::vector<Probe>&
   }
 }
 
-void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,
-  Clock::time_point start, const SolverStatistics& stats)
+void ReportRunAndHistory(nlohmann::json& report, RunPhases& phases, const SolverStatistics& stats)
 {
-  report["time"] = phases;
-  report["time"]["total_s"] = Since(start);
   report["peak_memory_bytes"] = PeakMemoryBytes();
   report["convergence_history"] = cli::HistoryJson(stats.History);
+  phases.End("report_s");
+  report["time"] = phases.Json();
 }
 
 nlohmann::json ErrorHead(const std::string& referenceKind, std::size_t probes, std::size_t onSurface)

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -87,6 +88,39 @@ struct SolveArguments
 };
 
 double Since(Clock::time_point t);
+
+/// The report's time section (SPEC: time per phase): the run's phases one
+/// after another, each named and timed where it ends, so that they add up
+/// to the run's wall time; parts of a phase (the face cluster hierarchy in
+/// the preprocessing, the meshless bounces in the solve, ...) beside them.
+class RunPhases
+{
+public:
+  explicit RunPhases(Clock::time_point start)
+    : Start(start)
+    , Mark(start)
+  {
+  }
+  /// Ends the phase that ran since the last end as `name` (added to it
+  /// when it ran before: the writes).
+  void End(const std::string& name);
+  /// Ends the phase since the last end as the filter's phases (its
+  /// preprocessing, solve, output evaluation and product) and the rest of
+  /// it as pipeline_s: the VTK pipeline's own work around them and, for an
+  /// imported scene, vtkRadiosityPass gathering the renderer's scene.
+  void EndFilter(const vtkRadiosityFilter& filter);
+  /// `name` (seconds, or null) as a part of the phase `of`, not a phase.
+  void Part(const std::string& name, const nlohmann::json& seconds, const std::string& of);
+  /// Every phase and part; "phases": the phases' names in run order;
+  /// "part_of": each part's phase; "total_s": the run's wall time so far;
+  /// "unaccounted_s": total_s less the phases (the time since the last end).
+  nlohmann::json Json() const;
+
+private:
+  Clock::time_point Start, Mark;
+  std::vector<std::pair<std::string, double>> Phases;
+  nlohmann::json Parts = nlohmann::json::object(), PartOf = nlohmann::json::object();
+};
 vtkSmartPointer<vtkTable> HistoryTable(const ConvergenceHistory& history);
 void Check(bool ok, const std::string& error);
 /// A filter's LastError as an exception: "bad input: ..." as BadInput (exit
@@ -97,9 +131,10 @@ std::vector<Probe> CornellDemoProbes();
 void WriteVtp(vtkPolyData* data, const std::string& file);
 /// `camera`: the view of --image and --exr (an imported file's camera);
 /// null: the Cornell box's for `cornell`, else framing the scene.
-void RenderOutputs(const SolveArguments& args, vtkPolyData* solved, const SolutionMesh& radiance,
-  const Scene& scene, vtkPolyData* shepardField = nullptr,
-  const cli::ViewCamera* camera = nullptr);
+/// `radiance` gives the solution that --exr ray casts (asked only then).
+void RenderOutputs(const SolveArguments& args, vtkPolyData* solved,
+  const std::function<const SolutionMesh*()>& radiance, const Scene& scene,
+  vtkPolyData* shepardField = nullptr, const cli::ViewCamera* camera = nullptr);
 void WriteHistoryPlot(const ConvergenceHistory& history, const std::string& file,
   const std::string& title);
 nlohmann::json Finite(double v);
@@ -112,9 +147,10 @@ class SolveTarget;
 /// An imported scene is known only once gathered: its --reference analytic
 /// or pathtraced is computed after the solve from the scene solved (into
 /// `reference` and `referenceKind`; the history then has no error columns).
+/// `phases`: the filter's phases ended (EndFilter), then reference_s.
 void RunRadiosityFilter(SolveTarget& target, const SolveArguments& args,
   const std::vector<Probe>& probes, std::vector<RGB>& reference, std::string& referenceKind,
-  const LightSet& lights, cli::ProgressBar& bar);
+  const LightSet& lights, cli::ProgressBar& bar, RunPhases& phases);
 /// --reference analytic or pathtraced at `probes` for `scene` (its lights
 /// included); BadInput when the scene has no closed form.
 void ComputeReference(const SolveArguments& args, const Scene& scene, const std::vector<Probe>& probes,
@@ -136,10 +172,10 @@ void WriteProbesAndHistory(const SolveArguments& args, const std::vector<Probe>&
 nlohmann::json LightsReport(const Scene& scene);
 /// The console line about emitters: "N emitting triangles, M lights[, a sky]".
 std::string EmitterSummary(const Scene& scene);
-/// The report's run figures every method shares: time per phase and in all,
+/// The report's run figures every method shares: time per phase (report_s
+/// ended here: call it last, before the report is written) and in all,
 /// peak memory, the convergence history.
-void ReportRunAndHistory(nlohmann::json& report, const nlohmann::json& phases,
-  Clock::time_point start, const SolverStatistics& stats);
+void ReportRunAndHistory(nlohmann::json& report, RunPhases& phases, const SolverStatistics& stats);
 /// The head of the report's error section: the reference and the probes.
 nlohmann::json ErrorHead(const std::string& referenceKind, std::size_t probes, std::size_t onSurface);
 /// The error figures of the probe output (every probe, ErrorMetrics.h): peak-
@@ -150,7 +186,7 @@ void AddProbeOutputErrors(nlohmann::json& e, const ErrorFigures& all);
 /// probes, the reference and the scene are read and checked).
 int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
   std::vector<RGB>& reference, std::string& referenceKind, const LightSet& lights,
-  SolveTarget& target, double loadSeconds, Clock::time_point start);
+  SolveTarget& target, RunPhases& phases);
 } // namespace solve
 
 #endif

@@ -64,7 +64,7 @@ std::string StripPrefix(const std::string& text, const std::string& prefix)
 
 int RunSolve(const SolveArguments& args)
 {
-  const auto start = Clock::now();
+  RunPhases phases(Clock::now());
   if (args.Method != "auto" && args.Method != "progressive" && args.Method != "hierarchical" &&
     args.Method != "meshless" && args.Method != "facecluster")
   {
@@ -154,7 +154,7 @@ int RunSolve(const SolveArguments& args)
   {
     std::cerr << "warning: " << w << "\n";
   }
-  const double loadSeconds = Since(start);
+  phases.End("load_s");
   SolveTarget target = input ? SolveTarget(input) : SolveTarget(imported, args.MaxReflectance);
 
   // The reference: a file of values at the probes, or a closed form the scene
@@ -191,11 +191,14 @@ int RunSolve(const SolveArguments& args)
     }
     referenceKind = "file: " + args.Reference;
   }
+  if (!reference.empty())
+  {
+    phases.End("reference_s");
+  }
 
   if (args.Method == "hierarchical")
   {
-    return RunHierarchicalSolve(
-      args, probes, reference, referenceKind, lights, target, loadSeconds, start);
+    return RunHierarchicalSolve(args, probes, reference, referenceKind, lights, target, phases);
   }
 
   vtkRadiosityFilter* filter = target.Filter();
@@ -213,27 +216,30 @@ int RunSolve(const SolveArguments& args)
   filter->SetOvershooting(!args.NoOvershooting);
   filter->SetInitialElementSize(args.ElementSize);
   filter->SetShooterElementSize(args.ShooterSize);
+  if (!target.IsImported()) // the pass draws what its filter outputs: all of it
+  {
+    // Only what the options ask for: the surface for --output, --image and
+    // --exr (its view frames the surface; the probes evaluate their own),
+    // the meshless field for its splats in --image.
+    filter->SetSurfaceOutput(!args.Output.empty() || !args.Image.empty() || !args.Exr.empty());
+    filter->SetProductOutput(meshless && !args.Image.empty());
+  }
   cli::ProgressBar bar;
-  RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar);
+  RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar, phases);
   const SolverStatistics& stats = filter->GetStatistics();
   bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
 
   vtkPolyData* solved = filter->GetOutput();
-  const SolutionMesh& solution = *filter->GetSolution();
-  nlohmann::json phases;
-  phases["load_s"] = loadSeconds;
-  phases["preprocessing_s"] = filter->GetPreprocessSeconds();
-  phases["solve_s"] = stats.SolveSeconds;
 
   if (!args.Output.empty())
   {
     WriteVtp(solved, args.Output);
+    phases.End("write_s");
   }
-  const auto renderStart = Clock::now();
   // The meshless field is drawn per pixel by splatting its basis functions.
-  RenderOutputs(args, solved, solution, filter->GetScene(),
+  RenderOutputs(args, solved, [filter] { return filter->GetSolution(); }, filter->GetScene(),
     meshless && !args.Image.empty() ? filter->GetOutput(1) : nullptr, target.Camera());
-  phases["render_s"] = Since(renderStart);
+  phases.End("render_s");
 
   std::size_t gathered = 0;
   std::vector<RGB> probeValues;
@@ -244,9 +250,11 @@ int RunSolve(const SolveArguments& args)
     // lights exact at each sensor (RadiositySolver::EvaluateProbes).
     probeValues = filter->GetSolver()->EvaluateProbes(probes, &gathered);
   }
+  phases.End("probes_s");
   WriteProbesAndHistory(args, probes, probeValues, stats.History,
     meshless ? ", meshless radiosity" : faceCluster ? ", face cluster radiosity" : ", progressive refinement",
     filter->GetScene());
+  phases.End("write_s");
 
   if (!args.Report.empty())
   {
@@ -296,9 +304,9 @@ int RunSolve(const SolveArguments& args)
         { "samples_gathered_to", t.SamplesGatheredTo }, { "gather_operations", t.GatherOperations },
         { "visibility_rays", t.VisibilityRays }, { "hierarchy_levels", t.Levels },
         { "samples_at_coarsest_level", t.CoarsestSamples }, { "memory_bytes", t.MemoryBytes } };
-      phases["point_placement_s"] = t.PlacementSeconds;
-      phases["direct_light_s"] = t.DirectSeconds;
-      phases["bounces_s"] = t.BounceSeconds;
+      phases.Part("point_placement_s", t.PlacementSeconds, "solve_s");
+      phases.Part("direct_light_s", t.DirectSeconds, "solve_s");
+      phases.Part("bounces_s", t.BounceSeconds, "solve_s");
     }
     if (faceCluster)
     {
@@ -311,11 +319,12 @@ int RunSolve(const SolveArguments& args)
         { "elements", f.Elements }, { "leaf_elements", f.LeafElements }, { "transfers", f.Transfers },
         { "refinements", f.Refinements }, { "solution_memory_bytes", f.SolutionBytes },
         { "hierarchy_memory_bytes", filter->GetFaceClusterSolution()->Hierarchy().MemoryBytes() } };
-      phases["hierarchy_s"] = f.HierarchySeconds;
+      // The filter builds the hierarchy and times it (FaceClusterRadiosity's
+      // own HierarchySeconds starts after FaceClusterMethod has built it).
+      phases.Part("hierarchy_s", std::max(f.HierarchySeconds, filter->GetHierarchySeconds()), "preprocessing_s");
     }
     report["lights"] = LightsReport(scene);
     report["scene"]["import"] = target.ImportReport();
-    ReportRunAndHistory(report, phases, start, stats);
     if (reference.empty())
     {
       report["error"] = nullptr; // no reference known
@@ -335,6 +344,7 @@ int RunSolve(const SolveArguments& args)
       }
       report["error"] = e;
     }
+    ReportRunAndHistory(report, phases, stats);
     Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
   }
   std::cerr << "solved " << args.Scene << " (" << EmitterSummary(filter->GetScene()) << "): "
