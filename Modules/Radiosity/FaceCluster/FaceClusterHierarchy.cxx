@@ -1,4 +1,5 @@
 #include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
+#include "Radiosity/Common/Morton.h"
 
 #include "Radiosity/FaceCluster/FaceClusterGeometry.h"
 #include "Radiosity/FaceCluster/MinimumRectangle.h"
@@ -120,21 +121,6 @@ struct Candidate
   bool operator<(const Candidate& o) const { return this->Cost > o.Cost; } // min-heap
 };
 
-// 21-bit Morton code of a point in the unit cube.
-std::uint64_t Morton(const Vec3& unit)
-{
-  auto spread = [](std::uint64_t v) {
-    v &= 0x1fffff;
-    v = (v | v << 32) & 0x1f00000000ffffull;
-    v = (v | v << 16) & 0x1f0000ff0000ffull;
-    v = (v | v << 8) & 0x100f00f00f00f00full;
-    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-    v = (v | v << 2) & 0x1249249249249249ull;
-    return v;
-  };
-  auto q = [](double x) { return static_cast<std::uint64_t>(std::clamp(x, 0.0, 1.0) * 2097151.0); };
-  return spread(q(unit.x)) | spread(q(unit.y)) << 1 | spread(q(unit.z)) << 2;
-}
 } // namespace
 
 //------------------------------------------------------------------------------

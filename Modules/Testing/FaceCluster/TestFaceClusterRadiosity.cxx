@@ -37,6 +37,21 @@ double WorstCentroidError(
   }
   return worst;
 }
+
+/// A probe at every triangle's centroid, facing as it does, and the closed
+/// form's irradiance there.
+AnalyticReference CentroidReference(const Scene& scene, std::vector<Probe>& probes)
+{
+  probes.clear();
+  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  {
+    probes.push_back({ scene.Centroid(t), scene.Normal(t) });
+  }
+  AnalyticReference reference;
+  std::string why;
+  EXPECT_TRUE(ComputeAnalyticReference(scene, probes, reference, why)) << why;
+  return reference;
+}
 }
 
 TEST(FaceClusterRadiosity, ClosedRoomsWithinOnePercent)
@@ -79,13 +94,8 @@ TEST(FaceClusterRadiosity, SphereWithNonUniformEmission)
   // up to 1.7% (measured for the meshless test).
   const Scene sphere = MakeSphereInterior(1.0, 3, 0.7, RGB(3.0, 2.0, 1.0));
   std::vector<Probe> probes;
-  for (std::size_t t = 0; t < sphere.Triangles.size(); ++t)
-  {
-    probes.push_back({ sphere.Centroid(t), sphere.Normal(t) });
-  }
-  AnalyticReference reference;
-  std::string why;
-  ASSERT_TRUE(ComputeAnalyticReference(sphere, probes, reference, why)) << why;
+  const AnalyticReference reference = CentroidReference(sphere, probes);
+  ASSERT_EQ(reference.Irradiance.size(), probes.size());
   FaceClusterRadiosity solver(sphere, FaceClusterSettings());
   const SolverStatistics stats = solver.Solve();
   EXPECT_EQ(stats.Stop, StopReason::Converged);
@@ -119,13 +129,8 @@ TEST(FaceClusterRadiosity, StiffSphereConservesEnergy)
   {
     const Scene sphere = MakeSphereInterior(1.0, 2, rho, RGB(1.0));
     std::vector<Probe> probes;
-    for (std::size_t t = 0; t < sphere.Triangles.size(); ++t)
-    {
-      probes.push_back({ sphere.Centroid(t), sphere.Normal(t) });
-    }
-    AnalyticReference reference;
-    std::string why;
-    ASSERT_TRUE(ComputeAnalyticReference(sphere, probes, reference, why)) << why;
+    const AnalyticReference reference = CentroidReference(sphere, probes);
+    ASSERT_EQ(reference.Irradiance.size(), probes.size());
     FaceClusterRadiosity solver(sphere, FaceClusterSettings());
     const SolverStatistics stats = solver.Solve();
     EXPECT_EQ(stats.Stop, StopReason::Converged) << "rho " << rho;
