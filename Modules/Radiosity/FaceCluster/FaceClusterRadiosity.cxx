@@ -327,10 +327,9 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       this->Top.push_back(this->NewElement(root, -1));
     }
 
-    // Per iteration: the infinity norm of the unshot radiosity relative to
-    // the brightest emission (the stop), and the power of the next shot
-    // (the decay rate of the series).
-    std::vector<double> residuals, powers;
+    // Per iteration, the power of the next shot (the decay rate of the
+    // series); the stop is on the infinity norm of the unshot radiosity.
+    std::vector<double> powers;
     for (;;)
     {
       if (ReachedLimitOnAnyRank(ShareOrAlone(this->Settings.Share), this->Iteration, this->Settings.MaxIterations, clock.Seconds(),
@@ -355,7 +354,6 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       }
       ++this->Iteration;
       const double relative = residual / brightest;
-      residuals.push_back(relative);
       powers.push_back(this->NextPower);
       ConvergenceRow row;
       row.Iteration = this->Iteration;

@@ -177,6 +177,8 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
   std::vector<Vec3> atNode((np + nc) * nb, Vec3(0.0)); // sum_q Phi_b(y_q) g_pq
   std::vector<double> upper(np + nc, 0.0), lower(np + nc, std::numeric_limits<double>::infinity());
   std::vector<char> shadowed(np + nc, 0);
+  // The constant part's exact vector form factor at each point (unoccluded).
+  std::vector<Vec3> exactAt(exactConstant ? np + nc : 0);
   // In parallel: each point's emitter nodes' rays.
   tbb::parallel_for(std::size_t(0), np + nc, [&](std::size_t p) {
     const Vec3& x = p < np ? rr.Points[p] : rr.Controls[p - np];
@@ -215,7 +217,8 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     if (exactConstant)
     {
       const double v = weightSum > 0.0 ? visibleSum / weightSum : 1.0;
-      atNode[p * nb] = v * exactVector(x, normal);
+      exactAt[p] = exactVector(x, normal);
+      atNode[p * nb] = v * exactAt[p];
     }
   });
   // A light source of a few triangles (an emitting cluster: the sharp
@@ -247,7 +250,7 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
       const Vec3& normal = p < np ? rr.Normals[p] : rr.ControlNormals[p - np];
       const double v = VisibleFraction(x, normal, corners.data(), corners.size() / 3,
         [&](const Vec3& y) { return visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing); });
-      atNode[p * nb] = v * exactVector(x, normal);
+      atNode[p * nb] = v * exactAt[p];
     });
   }
   for (std::size_t p = 0; p < np; ++p)
