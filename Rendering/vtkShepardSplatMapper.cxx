@@ -29,6 +29,7 @@
 #include "vtkRadiosityTexelBuffer.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkShepardSplatNodes.h"
 #include "vtkShepardSplatPasses.h"
 #include "vtkShepardSplatSurfaceTexels.h"
 #include "vtk_glew.h"
@@ -85,6 +86,8 @@ vtkShepardSplatMapper::vtkShepardSplatMapper()
   , NodeBuffer(new vtkRadiosityTexelBuffer)
   , PointBuffer(new vtkRadiosityTexelBuffer)
   , Passes(new vtkShepardSplatPasses)
+  , CullingNodes(new vtkShepardSplatNodes)
+  , BoxBuffer(new vtkRadiosityTexelBuffer)
 {
   this->SetNumberOfInputPorts(2);
   // The G-buffer holds model coordinates, as the field does.
@@ -133,6 +136,12 @@ vtkPolyData* vtkShepardSplatMapper::GetField()
 int vtkShepardSplatMapper::GetNumberOfLevels() const
 {
   return this->LevelOffsets.empty() ? 0 : static_cast<int>(this->LevelOffsets.size()) - 1;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkShepardSplatMapper::GetNumberOfCullingNodes() const
+{
+  return static_cast<vtkIdType>(this->CullingNodes->GetNodes().size());
 }
 
 //------------------------------------------------------------------------------
@@ -264,6 +273,8 @@ bool vtkShepardSplatMapper::UpdateField()
     texel[3] = static_cast<float>(radius->GetComponent(i, 0));
     texel[7] = static_cast<float>(group->GetComponent(i, 0));
   }
+  // Neighbours next to each other, for the culling nodes' runs.
+  vtkShepardSplatNodes::SortLevels(this->PointTexels, FloatsPerPoint, this->LevelOffsets);
   this->PointTexelsTime.Modified();
   return true;
 }
@@ -399,6 +410,29 @@ void vtkShepardSplatMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
     return;
   }
 
+  vtkShepardSplatPasses::Culling culling;
+  if (this->Culling && !this->PointTexels.empty())
+  {
+    vtkShepardSplatNodes& nodes = *this->CullingNodes;
+    if (this->CullingNodesTime < this->PointTexelsTime ||
+      nodes.GetPointsPerNode() != this->PointsPerNode)
+    {
+      nodes.Build(this->PointTexels, FloatsPerPoint, this->LevelOffsets, this->PointsPerNode);
+      this->CullingNodesTime.Modified();
+    }
+    culling.Nodes = &nodes;
+    if (this->OcclusionQueries)
+    {
+      if (!this->BoxBuffer->IsCurrent(this->CullingNodesTime, -1) &&
+        !this->BoxBuffer->Upload(window, nodes.GetBoxTexels(), "the Shepard field's node boxes", error))
+      {
+        vtkErrorMacro(<< error);
+        return;
+      }
+      culling.Boxes = this->BoxBuffer.get();
+    }
+  }
+
   bool drawn = false;
   state->PushFramebufferBindings();
   passes.GetFramebuffer()->Bind();
@@ -423,7 +457,12 @@ void vtkShepardSplatMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
       vtkNew<vtkMatrix4x4> modelToClip;
       this->ModelToClip(ren, actor, modelToClip);
       drawn = passes.Splat(window, modelToClip,
-        this->PointTexels.empty() ? nullptr : this->PointBuffer.get(), this->LevelOffsets, error);
+        this->PointTexels.empty() ? nullptr : this->PointBuffer.get(), this->LevelOffsets, culling,
+        error);
+      this->SplattedPoints = static_cast<vtkIdType>(culling.Splatted);
+      this->FrustumCulledPoints = static_cast<vtkIdType>(culling.FrustumCulled);
+      this->OcclusionCulledPoints = static_cast<vtkIdType>(culling.OcclusionCulled);
+      this->OcclusionQueryCount = static_cast<vtkIdType>(culling.Queries);
     }
   }
   state->PopFramebufferBindings();
@@ -574,6 +613,7 @@ void vtkShepardSplatMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->NodeBuffer->ReleaseGraphicsResources(win);
   this->PointBuffer->ReleaseGraphicsResources(win);
+  this->BoxBuffer->ReleaseGraphicsResources(win);
   this->Passes->ReleaseGraphicsResources(win);
   this->Superclass::ReleaseGraphicsResources(win);
 }
@@ -595,6 +635,14 @@ void vtkShepardSplatMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumTexels: " << this->MaximumTexels << "\n";
   os << indent << "TexelSpacingUsed: " << this->TexelSpacingUsed << "\n";
   os << indent << "NumberOfTexels: " << this->GetNumberOfTexels() << "\n";
+  os << indent << "Culling: " << (this->Culling ? "On" : "Off") << "\n";
+  os << indent << "OcclusionQueries: " << (this->OcclusionQueries ? "On" : "Off") << "\n";
+  os << indent << "PointsPerNode: " << this->PointsPerNode << "\n";
+  os << indent << "NumberOfCullingNodes: " << this->GetNumberOfCullingNodes() << "\n";
+  os << indent << "NumberOfSplattedPoints: " << this->SplattedPoints << "\n";
+  os << indent << "NumberOfFrustumCulledPoints: " << this->FrustumCulledPoints << "\n";
+  os << indent << "NumberOfOcclusionCulledPoints: " << this->OcclusionCulledPoints << "\n";
+  os << indent << "NumberOfOcclusionQueries: " << this->OcclusionQueryCount << "\n";
   os << indent << "SurfaceValid: " << (this->SurfaceValid ? "true" : "false") << "\n";
   if (!this->SurfaceValid && !this->SurfaceError.empty())
   {

@@ -46,7 +46,14 @@
  *    depth-tested against the G-buffer so that pixels whose surface lies
  *    behind the ball are rejected before shading; the quads are
  *    issued from a texture buffer of the level-sorted points (three texels a
- *    point), with no vertex data. The fragment shader evaluates w_j at the
+ *    point), with no vertex data. With Culling (the default), only the
+ *    points of the nodes that can contribute are issued: each level's
+ *    points lie along a Morton curve, cut into nodes with the boxes of
+ *    their balls; the nodes outside the view frustum are dropped on the CPU,
+ *    and each other node's box is drawn in an occlusion query whose
+ *    fragments pass where the G-buffer's point lies in the box (its back
+ *    faces, with depth clamping), the node dropped when none does (see
+ *    SetCulling). The fragment shader evaluates w_j at the
  *    G-buffer's point and adds (w_j alpha_j, w_j) into a float target with
  *    additive blending; a full-screen pass then adds the level's
  *    sum(w alpha) / sum(w) into the irradiance target.
@@ -83,6 +90,7 @@ class vtkAlgorithmOutput;
 class vtkPolyData;
 class vtkMatrix4x4;
 class vtkRadiosityTexelBuffer;
+class vtkShepardSplatNodes;
 class vtkShepardSplatPasses;
 
 class RADIOSITYRENDERING_EXPORT vtkShepardSplatMapper : public vtkRadiosityCellTexelMapper
@@ -163,6 +171,47 @@ public:
   vtkGetMacro(TexelSpacing, double);
   vtkSetClampMacro(MaximumTexels, vtkIdType, 1024, 1 << 24);
   vtkGetMacro(MaximumTexels, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * SPLATS: culling of the basis functions (Lehtinen et al. 2007, section
+   * 6.2), on by default. Each level's points are sorted along a Morton curve
+   * and cut into nodes of PointsPerNode consecutive points (default 128),
+   * each with the box of its support balls. Every render, the nodes whose
+   * box lies outside the view frustum are dropped; then, with
+   * OcclusionQueries (on by default), each remaining node's box is drawn
+   * against the G-buffer in an occlusion query and dropped when no visible
+   * surface point lies in it (the box wholly hidden behind the surfaces,
+   * or floating in front of them). A basis function contributes only where
+   * a visible point lies in its ball, so only functions that add nothing
+   * are dropped: the image is the unculled one (TestShepardSplatCulling
+   * measures it equal). Off: every point is issued, as before (each still
+   * dropped in the vertex shader when its ball is off-screen).
+   */
+  vtkSetMacro(Culling, bool);
+  vtkGetMacro(Culling, bool);
+  vtkBooleanMacro(Culling, bool);
+  vtkSetMacro(OcclusionQueries, bool);
+  vtkGetMacro(OcclusionQueries, bool);
+  vtkBooleanMacro(OcclusionQueries, bool);
+  vtkSetClampMacro(PointsPerNode, int, 1, 1 << 20);
+  vtkGetMacro(PointsPerNode, int);
+  ///@}
+
+  ///@{
+  /**
+   * SPLATS, at the last render: the basis functions drawn, those dropped
+   * because their node lies outside the view frustum or its occlusion query
+   * found no visible point in its box (all 0 before a SPLATS render; without
+   * Culling every point is drawn), and the occlusion queries issued.
+   */
+  vtkIdType GetNumberOfSplattedPoints() const { return this->SplattedPoints; }
+  vtkIdType GetNumberOfFrustumCulledPoints() const { return this->FrustumCulledPoints; }
+  vtkIdType GetNumberOfOcclusionCulledPoints() const { return this->OcclusionCulledPoints; }
+  vtkIdType GetNumberOfOcclusionQueries() const { return this->OcclusionQueryCount; }
+  /// The culling nodes (0 before a SPLATS render with Culling).
+  vtkIdType GetNumberOfCullingNodes() const;
   ///@}
 
   /// SURFACE_TEXELS: the spacing of the last evaluation (model units; 0
@@ -247,6 +296,19 @@ private:
 
   std::unique_ptr<vtkRadiosityTexelBuffer> PointBuffer;
   std::unique_ptr<vtkShepardSplatPasses> Passes;
+
+  // SPLATS culling: the nodes of the points, built for PointTexelsTime and
+  // PointsPerNode, and their boxes on the GPU.
+  bool Culling = true;
+  bool OcclusionQueries = true;
+  int PointsPerNode = 128;
+  std::unique_ptr<vtkShepardSplatNodes> CullingNodes;
+  vtkTimeStamp CullingNodesTime;
+  std::unique_ptr<vtkRadiosityTexelBuffer> BoxBuffer;
+  vtkIdType SplattedPoints = 0;
+  vtkIdType FrustumCulledPoints = 0;
+  vtkIdType OcclusionCulledPoints = 0;
+  vtkIdType OcclusionQueryCount = 0;
 };
 
 #endif

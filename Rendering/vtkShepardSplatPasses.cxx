@@ -11,6 +11,7 @@
 #include "vtkRadiosityCellTexelMapper.h"
 #include "vtkRadiosityTexelBuffer.h"
 #include "vtkShaderProgram.h"
+#include "vtkShepardSplatNodes.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -19,7 +20,8 @@
 namespace
 {
 // Pass 2: one quad (two triangles, six vertices) per basis function, read
-// from the level-sorted point texels at firstPoint + gl_VertexID / 6. Only
+// from the level-sorted point texels at gl_VertexID / 6 (the draw's first
+// vertex is six times the first point). Only
 // where the G-buffer's point lies in the support ball |x - x_j| < r_j can
 // w_j be nonzero, so the quad is the ball's exact screen bound and the
 // quad's depth the ball's farthest: the depth test (GEQUAL against the
@@ -49,7 +51,6 @@ namespace
 // that float rounding never cuts a fragment with a weight.
 const char* const SplatVS = R"(//VTK::System::Dec
 uniform samplerBuffer splatPoints;
-uniform int firstPoint;
 uniform mat4 MCDCMatrix;
 uniform vec2 pixelSize;
 flat out vec4 splatCentre;
@@ -76,7 +77,7 @@ float Depth(vec3 c, float r, vec3 dir)
 }
 void main()
 {
-  int point = firstPoint + gl_VertexID / 6;
+  int point = gl_VertexID / 6;
   int corner = gl_VertexID - 6 * (gl_VertexID / 6);
   splatCentre = texelFetch(splatPoints, 3 * point);
   splatNormal = texelFetch(splatPoints, 3 * point + 1);
@@ -122,6 +123,66 @@ void main()
   const vec2 quad[6] = vec2[6](vec2(0.0, 0.0), vec2(1.0, 0.0), vec2(1.0, 1.0),
     vec2(0.0, 0.0), vec2(1.0, 1.0), vec2(0.0, 1.0));
   gl_Position = vec4(mix(lo, hi, quad[corner]), clamp(depth, -1.0, 1.0), 1.0);
+}
+)";
+
+// The occlusion queries: the back faces of each node's box (two texels a
+// node, (lo, 0) and (hi, 0), box i drawn as vertices 36 i to 36 i + 35),
+// whose fragments pass where the G-buffer's point lies in the box. A node
+// can contribute only where a visible point lies in one of its balls, so in
+// its box; the ray through that pixel then leaves the box through a back
+// face beyond the point, in front of the eye, and depth clamping keeps that
+// face from being clipped at the far plane: the pixel is rasterised and
+// passes. (A front face may be clipped at the near plane, hence the back
+// ones.) A face is a back face when the eye (homogeneous, model
+// coordinates: w = 0 for a parallel projection) lies on the box's side of
+// its plane; the front ones collapse to a point.
+const char* const BoxVS = R"(//VTK::System::Dec
+uniform samplerBuffer nodeBoxes;
+uniform mat4 MCDCMatrix;
+uniform vec4 eye;
+flat out vec3 boxLo;
+flat out vec3 boxHi;
+void main()
+{
+  int node = gl_VertexID / 36;
+  int vertex = gl_VertexID - 36 * node;
+  int face = vertex / 6;
+  int corner = vertex - 6 * face;
+  boxLo = texelFetch(nodeBoxes, 2 * node).xyz;
+  boxHi = texelFetch(nodeBoxes, 2 * node + 1).xyz;
+  int axis = face / 2;
+  bool upper = face - 2 * axis == 1;
+  float plane = upper ? boxHi[axis] : boxLo[axis];
+  float side = eye[axis] - plane * eye.w;
+  const vec2 quad[6] = vec2[6](vec2(0.0, 0.0), vec2(1.0, 0.0), vec2(1.0, 1.0),
+    vec2(0.0, 0.0), vec2(1.0, 1.0), vec2(0.0, 1.0));
+  vec2 st = quad[corner];
+  int u = axis == 2 ? 0 : axis + 1;
+  int v = axis == 0 ? 2 : axis - 1;
+  vec3 p;
+  p[axis] = plane;
+  p[u] = mix(boxLo[u], boxHi[u], st.x);
+  p[v] = mix(boxLo[v], boxHi[v], st.y);
+  gl_Position = (upper ? side < 0.0 : side > 0.0) ? MCDCMatrix * vec4(p, 1.0)
+                                                  : vec4(0.0, 0.0, 0.0, 1.0);
+}
+)";
+
+const char* const BoxFS = R"(//VTK::System::Dec
+//VTK::Output::Dec
+uniform sampler2D gPosition;
+flat in vec3 boxLo;
+flat in vec3 boxHi;
+void main()
+{
+  vec4 position = texelFetch(gPosition, ivec2(gl_FragCoord.xy), 0);
+  if (position.w < 0.5 || any(lessThan(position.xyz, boxLo)) ||
+    any(greaterThan(position.xyz, boxHi)))
+  {
+    discard;
+  }
+  gl_FragData[0] = vec4(0.0);
 }
 )";
 
@@ -272,7 +333,8 @@ void vtkShepardSplatPasses::EndGBuffer()
 }
 
 bool vtkShepardSplatPasses::Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* modelToClip,
-  vtkRadiosityTexelBuffer* points, const std::vector<size_t>& levelOffsets, std::string& error)
+  vtkRadiosityTexelBuffer* points, const std::vector<size_t>& levelOffsets, Culling& culling,
+  std::string& error)
 {
   vtkOpenGLState* state = window->GetState();
   this->Framebuffer->AddColorAttachment(0, this->Irradiance);
@@ -280,10 +342,30 @@ bool vtkShepardSplatPasses::Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* m
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  culling.Splatted = culling.FrustumCulled = culling.OcclusionCulled = culling.Queries = 0;
   if (!points || levelOffsets.size() < 2 || levelOffsets.back() == 0)
   {
     this->Framebuffer->RemoveColorAttachments(1);
     return true; // no basis functions: zero irradiance
+  }
+
+  // The nodes to draw: those whose box meets the frustum, then those of
+  // them whose box holds a visible point.
+  const vtkShepardSplatNodes* nodes = culling.Nodes;
+  std::vector<unsigned char> draw;
+  if (nodes)
+  {
+    nodes->Cull(modelToClip, draw);
+    for (size_t n = 0; n < draw.size(); ++n)
+    {
+      culling.FrustumCulled += draw[n] ? 0 : nodes->GetNodes()[n].Count;
+    }
+    if (culling.Boxes &&
+      !this->Occlude(window, modelToClip, *nodes, culling.Boxes, draw, culling, error))
+    {
+      this->Framebuffer->RemoveColorAttachments(1);
+      return false;
+    }
   }
 
   state->vtkglEnable(GL_BLEND);
@@ -319,13 +401,46 @@ bool vtkShepardSplatPasses::Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* m
     splat->SetUniformi("splatPoints", points->GetTextureUnit());
     splat->SetUniformi("gPosition", this->Position->GetTextureUnit());
     splat->SetUniformi("gNormal", this->Normal->GetTextureUnit());
-    splat->SetUniformi("firstPoint", static_cast<int>(first));
     splat->SetUniformMatrix("MCDCMatrix", modelToClip);
     const float pixelSize[2] = { 2.0f / this->Width, 2.0f / this->Height };
     splat->SetUniform2f("pixelSize", pixelSize);
     state->vtkglEnable(GL_DEPTH_TEST);
     this->SplatArrays->Bind();
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * count));
+    if (!nodes)
+    {
+      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(6 * first), static_cast<GLsizei>(6 * count));
+      culling.Splatted += count;
+    }
+    else
+    {
+      // The runs of consecutive nodes to draw, six vertices a point.
+      std::vector<GLint> firsts;
+      std::vector<GLsizei> counts;
+      const std::vector<size_t>& levelNodes = nodes->GetLevelNodes();
+      for (size_t n = levelNodes[level]; n < levelNodes[level + 1]; ++n)
+      {
+        const vtkShepardSplatNodes::Node& node = nodes->GetNodes()[n];
+        if (!draw[n])
+        {
+          continue;
+        }
+        culling.Splatted += node.Count;
+        if (n > levelNodes[level] && draw[n - 1])
+        {
+          counts.back() += static_cast<GLsizei>(6 * node.Count);
+        }
+        else
+        {
+          firsts.push_back(static_cast<GLint>(6 * node.First));
+          counts.push_back(static_cast<GLsizei>(6 * node.Count));
+        }
+      }
+      if (!firsts.empty())
+      {
+        glMultiDrawArrays(
+          GL_TRIANGLES, firsts.data(), counts.data(), static_cast<GLsizei>(firsts.size()));
+      }
+    }
     this->SplatArrays->Release();
     state->vtkglDisable(GL_DEPTH_TEST);
 
@@ -355,6 +470,85 @@ bool vtkShepardSplatPasses::Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* m
   this->Framebuffer->RemoveColorAttachments(1);
   this->Framebuffer->RemoveDepthAttachment();
   return ok;
+}
+
+bool vtkShepardSplatPasses::Occlude(vtkOpenGLRenderWindow* window, vtkMatrix4x4* modelToClip,
+  const vtkShepardSplatNodes& nodes, vtkRadiosityTexelBuffer* boxes,
+  std::vector<unsigned char>& draw, Culling& culling, std::string& error)
+{
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(BoxVS, BoxFS, "");
+  if (!program || !program->GetCompiled())
+  {
+    error = "Cannot build the occlusion query shader program.";
+    return false;
+  }
+  if (this->QueriesContext != window)
+  {
+    this->Queries.clear(); // another context's names
+    this->QueriesContext = window;
+  }
+  double eye[4];
+  vtkShepardSplatNodes::Eye(modelToClip, eye);
+  std::vector<size_t> queried;
+  for (size_t n = 0; n < draw.size(); ++n)
+  {
+    // A box around the eye is drawn without asking.
+    if (draw[n] && !nodes.Contains(n, eye))
+    {
+      queried.push_back(n);
+    }
+  }
+  if (queried.empty())
+  {
+    return true;
+  }
+  if (this->Queries.size() < queried.size())
+  {
+    const size_t had = this->Queries.size();
+    this->Queries.resize(queried.size());
+    glGenQueries(static_cast<GLsizei>(queried.size() - had), this->Queries.data() + had);
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  glEnable(GL_DEPTH_CLAMP);
+  this->Position->Activate();
+  boxes->Activate();
+  program->SetUniformi("gPosition", this->Position->GetTextureUnit());
+  program->SetUniformi("nodeBoxes", boxes->GetTextureUnit());
+  program->SetUniformMatrix("MCDCMatrix", modelToClip);
+  const float eyef[4] = { static_cast<float>(eye[0]), static_cast<float>(eye[1]),
+    static_cast<float>(eye[2]), static_cast<float>(eye[3]) };
+  program->SetUniform4f("eye", eyef);
+  const GLenum target = GLEW_VERSION_3_3 ? GL_ANY_SAMPLES_PASSED : GL_SAMPLES_PASSED;
+  this->SplatArrays->Bind();
+  for (size_t q = 0; q < queried.size(); ++q)
+  {
+    glBeginQuery(target, this->Queries[q]);
+    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(36 * queried[q]), 36);
+    glEndQuery(target);
+  }
+  this->SplatArrays->Release();
+  culling.Queries = queried.size();
+  // Waits for the answers: the splats of the level need them anyway.
+  for (size_t q = 0; q < queried.size(); ++q)
+  {
+    GLuint passed = 1;
+    glGetQueryObjectuiv(this->Queries[q], GL_QUERY_RESULT, &passed);
+    if (passed == 0)
+    {
+      draw[queried[q]] = 0;
+      culling.OcclusionCulled += nodes.GetNodes()[queried[q]].Count;
+    }
+  }
+  glDisable(GL_DEPTH_CLAMP);
+  boxes->Deactivate();
+  this->Position->Deactivate();
+  return true;
 }
 
 bool vtkShepardSplatPasses::Composite(vtkOpenGLRenderWindow* window, double exposure, double gamma,
@@ -411,6 +605,12 @@ void vtkShepardSplatPasses::ReleaseGraphicsResources(vtkWindow* window)
   this->Depth->ReleaseGraphicsResources(window);
   this->Framebuffer->ReleaseGraphicsResources(window);
   this->SplatArrays->ReleaseGraphicsResources();
+  if (!this->Queries.empty() && this->QueriesContext == window)
+  {
+    glDeleteQueries(static_cast<GLsizei>(this->Queries.size()), this->Queries.data());
+  }
+  this->Queries.clear();
+  this->QueriesContext = nullptr;
   for (auto* quad : { &this->Normalise, &this->CompositeQuad })
   {
     if (*quad)
@@ -428,4 +628,5 @@ void vtkShepardSplatPasses::PrintSelf(std::ostream& os, vtkIndent indent) const
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "Normalise: " << (this->Normalise ? "built" : "(none)") << "\n";
   os << indent << "CompositeQuad: " << (this->CompositeQuad ? "built" : "(none)") << "\n";
+  os << indent << "OcclusionQueries: " << this->Queries.size() << "\n";
 }

@@ -22,6 +22,7 @@ class vtkOpenGLRenderWindow;
 class vtkOpenGLState;
 class vtkOpenGLVertexArrayObject;
 class vtkRadiosityTexelBuffer;
+class vtkShepardSplatNodes;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -49,14 +50,31 @@ public:
   void BeginGBuffer(vtkOpenGLState* state);
   void EndGBuffer();
 
+  /// Which basis functions Splat draws, and what it dropped.
+  struct Culling
+  {
+    /// The nodes of the points; null: every point is drawn.
+    const vtkShepardSplatNodes* Nodes = nullptr;
+    /// The nodes' boxes (vtkShepardSplatNodes::GetBoxTexels) for the
+    /// occlusion queries; null: none (the frustum alone).
+    vtkRadiosityTexelBuffer* Boxes = nullptr;
+    size_t Splatted = 0;        ///< points drawn
+    size_t FrustumCulled = 0;   ///< in nodes outside the view frustum
+    size_t OcclusionCulled = 0; ///< in nodes whose box holds no G-buffer point
+    size_t Queries = 0;         ///< occlusion queries issued
+  };
+
   /**
    * Splats the level-sorted points (three texels each, `points` active)
    * level by level into the irradiance target, levelOffsets[l] being the
-   * first point of level l; `modelToClip` is MCDCMatrix. No points leave
-   * the irradiance zero. False with `error` when a shader does not build.
+   * first point of level l; `modelToClip` is MCDCMatrix. With
+   * `culling.Nodes`, only the nodes that can contribute (see the .cxx). No
+   * points leave the irradiance zero. False with `error` when a shader does
+   * not build.
    */
   bool Splat(vtkOpenGLRenderWindow* window, vtkMatrix4x4* modelToClip,
-    vtkRadiosityTexelBuffer* points, const std::vector<size_t>& levelOffsets, std::string& error);
+    vtkRadiosityTexelBuffer* points, const std::vector<size_t>& levelOffsets, Culling& culling,
+    std::string& error);
 
   /// Writes the radiance (Emission + Reflectance E) / pi * exposure, tone
   /// mapped and encoded as vtkRadiosityCellTexelMapper does, and the
@@ -70,6 +88,13 @@ public:
   void PrintSelf(std::ostream& os, vtkIndent indent) const;
 
 private:
+  // Clears draw[n] for the nodes whose box holds no G-buffer point
+  // (one occlusion query each); false with `error` when the shader does
+  // not build.
+  bool Occlude(vtkOpenGLRenderWindow* window, vtkMatrix4x4* modelToClip,
+    const vtkShepardSplatNodes& nodes, vtkRadiosityTexelBuffer* boxes,
+    std::vector<unsigned char>& draw, Culling& culling, std::string& error);
+
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkNew<vtkTextureObject> Position;
   vtkNew<vtkTextureObject> Normal;
@@ -81,6 +106,8 @@ private:
   vtkNew<vtkOpenGLVertexArrayObject> SplatArrays; // none: an empty VAO
   std::unique_ptr<vtkOpenGLQuadHelper> Normalise;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  std::vector<unsigned int> Queries; // occlusion query objects, reused
+  vtkOpenGLRenderWindow* QueriesContext = nullptr;
   int Width = 0;
   int Height = 0;
 };
