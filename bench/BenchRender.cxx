@@ -25,6 +25,15 @@
 //
 //   bench_render <output dir> [--quick] [--bunny index.js] [--frames N] [--png dir]
 //                [--scene cornell|office|bunny]   (--scene: that scene alone)
+//                [--culling]
+//
+// --culling: the splat mapper's exact per-pixel splats (Evaluation SPLATS)
+// alone, without culling, with the view frustum's and with the frustum's
+// and the occlusion queries' (Lehtinen et al. 2007, 6.2), on the Cornell
+// box, the Cornell box from close in front of the tall block, and the
+// office; 640 x 480 and 1280 x 720 only, 10 frames a size (--frames N), the
+// fraction of the field's points culled averaged over the path; written to
+// <output dir>/render-culling.md.
 //
 // Writes <output dir>/render.md. 60 frames a size, 30 on the bunny room
 // (--frames: N everywhere). Quick (CI): the Cornell box only, 3 frames a
@@ -47,6 +56,7 @@
 #include "vtkRadiosityWindowPNG.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkShepardSplatMapper.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
@@ -76,7 +86,15 @@ enum Kind
   VectorIrradiance,
   Splats,
   Gouraud,
-  Pass
+  Pass,
+  ExactSplats ///< SPLATS, with Display::Culling
+};
+
+enum CullingMode
+{
+  NoCulling,
+  FrustumCulling,
+  OcclusionCulling
 };
 
 struct Display
@@ -86,6 +104,7 @@ struct Display
   const char* Path; ///< vtkRadiosityPassDisplay::GetPathName of its actor
   int Method;       ///< the method whose solution it draws
   int BigMethod;    ///< on the big scene; -1: not run there
+  int Culling = -1; ///< ExactSplats: a CullingMode
 };
 
 const Display Displays[] = {
@@ -97,6 +116,15 @@ const Display Displays[] = {
     vtkRadiosityFilter::FaceCluster },
   { Pass, "vtkRadiosityPass", "vector irradiance", vtkRadiosityFilter::FaceCluster,
     vtkRadiosityFilter::FaceCluster },
+};
+
+const Display CullingDisplays[] = {
+  { ExactSplats, "SPLATS, no culling", "splats", vtkRadiosityFilter::Meshless,
+    vtkRadiosityFilter::Meshless, NoCulling },
+  { ExactSplats, "SPLATS, frustum", "splats", vtkRadiosityFilter::Meshless,
+    vtkRadiosityFilter::Meshless, FrustumCulling },
+  { ExactSplats, "SPLATS, frustum + occlusion", "splats", vtkRadiosityFilter::Meshless,
+    vtkRadiosityFilter::Meshless, OcclusionCulling },
 };
 
 struct SceneCase
@@ -200,6 +228,7 @@ struct SizeRow
 {
   int Width = 0, Height = 0, Frames = 0;
   double Warmup = 0.0, Median = 0.0, Mean = 0.0, Worst = 0.0, Lit = 0.0;
+  double Culled = 0.0, Occluded = 0.0; ///< ExactSplats: mean fractions of the points
 };
 
 struct Row
@@ -257,11 +286,18 @@ bool SetUp(const Display& d, int method, const SceneCase& sc, Solutions& solutio
     return false;
   }
   ren->AddActor(display->GetActor());
+  if (d.Which == ExactSplats)
+  {
+    vtkShepardSplatMapper* splats = display->GetSplatMapper();
+    splats->SetEvaluationToSplats();
+    splats->SetCulling(d.Culling != NoCulling);
+    splats->SetOcclusionQueries(d.Culling == OcclusionCulling);
+  }
   return true;
 }
 
 bool Run(const Display& d, int method, const SceneCase& sc, Solutions& solutions, int frames,
-  const std::string& pngDir, Row& row, std::string& gl, std::string& error)
+  int sizes, const std::string& pngDir, Row& row, std::string& gl, std::string& error)
 {
   row.Scene = sc.Name;
   row.Display = d.Name;
@@ -278,7 +314,7 @@ bool Run(const Display& d, int method, const SceneCase& sc, Solutions& solutions
     return false;
   }
   vtkCamera* camera = ren->GetActiveCamera();
-  for (int s = 0; s < 3; ++s)
+  for (int s = 0; s < sizes; ++s)
   {
     SizeRow& out = row.Sizes[s];
     out.Width = Sizes[s][0];
@@ -303,6 +339,7 @@ bool Run(const Display& d, int method, const SceneCase& sc, Solutions& solutions
       }
     }
     std::vector<double> times;
+    vtkShepardSplatMapper* splats = display->GetSplatMapper();
     for (int i = 1; i <= frames; ++i)
     {
       const bench::Clock::time_point start = bench::Clock::now();
@@ -311,6 +348,13 @@ bool Run(const Display& d, int method, const SceneCase& sc, Solutions& solutions
       window->Render();
       window->WaitForCompletion();
       times.push_back(bench::Since(start));
+      if (d.Which == ExactSplats)
+      {
+        const double all = static_cast<double>(splats->GetNumberOfSplattedPoints() +
+          splats->GetNumberOfFrustumCulledPoints() + splats->GetNumberOfOcclusionCulledPoints());
+        out.Culled += (1.0 - splats->GetNumberOfSplattedPoints() / std::max(1.0, all)) / frames;
+        out.Occluded += splats->GetNumberOfOcclusionCulledPoints() / std::max(1.0, all) / frames;
+      }
     }
     out.Mean = std::accumulate(times.begin(), times.end(), 0.0) / times.size();
     std::sort(times.begin(), times.end());
@@ -327,8 +371,13 @@ bool Run(const Display& d, int method, const SceneCase& sc, Solutions& solutions
     std::cout << sc.Name << ", " << d.Name << " (" << row.Method << "), " << out.Width << " x "
               << out.Height << ": " << std::fixed << std::setprecision(1) << 1e3 * out.Median
               << " ms median, " << 1e3 * out.Mean << " mean, " << 1e3 * out.Worst << " worst, "
-              << 1.0 / out.Mean << " fps, " << std::setprecision(0) << 100.0 * out.Lit << "% lit"
-              << std::defaultfloat << std::endl;
+              << 1.0 / out.Mean << " fps, " << std::setprecision(0) << 100.0 * out.Lit << "% lit";
+    if (d.Which == ExactSplats)
+    {
+      std::cout << ", " << std::setprecision(1) << 100.0 * out.Culled << "% of the points culled ("
+                << 100.0 * out.Occluded << "% by occlusion)";
+    }
+    std::cout << std::defaultfloat << std::endl;
     if (s == 0 && !pngDir.empty())
     {
       std::string name = sc.Name + "-" + d.Name + ".png";
@@ -354,22 +403,36 @@ std::string LoadAverage()
 
 void WriteMarkdown(std::ostream& md, const BenchArguments& args, const std::vector<Row>& rows,
   const std::string& gl, const std::string& command, const std::string& loadBefore,
-  const std::string& loadAfter, double seconds)
+  const std::string& loadAfter, double seconds, bool culling)
 {
-  args.WriteHeading(md, "Frame rates of the displays along a camera path");
+  args.WriteHeading(md,
+    culling ? "Frame rates of the splat mapper's exact splats, with and without culling"
+            : "Frame rates of the displays along a camera path");
   md << "OpenGL renderer:" << gl << ". Load average (1, 5, 15 min) " << loadBefore
      << " at the start, " << loadAfter << " at the end; " << std::fixed << std::setprecision(0)
      << seconds << " s in all. Command: `" << command << "`.\n\n";
   md << "A frame: the camera moved along the path, `Render()`, `WaitForCompletion()` (glFinish),"
      << " on an X window (Xvfb) without multisampling; each size starts with an untimed frame. fps"
      << " = 1000 / mean ms. Lit: the pixels of the last frame (the path's start) above 8/255.\n\n";
-  md << "| scene | display | 640 x 480 fps | 1280 x 720 fps | 1920 x 1080 fps |\n|---|---|---|---|---|\n";
+  md << "| scene | display | 640 x 480 fps | 1280 x 720 fps | 1920 x 1080 fps |"
+     << (culling ? " culled (occluded) at 640 x 480 |\n|---|---|---|---|---|---|\n"
+                 : "\n|---|---|---|---|---|\n");
   for (const Row& r : rows)
   {
     md << "| " << r.Scene << " | " << r.Display << " |";
     for (const SizeRow& s : r.Sizes)
     {
+      if (s.Frames == 0)
+      {
+        md << " - |";
+        continue;
+      }
       md << " " << std::setprecision(s.Mean > 0.1 ? 2 : 1) << 1.0 / s.Mean << " |";
+    }
+    if (culling)
+    {
+      md << " " << std::setprecision(1) << 100.0 * r.Sizes[0].Culled << "% ("
+         << 100.0 * r.Sizes[0].Occluded << "%) |";
     }
     md << "\n";
   }
@@ -380,6 +443,10 @@ void WriteMarkdown(std::ostream& md, const BenchArguments& args, const std::vect
   {
     for (const SizeRow& s : r.Sizes)
     {
+      if (s.Frames == 0)
+      {
+        continue;
+      }
       md << "| " << r.Scene << " | " << r.Triangles << " | " << r.Display << " | " << r.Method
          << " | " << std::setprecision(2) << r.Solve << " | " << r.FirstDraw << " | " << s.Width
          << " x " << s.Height << " | " << s.Frames << " | " << std::setprecision(1) << 1e3 * s.Median
@@ -410,6 +477,7 @@ int main(int argc, char* argv[])
   int frames = 0; // each scene's own
 
   std::string pngDir, only;
+  bool culling = false;
   std::string command = "bench_render";
   for (int i = 1; i < argc; ++i)
   {
@@ -427,6 +495,10 @@ int main(int argc, char* argv[])
     {
       only = argv[i + 1];
     }
+    else if (a == "--culling")
+    {
+      culling = true;
+    }
   }
   std::string why;
   if (!vtkRadiosityView::CanOpenWindow(why))
@@ -439,6 +511,13 @@ int main(int argc, char* argv[])
   scenes.push_back({ "cornell", [] { return radiosity::MakeCornellBox(); }, false, args.Quick ? 3 : 60,
     { cornell.Position[0], cornell.Position[1], cornell.Position[2] }, { 0.278, 0.273, 0.28 },
     { 0, 1, 0 }, cornell.ViewAngle, 1.0 });
+  if (culling)
+  {
+    // In front of the tall block, looking at the back wall past it.
+    scenes.push_back({ "cornell close-up", [] { return radiosity::MakeCornellBox(); }, false,
+      args.Quick ? 3 : 10, { 0.37, 0.17, 0.08 }, { 0.37, 0.17, 0.559 }, { 0, 1, 0 }, 50.0, 1.0 });
+    scenes.front().Frames = args.Quick ? 3 : 10;
+  }
   if (!args.Quick)
   {
     scenes.push_back({ "office", [] { return radiosity::MakeOfficeScene(); }, false, 60,
@@ -463,7 +542,12 @@ int main(int argc, char* argv[])
     }
     const radiosity::Scene scene = sc.Make();
     Solutions solutions(scene);
-    for (const Display& d : Displays)
+    std::vector<Display> displays(std::begin(Displays), std::end(Displays));
+    if (culling)
+    {
+      displays.assign(std::begin(CullingDisplays), std::end(CullingDisplays));
+    }
+    for (const Display& d : displays)
     {
       const int method = sc.Big ? d.BigMethod : d.Method;
       if (method < 0)
@@ -472,7 +556,10 @@ int main(int argc, char* argv[])
       }
       Row row;
       std::string error;
-      if (!Run(d, method, sc, solutions, frames > 0 ? frames : sc.Frames, pngDir, row, gl, error))
+      // The exact splats take seconds a frame on llvmpipe: two sizes.
+      const int sceneFrames = culling && sc.Name == "office" ? 10 : sc.Frames;
+      if (!Run(d, method, sc, solutions, frames > 0 ? frames : sceneFrames, culling ? 2 : 3, pngDir,
+            row, gl, error))
       {
         std::cerr << "bench_render: " << sc.Name << ", " << d.Name << ": " << error << std::endl;
         return 1;
@@ -480,7 +567,8 @@ int main(int argc, char* argv[])
       rows.push_back(row);
     }
   }
-  std::ofstream md(args.Directory + "/render.md");
-  WriteMarkdown(md, args, rows, gl, command, loadBefore, LoadAverage(), bench::Since(start));
+  std::ofstream md(args.Directory + (culling ? "/render-culling.md" : "/render.md"));
+  WriteMarkdown(
+    md, args, rows, gl, command, loadBefore, LoadAverage(), bench::Since(start), culling);
   return md ? 0 : 1;
 }
