@@ -17,6 +17,7 @@
 #include "vtkRadiositySceneConverter.h"
 #include "vtkRadiosityRankExchange.h"
 #include "vtkRadiosityRequestGuard.h"
+#include "vtkStringArray.h"
 #include "vtkVersion.h"
 
 #include "Radiosity/FaceCluster/FaceClusterMethod.h"
@@ -31,9 +32,18 @@
 
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 
 vtkStandardNewMacro(vtkRadiosityFilter);
 vtkCxxSetObjectMacro(vtkRadiosityFilter, Controller, vtkMultiProcessController);
+
+namespace
+{
+bool StartsWith(const std::string& text, const char* prefix)
+{
+  return text.compare(0, std::char_traits<char>::length(prefix), prefix) == 0;
+}
+}
 
 namespace
 {
@@ -486,7 +496,10 @@ int vtkRadiosityFilter::ExecuteRequest(
   const auto start = Clock::now();
   this->LastError.clear();
   this->Warnings.clear();
+  // A kept transfer may serve this request (Relighting); otherwise dropped below.
+  std::shared_ptr<radiosity::RadiositySolver> previous = std::move(this->Solver);
   this->Solver.reset();
+  this->RelightingPrecomputeSeconds = 0.0;
   this->Solution.reset();
   this->SolutionPending = false;
   this->Statistics = radiosity::SolverStatistics();
@@ -559,18 +572,73 @@ int vtkRadiosityFilter::ExecuteRequest(
     return collective ? !this->Share->AnyRank(!go) : go;
   };
 
-  // One path for every method: build its solver, solve, output the surface
-  // (port 0) and the method's own product (port 1).
-  this->Solver = this->MakeSolver(sharedScene);
-  this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-  last = Clock::now();
-  const auto solving = last;
-  scale = 0.9;
-  collective = distributed;
-  this->Statistics = this->Solver->Solve(progress);
-  collective = false;
+  // Relighting: the kept transfer applies when the settings are those it
+  // was precomputed with and the surfaces are the same (the solver checks
+  // them and refuses, naming the difference, before changing anything).
+  bool relit = false;
+  this->RelightingStatus = this->Relighting ? "pending" : "off";
+  if (this->Relighting && !distributed && previous && previous->HasRelighting() &&
+    this->RelightingSettingsKey() == this->RelightingSettings)
+  {
+    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    last = Clock::now();
+    const auto relighting = last;
+    try
+    {
+      this->Statistics = previous->Relight(sharedScene, progress);
+      relit = true;
+      this->Solver = previous;
+      this->SolveWallSeconds = std::chrono::duration<double>(Clock::now() - relighting).count();
+      if (const auto meshless = this->GetMeshlessSolution())
+      {
+        const radiosity::MeshlessStatistics& m = meshless->Statistics();
+        std::ostringstream status;
+        status << "relit: direct light " << m.RelightDirectSeconds << " s, transfer " << m.RelightIndirectSeconds
+               << " s, " << m.RelightBounces << " bounces";
+        this->RelightingStatus = status.str();
+      }
+    }
+    catch (const radiosity::SceneError& e)
+    {
+      this->Warn(std::string("relighting invalidated: ") + e.what());
+      this->RelightingStatus = std::string("invalidated: ") + e.what();
+    }
+  }
+  else if (this->Relighting && previous && previous->HasRelighting())
+  {
+    const std::string why = distributed ? "the request runs on MPI ranks"
+                                        : "the method's settings changed since the precomputation";
+    this->Warn("relighting invalidated: " + why + "; solving and precomputing again");
+    this->RelightingStatus = "invalidated: " + why;
+  }
+  previous.reset();
+  if (!relit)
+  {
+    // One path for every method: build its solver, solve, output the surface
+    // (port 0) and the method's own product (port 1).
+    this->Solver = this->MakeSolver(sharedScene);
+    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    last = Clock::now();
+    const auto solving = last;
+    scale = 0.9;
+    collective = distributed;
+    this->Statistics = this->Solver->Solve(progress);
+    collective = false;
+    this->SolveWallSeconds = std::chrono::duration<double>(Clock::now() - solving).count();
+    if (this->Relighting)
+    {
+      // An invalidated transfer's status keeps why, before the new one's.
+      const std::string invalidated =
+        StartsWith(this->RelightingStatus, "invalidated: ") ? this->RelightingStatus + "; " : std::string();
+      this->PrecomputeRelighting(progress);
+      this->RelightingStatus = invalidated + this->RelightingStatus;
+    }
+    else
+    {
+      this->RelightingStatus = "off";
+    }
+  }
   const auto solved = Clock::now();
-  this->SolveWallSeconds = std::chrono::duration<double>(solved - solving).count();
   if (distributed)
   {
     // Each rank's share of the split loops, for the report (one all-gather).
@@ -620,6 +688,10 @@ int vtkRadiosityFilter::ExecuteRequest(
   if (!distributed || !own.Triangles.empty())
   {
     output->GetFieldData()->AddArray(vtkRadiositySceneConverter::FromHistory(this->Statistics.History));
+    vtkNew<vtkStringArray> relighting;
+    relighting->SetName("Relighting");
+    relighting->InsertNextValue(this->RelightingStatus);
+    output->GetFieldData()->AddArray(relighting);
   }
   for (radiosity::ProductArray a :
     surface ? this->Solver->SurfacePointArrays() : std::vector<radiosity::ProductArray>())
@@ -694,6 +766,58 @@ int vtkRadiosityFilter::ExecuteRequest(
   return 1;
 }
 
+std::string vtkRadiosityFilter::RelightingSettingsKey() const
+{
+  std::ostringstream key;
+  key.precision(17);
+  key << this->Method << ' ' << this->Tolerance << ' ' << this->MaxIterations << ' ' << this->MaxTime << ' '
+      << this->NumberOfThreads << ' ' << this->MaxMemory << ' ' << this->PointRadius << ' ' << this->PointLevels
+      << ' ' << this->GatherRays << ' ' << this->VariationThreshold << ' ' << this->SolidAngleThreshold;
+  return key.str();
+}
+
+void vtkRadiosityFilter::PrecomputeRelighting(const radiosity::ProgressCallback& progress)
+{
+  this->RelightingSettings.clear();
+  if (this->Controller && this->Controller->GetNumberOfProcesses() > 1)
+  {
+    this->RelightingStatus = "unavailable: relighting runs on one process (this request runs on MPI ranks)";
+    return;
+  }
+  if (!this->Solver->SupportsRelighting())
+  {
+    this->RelightingStatus = std::string("unavailable: method ") + this->Solver->MethodName() +
+      " has no relighting (Method Meshless has)";
+    this->Warn("Relighting is on, but " + this->RelightingStatus.substr(13));
+    return;
+  }
+  if (this->Statistics.Stop == radiosity::StopReason::Aborted ||
+    this->Statistics.Stop == radiosity::StopReason::NoEmitters)
+  {
+    this->RelightingStatus = "unavailable: the solve was aborted or had no light; nothing precomputed";
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  if (!this->Solver->PrecomputeRelighting(progress))
+  {
+    this->RelightingStatus = "unavailable: the precomputation was aborted";
+    return;
+  }
+  this->RelightingPrecomputeSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->RelightingSettings = this->RelightingSettingsKey();
+  std::ostringstream status;
+  status << "precomputed: ";
+  if (const auto meshless = this->GetMeshlessSolution())
+  {
+    const radiosity::MeshlessStatistics& m = meshless->Statistics();
+    status << m.TransferReceivers << " receivers, " << m.TransferEntries << " entries, "
+           << static_cast<double>(m.TransferBytes) / 1048576.0 << " MiB, ";
+  }
+  status << this->RelightingPrecomputeSeconds << " s";
+  this->RelightingStatus = status.str();
+}
+
 void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -728,6 +852,9 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinDiscontinuityWeight: " << this->MinDiscontinuityWeight << "\n";
   os << indent << "SurfaceOutput: " << (this->SurfaceOutput ? "On" : "Off") << "\n";
   os << indent << "ProductOutput: " << (this->ProductOutput ? "On" : "Off") << "\n";
+  os << indent << "Relighting: " << (this->Relighting ? "On" : "Off") << "\n";
+  os << indent << "RelightingStatus: " << this->RelightingStatus << "\n";
+  os << indent << "RelightingPrecomputeSeconds: " << this->RelightingPrecomputeSeconds << "\n";
   os << indent << "ConformingBoundaries: " << (this->ConformingBoundaries ? "On" : "Off") << "\n";
   os << indent << "Lights: " << this->Lights->GetNumberOfItems() << " vtkLights\n";
   {

@@ -480,6 +480,39 @@ public:
   vtkBooleanMacro(ConformingBoundaries, bool);
   ///@}
 
+  ///@{
+  /**
+   * Relighting (Lehtinen et al. 2007, section 6.5; Method Meshless, one
+   * process). Off by default. On: after a solve the filter precomputes the
+   * direct-to-indirect transfer (seconds to minutes, and memory:
+   * GetRelightingStatus says how much), and keeps it. A later request whose
+   * scene has the same surfaces (points, triangles, objects, reflectance
+   * and specular colour) and whose meshless settings are unchanged is then
+   * not solved again: the lights, the sky and the triangles' emission may
+   * move or change intensity and colour, and only the direct light is
+   * computed anew, the indirect light following through the transfer
+   * (about a hundred milliseconds on the Cornell box; bench/results/
+   * relight.md). A change of geometry, reflectance or settings invalidates
+   * the transfer: that request solves and precomputes again, with a
+   * warning naming what changed. Another method, or MPI ranks, solve every
+   * time (the status says why).
+   */
+  vtkSetMacro(Relighting, bool);
+  vtkGetMacro(Relighting, bool);
+  vtkBooleanMacro(Relighting, bool);
+  ///@}
+
+  /**
+   * What the last request did about relighting, also in port 0's field
+   * data as the string array `Relighting`: "off"; "precomputed: ..." (the
+   * transfer's receivers, entries, megabytes and seconds); "relit: ..."
+   * (seconds of direct light and of transfer, bounces); "invalidated: ..."
+   * (what changed; solved and precomputed again); "unavailable: ..." (why).
+   */
+  const std::string& GetRelightingStatus() const { return this->RelightingStatus; }
+  /// Seconds the last request spent precomputing the transfer (0 when it did not).
+  double GetRelightingPrecomputeSeconds() const { return this->RelightingPrecomputeSeconds; }
+
   /**
    * The last solve's solver behind the common core interface (it keeps its
    * scene alive, and after an abort holds the partial solution); null before
@@ -553,6 +586,7 @@ protected:
   bool DiscontinuityMeshing = true;
   bool SurfaceOutput = true;
   bool ProductOutput = true;
+  bool Relighting = false;
   int MaxDiscontinuitiesPerLeaf = 10;
   double MinDiscontinuityWeight = 0.05;
   bool ConformingBoundaries = true;
@@ -619,6 +653,15 @@ private:
   double AgreedMemoryBudget = 0.0;
   /// The ranks' split of the solve (null on one process).
   std::shared_ptr<radiosity::WorkShare> Share;
+  /// Relighting: what the last request did, the settings the kept
+  /// transfer was precomputed with, and the precomputation's time.
+  std::string RelightingStatus = "off";
+  std::string RelightingSettings;
+  double RelightingPrecomputeSeconds = 0.0;
+  /// The settings a precomputed transfer depends on (the method's, not the lights').
+  std::string RelightingSettingsKey() const;
+  /// After a solve with Relighting on: precompute the transfer, or say why not.
+  void PrecomputeRelighting(const radiosity::ProgressCallback& progress);
 };
 
 #endif

@@ -30,7 +30,10 @@ class DirectLighting
 {
 public:
   /// `skySamples` directions of the sky quadrature (at least 4).
-  explicit DirectLighting(const Scene& scene, int skySamples = 256);
+  /// `occluders`: rays over every triangle of `scene` built already (a
+  /// relight of a solved scene reuses its solver's), kept alive by the
+  /// caller; null: built here when there is a light.
+  explicit DirectLighting(const Scene& scene, int skySamples = 256, const Visibility* occluders = nullptr);
   ~DirectLighting();
   DirectLighting(const DirectLighting&) = delete;
   DirectLighting& operator=(const DirectLighting&) = delete;
@@ -52,6 +55,18 @@ public:
   RGB PunctualOne(std::size_t light, const Vec3& x, const Vec3& n) const;
   /// Sky irradiance at x by the stratified quadrature.
   RGB SkyIrradiance(const Vec3& x, const Vec3& n) const;
+  /// Words of a SkyVisibility mask: one bit per quadrature direction.
+  std::size_t SkyMaskWords() const { return (static_cast<std::size_t>(this->SkySampleCount) + 63) / 64; }
+  /// Which of the sky quadrature's directions at x (normal n) reach the sky,
+  /// every direction whatever the sky's radiance there: bit i of `mask`
+  /// (SkyMaskWords() words). It depends on the geometry alone, so a relight
+  /// keeps it (MeshlessRadiosity) and SkyIrradianceMasked replays the
+  /// quadrature for any sky without a ray. Needs the shadow rays (a light or
+  /// a sky, or the caller's occluders).
+  void SkyVisibility(const Vec3& x, const Vec3& n, std::uint64_t* mask) const;
+  /// SkyIrradiance from a SkyVisibility mask taken at a point of normal n:
+  /// the same sum over the same directions.
+  RGB SkyIrradianceMasked(const Vec3& n, const std::uint64_t* mask) const;
   RGB Irradiance(const Vec3& x, const Vec3& n) const
   {
     return this->Punctual(x, n) + this->SkyIrradiance(x, n);
@@ -122,7 +137,7 @@ public:
   double FarDistance(const Vec3& x) const;
   std::size_t RaysCast() const;
   /// The BVH over every triangle the shadow rays use (null without lights).
-  const Visibility* ShadowRays() const { return this->Occluders.get(); }
+  const Visibility* ShadowRays() const { return this->Occluders; }
 
 private:
   const Scene& SourceScene;
@@ -130,7 +145,8 @@ private:
   int SkySampleCount = 256;
   Vec3 Centre{ 0.0 };
   double Extent = 1.0;
-  std::unique_ptr<Visibility> Occluders;
+  std::unique_ptr<Visibility> OwnOccluders;
+  const Visibility* Occluders = nullptr; ///< OwnOccluders, or the caller's
 };
 
 /// The scene's lights rescaled: every punctual intensity and the sky radiance times `scale`.

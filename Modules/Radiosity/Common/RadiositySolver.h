@@ -113,6 +113,30 @@ public:
   }
   /// The method's own product (may take time: progress and abort apply).
   virtual SolverProduct Product(const ProgressCallback& progress) const = 0;
+
+  ///@{
+  /**
+   * Relighting (Lehtinen et al. 2007, section 6.5): after Solve, a method
+   * that supports it precomputes its light transfer (false when aborted
+   * through `progress`; SceneError when it cannot); then Relight solves for
+   * the lighting of `scene` (new emission, lights, sky; the same surfaces,
+   * else SceneError naming the difference), which becomes the solver's
+   * scene. The other methods refuse with a SceneError.
+   */
+  virtual bool SupportsRelighting() const { return false; }
+  virtual bool HasRelighting() const { return false; }
+  virtual bool PrecomputeRelighting(const ProgressCallback& progress)
+  {
+    (void)progress;
+    throw SceneError(std::string(this->MethodName()) + " radiosity has no relighting (meshless has)");
+  }
+  virtual SolverStatistics Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress)
+  {
+    (void)scene;
+    (void)progress;
+    throw SceneError(std::string(this->MethodName()) + " radiosity has no relighting (meshless has)");
+  }
+  ///@}
   const Scene& GetScene() const { return *this->SceneRef; }
   std::shared_ptr<const Scene> SharedScene() const { return this->SceneRef; }
 

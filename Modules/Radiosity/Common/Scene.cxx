@@ -238,4 +238,53 @@ void AppendScene(Scene& scene, const Scene& other)
     scene.Lighting.SkyLight = other.Lighting.SkyLight;
   }
 }
+bool SameSurfaces(const Scene& a, const Scene& b, std::string* why)
+{
+  const auto differ = [why](const std::string& what) {
+    if (why)
+    {
+      *why = what;
+    }
+    return false;
+  };
+  const auto text = [](const Vec3& v) {
+    std::ostringstream s;
+    s.precision(9);
+    s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return s.str();
+  };
+  if (a.Points.size() != b.Points.size() || a.Triangles.size() != b.Triangles.size())
+  {
+    return differ("the geometry changed: " + std::to_string(a.Triangles.size()) + " triangles on " +
+      std::to_string(a.Points.size()) + " points, now " + std::to_string(b.Triangles.size()) + " on " +
+      std::to_string(b.Points.size()));
+  }
+  for (std::size_t p = 0; p < a.Points.size(); ++p)
+  {
+    if (a.Points[p] != b.Points[p])
+    {
+      return differ("the geometry changed: point " + std::to_string(p) + " moved from " + text(a.Points[p]) +
+        " to " + text(b.Points[p]));
+    }
+  }
+  for (std::size_t t = 0; t < a.Triangles.size(); ++t)
+  {
+    const Triangle& x = a.Triangles[t];
+    const Triangle& y = b.Triangles[t];
+    if (x.V[0] != y.V[0] || x.V[1] != y.V[1] || x.V[2] != y.V[2] || a.ObjectIds[t] != b.ObjectIds[t])
+    {
+      return differ("the geometry changed: triangle " + std::to_string(t) + " has other points or another object");
+    }
+    if (a.Materials[t].Reflectance != b.Materials[t].Reflectance)
+    {
+      return differ("the reflectance of triangle " + std::to_string(t) + " changed from " +
+        text(a.Materials[t].Reflectance) + " to " + text(b.Materials[t].Reflectance));
+    }
+    if (a.Materials[t].Specular != b.Materials[t].Specular || a.Materials[t].Shininess != b.Materials[t].Shininess)
+    {
+      return differ("the specular colour of triangle " + std::to_string(t) + " changed");
+    }
+  }
+  return true;
+}
 } // namespace radiosity

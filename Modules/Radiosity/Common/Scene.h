@@ -54,6 +54,14 @@ struct Scene
   double EmittedPower() const; ///< sum of luminance-free RGB power: sum of (r+g+b)/3 * area
 };
 
+/**
+ * Whether `b` has the surfaces of `a`: the same points, triangles, objects,
+ * reflectance and specular colour (emission, lights and sky may differ).
+ * What a precomputed light transfer depends on; otherwise false, with `why`
+ * naming the first difference (the triangle or point and the values).
+ */
+bool SameSurfaces(const Scene& a, const Scene& b, std::string* why = nullptr);
+
 struct SceneCleanupReport
 {
   std::size_t DegenerateTrianglesDropped = 0;

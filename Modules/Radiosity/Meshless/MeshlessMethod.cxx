@@ -80,4 +80,32 @@ SolverProduct MeshlessMethod::Product(const ProgressCallback&) const
     std::move(coefficient), std::move(directCoefficient), std::move(irradiance), std::move(gathered) };
   return product;
 }
+bool MeshlessMethod::PrecomputeRelighting(const ProgressCallback& progress)
+{
+  return this->Solver.PrecomputeTransfer(progress);
+}
+
+SolverStatistics MeshlessMethod::Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress)
+{
+  if (!scene)
+  {
+    throw SceneError("meshless relighting: no scene");
+  }
+  // The solver keeps a reference: the scene is held here first (a refused
+  // relight leaves the solver on its old scene, still held).
+  std::shared_ptr<const Scene> previous = this->SceneRef;
+  this->SceneRef = scene;
+  try
+  {
+    return this->Solver.Relight(*scene, progress);
+  }
+  catch (...)
+  {
+    if (&this->Solver.GetScene() != scene.get())
+    {
+      this->SceneRef = previous;
+    }
+    throw;
+  }
+}
 } // namespace radiosity

@@ -25,6 +25,12 @@ public:
   /// `Group`, `Coefficient` (total irradiance), `DirectCoefficient`,
   /// `Irradiance` (the field evaluated at the point) and `Gathered`.
   SolverProduct Product(const ProgressCallback& progress) const override;
+
+  /// Section 6.5: MeshlessRadiosity::PrecomputeTransfer and Relight.
+  bool SupportsRelighting() const override { return true; }
+  bool HasRelighting() const override { return this->Solver.HasTransfer(); }
+  bool PrecomputeRelighting(const ProgressCallback& progress) override;
+  SolverStatistics Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress) override;
 };
 } // namespace radiosity
 

@@ -10,6 +10,10 @@
 #include "Radiosity/Common/Stopwatch.h"
 #include "Radiosity/Common/ThreadLimit.h"
 #include "Radiosity/Common/Visibility.h"
+#include "Radiosity/Meshless/BounceSeries.h"
+#include "Radiosity/Meshless/MeshlessGather.h"
+#include "Radiosity/Meshless/MeshlessNeighbourhoods.h"
+#include "Radiosity/Meshless/MeshlessTransfer.h"
 
 #include <tbb/parallel_for.h>
 
@@ -19,36 +23,6 @@
 
 namespace radiosity
 {
-namespace
-{
-
-double RadicalInverse2(std::uint32_t i)
-{
-  i = (i << 16u) | (i >> 16u);
-  i = ((i & 0x55555555u) << 1u) | ((i & 0xAAAAAAAAu) >> 1u);
-  i = ((i & 0x33333333u) << 2u) | ((i & 0xCCCCCCCCu) >> 2u);
-  i = ((i & 0x0F0F0F0Fu) << 4u) | ((i & 0xF0F0F0F0u) >> 4u);
-  i = ((i & 0x00FF00FFu) << 8u) | ((i & 0xFF00FF00u) >> 8u);
-  return static_cast<double>(i) * 2.3283064365386963e-10;
-}
-
-/// A per-receiver pseudo-random rotation in [0, 1): splitmix64 of (seed, index).
-double Rotation(std::uint64_t seed, std::uint64_t index)
-{
-  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + index + 0x632BE59BD9B4E019ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
-}
-
-void Frame(const Vec3& n, Vec3& t, Vec3& b)
-{
-  const Vec3 a = std::fabs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
-  t = glm::normalize(glm::cross(a, n));
-  b = glm::cross(n, t);
-}
-} // namespace
 
 /// One term of the Neumann series: point values where computed, coefficients.
 struct MeshlessRadiosity::Bounce
@@ -68,7 +42,7 @@ namespace
 /// Eq. 10 for receivers sorted by level: each coefficient is its point's
 /// value less the approximation of the coarser levels there.
 void FitBatch(const PointHierarchy& points, const std::vector<std::uint32_t>& set,
-  const std::vector<RGB>& value, ShepardField& field)
+  const std::vector<RGB>& value, ShepardField& field, const MeshlessNeighbourhoods* lists = nullptr)
 {
   const auto& all = points.Points();
   std::vector<RGB>& alpha = field.Coefficients();
@@ -84,7 +58,24 @@ void FitBatch(const PointHierarchy& points, const std::vector<std::uint32_t>& se
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       const std::uint32_t j = set[k];
       const MeshlessPoint& p = all[j];
-      alpha[j] = level == 0 ? value[j] : value[j] - field.Evaluate(p.Position, p.Normal, p.Group, level - 1);
+      if (level == 0)
+      {
+        alpha[j] = value[j];
+      }
+      else if (lists)
+      {
+        // ShepardField::Evaluate's sum, from the listed basis values.
+        RGB f(0.0);
+        for (const auto& [i, w] : lists->Fit(j))
+        {
+          f += w * alpha[i];
+        }
+        alpha[j] = value[j] - f;
+      }
+      else
+      {
+        alpha[j] = value[j] - field.Evaluate(p.Position, p.Normal, p.Group, level - 1);
+      }
     });
     begin = end;
   }
@@ -92,9 +83,16 @@ void FitBatch(const PointHierarchy& points, const std::vector<std::uint32_t>& se
 }
 
 MeshlessRadiosity::MeshlessRadiosity(const Scene& scene, const MeshlessOptions& options)
-  : SourceScene(scene)
+  : SourceScene(&scene)
   , Settings(options)
 {
+  this->FindEmitters();
+}
+
+void MeshlessRadiosity::FindEmitters()
+{
+  this->Emitters.clear();
+  const Scene& scene = *this->SourceScene;
   for (std::uint32_t t = 0; t < scene.Triangles.size(); ++t)
   {
     if (MaxComponent(scene.Materials[t].Emission) > 0)
@@ -117,9 +115,9 @@ RGB MeshlessRadiosity::DirectAt(std::uint32_t receiver) const
   unsigned char visible[64];
   for (std::uint32_t t : this->Emitters)
   {
-    const Vec3 a = this->SourceScene.Vertex(t, 0), b = this->SourceScene.Vertex(t, 1),
-               c = this->SourceScene.Vertex(t, 2);
-    const Vec3 emitterNormal = this->SourceScene.Normal(t);
+    const Vec3 a = this->SourceScene->Vertex(t, 0), b = this->SourceScene->Vertex(t, 1),
+               c = this->SourceScene->Vertex(t, 2);
+    const Vec3 emitterNormal = this->SourceScene->Normal(t);
     // A receiver on a surface coplanar with the emitter (the emitter itself,
     // a neighbour) sees none of it: the contour integral around a point
     // inside the polygon would count the whole hemisphere instead. A receiver
@@ -162,74 +160,32 @@ RGB MeshlessRadiosity::DirectAt(std::uint32_t receiver) const
     {
       seen += visible[k];
     }
-    e += f * (static_cast<double>(seen) / count) * this->SourceScene.Materials[t].Emission;
+    e += f * (static_cast<double>(seen) / count) * this->SourceScene->Materials[t].Emission;
   }
   if (this->Lights)
   {
-    // Punctual lights exactly (one shadow ray each), the sky by its quadrature.
-    e += this->Lights->Irradiance(p.Position, p.Normal);
+    // Punctual lights exactly (one shadow ray each), the sky by its
+    // quadrature; kept for the lights' own fit (KeepDirect).
+    const RGB light = this->SkyMaskWords > 0 && this->Lights->HasSky()
+      ? this->Lights->Punctual(p.Position, p.Normal) + this->CachedSky(receiver)
+      : this->Lights->Irradiance(p.Position, p.Normal);
+    if (receiver < this->LightValue.size())
+    {
+      this->LightValue[receiver] = light;
+      this->LightKnown[receiver] = 1;
+    }
+    e += light;
   }
   return e;
 }
 
 RGB MeshlessRadiosity::Gather(std::uint32_t receiver, const ShepardField& previous) const
 {
-  const MeshlessPoint& p = this->Hierarchy->Points()[receiver];
-  const Vec3 origin = p.Position + this->Rays->Offset() * p.Normal;
-  Vec3 tangent, bitangent;
-  Frame(p.Normal, tangent, bitangent);
-  const double turn = 2.0 * Pi * Rotation(this->Settings.Seed, receiver);
-  const int n = std::max(1, this->Settings.GatherRays);
-  const int levels = this->Hierarchy->NumberOfLevels();
-  thread_local std::vector<std::pair<std::uint32_t, double>> basis;
+  const std::vector<RGB>& alpha = previous.Coefficients();
   RGB sum(0.0);
-  for (int i = 0; i < n; ++i)
-  {
-    // Hammersley point, cosine-distributed (Malley), rotated about the normal.
-    const double u1 = (i + 0.5) / n, u2 = RadicalInverse2(static_cast<std::uint32_t>(i));
-    const double r = std::sqrt(u1), phi = 2.0 * Pi * u2 + turn;
-    const Vec3 dir = r * std::cos(phi) * tangent + r * std::sin(phi) * bitangent +
-      std::sqrt(std::max(0.0, 1.0 - u1)) * p.Normal;
-    double t = 0, hu = 0, hv = 0;
-    unsigned tri = 0;
-    if (!this->Rays->Intersect(origin, dir, t, tri, hu, hv))
-    {
-      continue; // escapes
-    }
-    const Vec3 nh = this->SourceScene.Normal(tri);
-    if (glm::dot(nh, dir) >= 0)
-    {
-      continue; // the back of a one-sided surface sends nothing
-    }
-    const Vec3 x = origin + t * dir;
-    const std::uint32_t group = static_cast<std::uint32_t>(this->SourceScene.ObjectIds[tri]);
-    // Sender level: down to the first level whose supports look small.
-    RGB h(0.0);
-    for (int level = 0; level < levels; ++level)
-    {
-      basis.clear();
-      previous.Basis(level, group, x, nh, basis);
-      if (basis.empty())
-      {
-        continue;
-      }
-      double r2 = 0.0;
-      for (const auto& [j, w] : basis)
-      {
-        h += w * previous.Coefficients()[j];
-        const double rj = this->Hierarchy->Points()[j].Radius;
-        r2 += rj * rj;
-      }
-      const double solidAngle = Pi * r2 / static_cast<double>(basis.size()) / std::max(t * t, 1e-300);
-      if (solidAngle < this->Settings.SolidAngleThreshold)
-      {
-        break;
-      }
-    }
-    sum += this->SourceScene.Materials[tri].Reflectance * h;
-  }
-  // Cosine-weighted estimator of E = int L cos dw with L = B / pi.
-  return sum / static_cast<double>(n);
+  GatherWeights(*this->SourceScene, *this->Hierarchy, previous, *this->Rays, this->Settings, receiver,
+    [&](std::uint32_t j, double w, const RGB& reflectance) { sum += w * reflectance * alpha[j]; });
+  return sum;
 }
 
 template <typename ValueAt>
@@ -259,7 +215,7 @@ void MeshlessRadiosity::Refine(Bounce& out, const ValueAt& valueAt)
     {
       out.Value[set[k]] = values[k];
     }
-    FitBatch(points, set, out.Value, *out.Field);
+    FitBatch(points, set, out.Value, *out.Field, this->Lists.get());
     for (std::uint32_t j : set)
     {
       out.Computed[j] = 1;
@@ -278,17 +234,29 @@ void MeshlessRadiosity::Refine(Bounce& out, const ValueAt& valueAt)
   // Coarsest-level oracle: variation against the neighbours non-zero there.
   std::vector<std::uint32_t> refine;
   std::vector<std::uint32_t> near;
+  const MeshlessNeighbourhoods* lists = this->Lists.get();
+  // The functions facing j's side among `near` (a search's), or j's list.
+  const auto facing = [&](std::uint32_t j, std::vector<std::uint32_t>& into) {
+    into.erase(std::remove_if(into.begin(), into.end(),
+                 [&](std::uint32_t k) { return !(glm::dot(all[k].Normal, all[j].Normal) > 0); }),
+      into.end());
+  };
   for (std::uint32_t j : wave)
   {
     near.clear();
-    points.Supporting(0, all[j].Group, all[j].Position, near);
+    if (lists)
+    {
+      near.assign(lists->Neighbours(j).begin(), lists->Neighbours(j).end());
+    }
+    else
+    {
+      points.Supporting(0, all[j].Group, all[j].Position, near);
+      facing(j, near);
+    }
     double variation = 0.0;
     for (std::uint32_t k : near)
     {
-      if (glm::dot(all[k].Normal, all[j].Normal) > 0)
-      {
-        variation = std::max(variation, MaxComponent(glm::abs(out.Value[k] - out.Value[j])));
-      }
+      variation = std::max(variation, MaxComponent(glm::abs(out.Value[k] - out.Value[j])));
     }
     if (variation > threshold)
     {
@@ -301,8 +269,19 @@ void MeshlessRadiosity::Refine(Bounce& out, const ValueAt& valueAt)
     std::vector<std::uint32_t> children;
     for (std::uint32_t k : refine)
     {
-      near.clear();
       const MeshlessPoint& parent = all[k];
+      if (lists)
+      {
+        for (std::uint32_t c : lists->Children(k))
+        {
+          if (!out.Computed[c])
+          {
+            children.push_back(c);
+          }
+        }
+        continue;
+      }
+      near.clear();
       points.Supporting(level, parent.Group, parent.Position, near);
       for (std::uint32_t c : near)
       {
@@ -318,6 +297,17 @@ void MeshlessRadiosity::Refine(Bounce& out, const ValueAt& valueAt)
     std::vector<std::uint32_t> missing;
     for (std::uint32_t c : children)
     {
+      if (lists)
+      {
+        for (std::uint32_t q : lists->Ancestors(c))
+        {
+          if (!out.Computed[q])
+          {
+            missing.push_back(q);
+          }
+        }
+        continue;
+      }
       for (int coarser = 1; coarser < level; ++coarser)
       {
         near.clear();
@@ -358,6 +348,8 @@ void MeshlessRadiosity::DirectLight(Bounce& out)
   // the coarsest level: compute it first.
   const PointHierarchy& points = *this->Hierarchy;
   this->Scale = 0.0;
+  this->LightValue.assign(this->Lights ? points.Points().size() : 0, RGB(0.0));
+  this->LightKnown.assign(this->LightValue.size(), 0);
   std::vector<RGB> coarse(points.LevelEnd(0) - points.LevelBegin(0));
   tbb::parallel_for(std::size_t(0), coarse.size(), [&](std::size_t k) {
     coarse[k] = this->DirectAt(static_cast<std::uint32_t>(points.LevelBegin(0) + k));
@@ -371,6 +363,71 @@ void MeshlessRadiosity::DirectLight(Bounce& out)
   });
 }
 
+void MeshlessRadiosity::KeepDirect(const Bounce& direct)
+{
+  const PointHierarchy& points = *this->Hierarchy;
+  this->Direct = std::make_unique<ShepardField>(points);
+  this->Direct->Coefficients() = direct.Field->Coefficients();
+  this->Solution->Coefficients() = direct.Field->Coefficients();
+  this->LightFit.reset();
+  if (!this->Lights)
+  {
+    return;
+  }
+  // The lights' share of the direct field: the same fit replayed with their
+  // values alone at the same points (the direct field itself when no
+  // triangle emits).
+  this->LightFit = std::make_unique<ShepardField>(points);
+  if (this->Emitters.empty())
+  {
+    this->LightFit->Coefficients() = direct.Field->Coefficients();
+    return;
+  }
+  std::vector<RGB> value(points.Points().size(), RGB(0.0));
+  for (const std::vector<std::uint32_t>& set : direct.Batches)
+  {
+    tbb::parallel_for(std::size_t(0), set.size(), [&](std::size_t k) {
+      const std::uint32_t j = set[k];
+      const MeshlessPoint& p = points.Points()[j];
+      // Another rank's gathers were not evaluated here.
+      value[j] = this->LightKnown[j] ? this->LightValue[j] : this->Lights->Irradiance(p.Position, p.Normal);
+    });
+    FitBatch(points, set, value, *this->LightFit, this->Lists.get());
+  }
+}
+
+double MeshlessRadiosity::ComputeDirect()
+{
+  Bounce direct;
+  this->DirectLight(direct);
+  this->KeepDirect(direct);
+  return direct.Magnitude;
+}
+
+RGB MeshlessRadiosity::CachedSky(std::uint32_t j) const
+{
+  const MeshlessPoint& p = this->Hierarchy->Points()[j];
+  std::uint64_t* mask = this->SkyMask.data() + j * this->SkyMaskWords;
+  if (!this->SkyKnown[j])
+  {
+    this->Lights->SkyVisibility(p.Position, p.Normal, mask);
+    this->SkyKnown[j] = 1;
+  }
+  return this->Lights->SkyIrradianceMasked(p.Normal, mask);
+}
+
+double MeshlessRadiosity::CoarseLightIrradiance() const
+{
+  const PointHierarchy& points = *this->Hierarchy;
+  double light = 0.0;
+  for (std::size_t j = points.LevelBegin(0); j < points.LevelEnd(0); ++j)
+  {
+    const MeshlessPoint& p = points.Points()[j];
+    light += Mean(this->LightKnown[j] ? this->LightValue[j] : this->Lights->Irradiance(p.Position, p.Normal));
+  }
+  return light;
+}
+
 void MeshlessRadiosity::ComputeBounce(const ShepardField& previous, Bounce& out)
 {
   this->Refine(out, [&](std::uint32_t j) { return this->Gather(j, previous); });
@@ -378,7 +435,7 @@ void MeshlessRadiosity::ComputeBounce(const ShepardField& previous, Bounce& out)
 
 RGB MeshlessRadiosity::IrradianceAt(const Vec3& x, const Vec3& n, std::uint32_t triangle) const
 {
-  return this->ExactLightsAt(x, this->SourceScene.Centroid(triangle), n, triangle);
+  return this->ExactLightsAt(x, this->SourceScene->Centroid(triangle), n, triangle);
 }
 
 RGB MeshlessRadiosity::ExactLightsAt(const Vec3& x, const Vec3& inner, const Vec3& n, std::uint32_t triangle) const
@@ -387,7 +444,7 @@ RGB MeshlessRadiosity::ExactLightsAt(const Vec3& x, const Vec3& inner, const Vec
   {
     return RGB(0.0); // no emitter, or aborted before the points were placed: the zero solution
   }
-  const auto group = static_cast<std::uint32_t>(this->SourceScene.ObjectIds[triangle]);
+  const auto group = static_cast<std::uint32_t>(this->SourceScene->ObjectIds[triangle]);
   if (this->LightFit)
   {
     // The lights and the sky exact at x (their rays from inside the
@@ -442,7 +499,7 @@ std::vector<std::size_t> Tiles(const ElementMesh& mesh, const Scene& scene,
 
 SolutionMesh MeshlessRadiosity::SampledSurface(const TileSampler& value, const std::vector<char>* keep) const
 {
-  const Scene& scene = this->SourceScene;
+  const Scene& scene = *this->SourceScene;
   const double diagonal = scene.Diagonal();
   ElementMesh mesh(scene, 1e300, this->Settings.SurfaceElementSize * diagonal, 12);
   const std::vector<std::uint32_t> leaves = mesh.Leaves();
@@ -514,7 +571,7 @@ SolutionMesh MeshlessRadiosity::Surface(const std::vector<char>* keep) const
   return this->SampledSurface(
     [this](const Vec3* x, const Vec3* n, const std::uint32_t* leaves, std::size_t count,
       const ElementMesh& mesh, RGB* h) {
-      const auto group = static_cast<std::uint32_t>(this->SourceScene.ObjectIds[mesh[leaves[0]].Source]);
+      const auto group = static_cast<std::uint32_t>(this->SourceScene->ObjectIds[mesh[leaves[0]].Source]);
       this->Solution->EvaluateTile(x, n, count, 4, group, h);
     },
     keep);
@@ -537,7 +594,7 @@ SolutionMesh MeshlessRadiosity::GatherSurface() const
 
 std::vector<RGB> MeshlessRadiosity::Evaluate(const std::vector<Probe>& probes) const
 {
-  return EvaluateOnNearestTriangles(this->SourceScene, probes,
+  return EvaluateOnNearestTriangles(*this->SourceScene, probes,
     [this](std::uint32_t t, const Vec3& x, const Vec3& n) { return this->IrradianceAt(x, n, t); },
     this->Rays.get()); // over every triangle; null before a solve (then built there)
 }
@@ -555,7 +612,7 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
   const Stopwatch clock;
   // The thread limit applies to this solve alone (a task arena of its own).
   return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
-    const Scene& scene = this->SourceScene;
+    const Scene& scene = *this->SourceScene;
     double emitted = 0.0, area = 0.0;
     for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
     {
@@ -617,33 +674,7 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     }
     Bounce direct;
     this->DirectLight(direct);
-    this->Direct = std::make_unique<ShepardField>(points);
-    this->Direct->Coefficients() = direct.Field->Coefficients();
-    this->Solution->Coefficients() = direct.Field->Coefficients();
-    this->LightFit.reset();
-    if (this->Lights)
-    {
-      // The lights' share of the direct field: the same fit replayed with
-      // their exact values at the same points (the direct field itself
-      // when no triangle emits).
-      this->LightFit = std::make_unique<ShepardField>(points);
-      if (this->Emitters.empty())
-      {
-        this->LightFit->Coefficients() = direct.Field->Coefficients();
-      }
-      else
-      {
-        std::vector<RGB> value(points.Points().size(), RGB(0.0));
-        for (const std::vector<std::uint32_t>& set : direct.Batches)
-        {
-          tbb::parallel_for(std::size_t(0), set.size(), [&](std::size_t k) {
-            const MeshlessPoint& p = points.Points()[set[k]];
-            value[set[k]] = this->Lights->Irradiance(p.Position, p.Normal);
-          });
-          FitBatch(points, set, value, *this->LightFit);
-        }
-      }
-    }
+    this->KeepDirect(direct);
     this->Stats.DirectSeconds = clock.Seconds() - this->Stats.PlacementSeconds;
     const double base = std::max(direct.Magnitude, 1e-300);
     const double perPoint = area / static_cast<double>(points.LevelEnd(0));
@@ -651,12 +682,7 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     {
       // The lights' power reaching the surfaces, from the coarsest level's
       // direct values (each point stands for area / points of surface).
-      double light = 0.0;
-      for (std::size_t j = points.LevelBegin(0); j < points.LevelEnd(0); ++j)
-      {
-        light += Mean(this->Lights->Irradiance(points.Points()[j].Position, points.Points()[j].Normal));
-      }
-      stats.LightPowerW = light * perPoint;
+      stats.LightPowerW = this->CoarseLightIrradiance() * perPoint;
       stats.EmittedPowerW += stats.LightPowerW;
       if (!(stats.EmittedPowerW > 0.0))
       {
@@ -683,8 +709,7 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
     row(0, direct.Magnitude);
 
     std::unique_ptr<Bounce> previous = std::make_unique<Bounce>(std::move(direct));
-    double previousRatio = -1.0;
-    int steadyBounces = 0;
+    BounceSeries series;
     stats.Stop = StopReason::IterationLimit;
     for (int bounce = 1; bounce <= this->Settings.MaxBounces; ++bounce)
     {
@@ -692,23 +717,14 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
       this->ComputeBounce(*previous->Field, *next);
       std::vector<RGB>& b = this->Solution->Coefficients();
       const std::vector<RGB>& add = next->Field->Coefficients();
-      const double ratio = previous->Magnitude > 0 ? next->Magnitude / previous->Magnitude : 0.0;
-      // Aitken: a steady ratio makes the rest of the series geometric. Steady
-      // over three bounces, not two: the first bounces of an open room fall
-      // faster than its last (light leaving by the window early), and a ratio
-      // that held for one bounce by chance (the office: 0.58 twice at bounce
-      // 3) put the tail 2% under at the back of the room.
-      const bool held = ratio > 0.3 && ratio < 1.0 && previousRatio > 0 &&
-        std::fabs(ratio - previousRatio) < 0.01 * (1.0 - ratio);
-      steadyBounces = held ? steadyBounces + 1 : 0;
-      const bool steady = steadyBounces >= 2;
-      const double gain = steady ? 1.0 / (1.0 - ratio) : 1.0;
+      // Aitken: a steady ratio makes the rest of the series geometric.
+      const BounceSeries::Step step = series.Next(previous->Magnitude, next->Magnitude);
+      const bool steady = step.Steady;
       for (std::size_t j = 0; j < b.size(); ++j)
       {
-        b[j] += gain * add[j];
+        b[j] += step.Gain * add[j];
       }
-      const double remaining = steady ? 0.0 : next->Magnitude * (ratio < 1 ? ratio / (1 - ratio) : 1.0);
-      row(bounce, remaining);
+      row(bounce, step.Remaining);
       stats.Iterations = bounce;
       const double relative = next->Magnitude / base;
       if (!report("bounces", bounce, relative))
@@ -728,7 +744,6 @@ SolverStatistics MeshlessRadiosity::Solve(const ProgressCallback& progress)
         stats.Stop = StopReason::TimeLimit;
         break;
       }
-      previousRatio = ratio;
       previous = std::move(next);
     }
     this->Stats.BounceSeconds = clock.Seconds() - this->Stats.PlacementSeconds - this->Stats.DirectSeconds;

@@ -46,6 +46,8 @@ namespace radiosity
 {
 class Visibility;
 class ElementMesh;
+class MeshlessTransfer;
+class MeshlessNeighbourhoods;
 
 struct MeshlessOptions
 {
@@ -85,6 +87,14 @@ struct MeshlessStatistics
   double DirectSeconds = 0.0;
   double BounceSeconds = 0.0;
   std::size_t MemoryBytes = 0;       ///< points, coefficients and bookkeeping
+  /// Relighting (section 6.5): the precomputed transfer and the last relight.
+  std::size_t TransferReceivers = 0;
+  std::size_t TransferEntries = 0;
+  std::size_t TransferBytes = 0;
+  double TransferSeconds = 0.0;
+  double RelightDirectSeconds = 0.0;   ///< the new direct light, fitted
+  double RelightIndirectSeconds = 0.0; ///< the transfer applied
+  int RelightBounces = 0;
 };
 
 class MeshlessRadiosity
@@ -96,7 +106,27 @@ public:
   /// Places the points, computes the direct light and the bounces; once.
   SolverStatistics Solve(const ProgressCallback& progress = {});
 
-  const Scene& GetScene() const { return this->SourceScene; }
+  /**
+   * Relighting (Lehtinen et al. 2007, section 6.5; MeshlessTransfer.h):
+   * after Solve, precomputes the one-bounce operator onto the basis
+   * functions the solve gathered to and the two coarsest levels. False when
+   * aborted through `progress`. Throws SceneError when there is no field to
+   * precompute on (nothing lit, or aborted before placement) or when the
+   * operator outgrows the memory budget.
+   */
+  bool PrecomputeTransfer(const ProgressCallback& progress = {});
+  bool HasTransfer() const { return this->Transfer != nullptr; }
+  /**
+   * The solution for the lighting of `lit` (its emission, lights and sky),
+   * which must have the solved scene's surfaces (SameSurfaces; otherwise
+   * SceneError naming the difference, and nothing changes): the direct
+   * light computed and refined anew, the indirect light from the
+   * precomputed transfer. `lit` is the solver's scene from then on (the
+   * caller keeps it alive).
+   */
+  SolverStatistics Relight(const Scene& lit, const ProgressCallback& progress = {});
+
+  const Scene& GetScene() const { return *this->SourceScene; }
   const MeshlessOptions& Options() const { return this->Settings; }
   /// False before placement: a scene without emitters, or an abort before
   /// the points were placed (Points(), Irradiance() and DirectIrradiance()
@@ -136,7 +166,17 @@ public:
 
 private:
   struct Bounce;
+  void FindEmitters();
   void DirectLight(Bounce& out);
+  /// Direct, the solution's start and LightFit from the direct light.
+  void KeepDirect(const Bounce& direct);
+  /// DirectLight then KeepDirect; the direct light's magnitude.
+  double ComputeDirect();
+  /// The sky's irradiance at point j from its visibility mask (SkyMask),
+  /// the mask cast first when it is not known yet.
+  RGB CachedSky(std::uint32_t j) const;
+  /// The lights' irradiance summed over the coarsest level's points.
+  double CoarseLightIrradiance() const;
   void ComputeBounce(const ShepardField& previous, Bounce& out);
   RGB Gather(std::uint32_t receiver, const ShepardField& previous) const;
   RGB DirectAt(std::uint32_t receiver) const;
@@ -145,7 +185,7 @@ private:
   template <typename Value>
   void Refine(Bounce& out, const Value& value);
 
-  const Scene& SourceScene;
+  const Scene* SourceScene; ///< the solved scene, or the last relit one
   MeshlessOptions Settings;
   std::unique_ptr<Visibility> Rays;     ///< every triangle: gather rays, placement
   std::unique_ptr<Visibility> Shadows;  ///< the triangles that can occlude: direct light
@@ -165,6 +205,20 @@ private:
   SolutionMesh SampledSurface(const TileSampler& value, const std::vector<char>* keep = nullptr) const;
   std::vector<std::uint32_t> Emitters;
   std::vector<unsigned char> Touched; ///< per point: gathered to at least once
+  /// The lights' and the sky's direct irradiance at the points DirectAt
+  /// computed (LightKnown), for their own fit without a second quadrature.
+  mutable std::vector<RGB> LightValue;
+  mutable std::vector<unsigned char> LightKnown;
+  std::unique_ptr<MeshlessTransfer> Transfer;
+  /// Relighting: every point's oracle and fit neighbourhoods, listed with
+  /// the transfer; Refine and the fit read them instead of searching.
+  std::unique_ptr<MeshlessNeighbourhoods> Lists;
+  /// Relighting: each point's sky visibility (DirectLighting::SkyVisibility),
+  /// kept once a transfer is precomputed (SkyMaskWords words a point; 0:
+  /// not kept), so that a new sky or sun costs no sky rays.
+  std::size_t SkyMaskWords = 0;
+  mutable std::vector<std::uint64_t> SkyMask;
+  mutable std::vector<unsigned char> SkyKnown;
   double Scale = 0.0;                 ///< largest coarse direct irradiance (one channel)
   MeshlessStatistics Stats;
 };

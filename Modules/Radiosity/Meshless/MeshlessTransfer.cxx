@@ -1,0 +1,436 @@
+#include "Radiosity/Meshless/MeshlessTransfer.h"
+
+#include "Radiosity/Common/MemoryBudget.h"
+#include "Radiosity/Meshless/BounceSeries.h"
+#include "Radiosity/Meshless/MeshlessGather.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+
+namespace radiosity
+{
+namespace
+{
+/// Rows computed between two asks of keepGoing and two memory checks.
+constexpr std::size_t RowsPerBlock = 2048;
+}
+
+MeshlessTransfer::MeshlessTransfer(const Scene& scene, const PointHierarchy& points, const Visibility& rays,
+  const MeshlessOptions& options, std::vector<std::uint32_t> receivers, const std::function<bool()>& keepGoing,
+  double memoryBudgetBytes)
+  : Points(points)
+  , Rows(std::move(receivers))
+{
+  std::sort(this->Rows.begin(), this->Rows.end());
+  this->Rows.erase(std::unique(this->Rows.begin(), this->Rows.end()), this->Rows.end());
+  const auto& all = points.Points();
+  const int levels = points.NumberOfLevels();
+  this->LevelStart.assign(static_cast<std::size_t>(levels) + 1, this->Rows.size());
+  for (std::size_t r = this->Rows.size(); r-- > 0;)
+  {
+    this->LevelStart[all[this->Rows[r]].Level] = r;
+  }
+  for (int level = levels - 1; level >= 0; --level)
+  {
+    this->LevelStart[level] = std::min(this->LevelStart[level], this->LevelStart[level + 1]);
+  }
+  this->CoarseRows = levels > 0 ? this->LevelStart[1] : 0;
+  // Where each point sits in Rows (the fit's columns), or none.
+  std::vector<std::uint32_t> rowOf(all.size(), UINT32_MAX);
+  for (std::size_t r = 0; r < this->Rows.size(); ++r)
+  {
+    rowOf[this->Rows[r]] = static_cast<std::uint32_t>(r);
+  }
+
+  // The receiver oracle's neighbourhoods, as the solve's Refine finds them
+  // (MeshlessRadiosity.cxx), in rows: a coarsest row's neighbours, a row's
+  // children on the next level, and a row's coarser functions non-zero at
+  // its point (computed before it).
+  {
+    std::vector<std::vector<std::uint32_t>> neighbours(this->Rows.size()), children(this->Rows.size()),
+      ancestors(this->Rows.size());
+    tbb::parallel_for(std::size_t(0), this->Rows.size(), [&](std::size_t r) {
+      const MeshlessPoint& p = all[this->Rows[r]];
+      thread_local std::vector<std::uint32_t> near;
+      const auto keep = [&](std::vector<std::uint32_t>& into, std::uint32_t k) {
+        if (rowOf[k] != UINT32_MAX && glm::dot(all[k].Normal, p.Normal) > 0)
+        {
+          into.push_back(rowOf[k]);
+        }
+      };
+      if (p.Level == 0)
+      {
+        near.clear();
+        points.Supporting(0, p.Group, p.Position, near);
+        for (std::uint32_t k : near)
+        {
+          keep(neighbours[r], k);
+        }
+      }
+      if (p.Level + 1 < levels)
+      {
+        near.clear();
+        points.Supporting(p.Level + 1, p.Group, p.Position, near);
+        for (std::uint32_t c : near)
+        {
+          if (glm::length(all[c].Position - p.Position) < p.Radius)
+          {
+            keep(children[r], c);
+          }
+        }
+      }
+      for (int coarser = 1; coarser < p.Level; ++coarser)
+      {
+        near.clear();
+        points.Supporting(coarser, p.Group, p.Position, near);
+        for (std::uint32_t q : near)
+        {
+          keep(ancestors[r], q);
+        }
+      }
+    });
+    const auto flatten = [](std::vector<std::vector<std::uint32_t>>& lists, std::vector<std::size_t>& start,
+                           std::vector<std::uint32_t>& items) {
+      start.assign(1, 0);
+      for (std::vector<std::uint32_t>& l : lists)
+      {
+        items.insert(items.end(), l.begin(), l.end());
+        start.push_back(items.size());
+        std::vector<std::uint32_t>().swap(l);
+      }
+    };
+    flatten(neighbours, this->NeighbourStart, this->Neighbours);
+    flatten(children, this->ChildStart, this->Children);
+    flatten(ancestors, this->AncestorStart, this->Ancestors);
+  }
+
+  // One reflectance per object: the weights need no colour.
+  std::vector<RGB> objectReflectance;
+  std::vector<unsigned char> seen;
+  bool uniform = true;
+  for (std::size_t t = 0; t < scene.Triangles.size() && uniform; ++t)
+  {
+    const auto object = static_cast<std::size_t>(std::max(0, scene.ObjectIds[t]));
+    if (object >= seen.size())
+    {
+      seen.resize(object + 1, 0);
+      objectReflectance.resize(object + 1, RGB(0.0));
+    }
+    if (!seen[object])
+    {
+      seen[object] = 1;
+      objectReflectance[object] = scene.Materials[t].Reflectance;
+    }
+    uniform = objectReflectance[object] == scene.Materials[t].Reflectance;
+  }
+  this->WeightComponents = uniform ? 1 : 3;
+  if (uniform)
+  {
+    this->SenderReflectance.resize(all.size());
+    for (std::size_t k = 0; k < all.size(); ++k)
+    {
+      this->SenderReflectance[k] =
+        all[k].Group < objectReflectance.size() ? objectReflectance[all[k].Group] : RGB(0.0);
+    }
+  }
+  const ShepardField basis(points);
+  struct Row
+  {
+    std::vector<std::uint32_t> Senders;
+    std::vector<float> Weights;
+    std::vector<std::uint32_t> FitColumns;
+    std::vector<float> FitWeights;
+  };
+  this->RowStart.assign(1, 0);
+  this->FitStart.assign(1, 0);
+  std::vector<Row> block;
+  for (std::size_t begin = 0; begin < this->Rows.size(); begin += RowsPerBlock)
+  {
+    if (keepGoing && !keepGoing())
+    {
+      throw PlacementAborted();
+    }
+    const std::size_t end = std::min(this->Rows.size(), begin + RowsPerBlock);
+    block.assign(end - begin, Row());
+    tbb::parallel_for(begin, end, [&](std::size_t r) {
+      Row& row = block[r - begin];
+      const std::uint32_t j = this->Rows[r];
+      thread_local std::vector<std::pair<std::uint32_t, RGB>> raw;
+      raw.clear();
+      GatherWeights(scene, points, basis, rays, options, j,
+        [&](std::uint32_t k, double w, const RGB& reflectance) {
+          raw.emplace_back(k, uniform ? RGB(w) : w * reflectance);
+        });
+      std::sort(raw.begin(), raw.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t i = 0; i < raw.size();)
+      {
+        RGB sum(0.0);
+        const std::uint32_t k = raw[i].first;
+        for (; i < raw.size() && raw[i].first == k; ++i)
+        {
+          sum += raw[i].second;
+        }
+        row.Senders.push_back(k);
+        if (uniform)
+        {
+          row.Weights.push_back(static_cast<float>(sum.x));
+        }
+        else
+        {
+          row.Weights.insert(row.Weights.end(),
+            { static_cast<float>(sum.x), static_cast<float>(sum.y), static_cast<float>(sum.z) });
+        }
+      }
+      // Eq. 10: the coarser receivers' basis values at this receiver's point.
+      const MeshlessPoint& p = all[j];
+      thread_local std::vector<std::pair<std::uint32_t, double>> found;
+      for (int level = 0; level < p.Level; ++level)
+      {
+        found.clear();
+        basis.Basis(level, p.Group, p.Position, p.Normal, found);
+        for (const auto& [k, w] : found)
+        {
+          if (rowOf[k] != UINT32_MAX)
+          {
+            row.FitColumns.push_back(rowOf[k]);
+            row.FitWeights.push_back(static_cast<float>(w));
+          }
+        }
+      }
+    });
+    for (Row& row : block)
+    {
+      this->Senders.insert(this->Senders.end(), row.Senders.begin(), row.Senders.end());
+      this->Weights.insert(this->Weights.end(), row.Weights.begin(), row.Weights.end());
+      this->RowStart.push_back(this->Senders.size());
+      this->FitColumns.insert(this->FitColumns.end(), row.FitColumns.begin(), row.FitColumns.end());
+      this->FitWeights.insert(this->FitWeights.end(), row.FitWeights.begin(), row.FitWeights.end());
+      this->FitStart.push_back(this->FitColumns.size());
+    }
+    if (memoryBudgetBytes > 0 && static_cast<double>(this->MemoryBytes()) > memoryBudgetBytes)
+    {
+      throw SceneError("meshless relighting: the transfer's rows need more than the memory budget (" +
+        FormatCount(static_cast<double>(this->MemoryBytes())) + " bytes after " + std::to_string(end) + " of " +
+        std::to_string(this->Rows.size()) + " receivers); raise the budget (MaxMemory) or --point-radius");
+    }
+  }
+}
+
+std::size_t MeshlessTransfer::MemoryBytes() const
+{
+  return this->Rows.size() * sizeof(std::uint32_t) + this->RowStart.size() * sizeof(std::size_t) +
+    this->Senders.size() * sizeof(std::uint32_t) + this->Weights.size() * sizeof(float) +
+    this->SenderReflectance.size() * sizeof(RGB) +
+    this->FitStart.size() * sizeof(std::size_t) + this->FitColumns.size() * sizeof(std::uint32_t) +
+    this->FitWeights.size() * sizeof(float) +
+    (this->NeighbourStart.size() + this->ChildStart.size() + this->AncestorStart.size()) * sizeof(std::size_t) +
+    (this->Neighbours.size() + this->Children.size() + this->Ancestors.size()) * sizeof(std::uint32_t);
+}
+
+MeshlessTransfer::Series MeshlessTransfer::Indirect(
+  const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold) const
+{
+  Series out;
+  const auto& all = this->Points.Points();
+  out.Indirect.assign(all.size(), RGB(0.0));
+  double base = 0.0;
+  for (std::size_t j = 0; j < all.size() && all[j].Level == 0; ++j)
+  {
+    base += MaxComponent(direct[j]);
+  }
+  out.Magnitudes.push_back(base);
+  if (!(base > 0.0) || this->Rows.empty())
+  {
+    out.Converged = true;
+    return out;
+  }
+  const std::size_t rows = this->Rows.size();
+  // The previous bounce's coefficients over every point (the direct light's
+  // first, then the receivers'; times the senders' reflectance with
+  // one-float weights), this bounce's values and coefficients per row.
+  const bool scalar = this->WeightComponents == 1;
+  std::vector<RGB> previous = direct, value(rows), alpha(rows);
+  if (scalar)
+  {
+    for (std::size_t k = 0; k < previous.size(); ++k)
+    {
+      previous[k] *= this->SenderReflectance[k];
+    }
+  }
+  std::vector<unsigned char> computed(rows);
+  std::vector<std::uint32_t> done;
+
+  // A set of rows: their values from the previous bounce, then their
+  // coefficients level by level (eq. 10; the coarser rows are final).
+  const auto compute = [&](std::vector<std::uint32_t>& set) {
+    std::sort(set.begin(), set.end()); // by row is by level
+    set.erase(std::unique(set.begin(), set.end()), set.end());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.size(), 64),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i)
+        {
+          const std::uint32_t r = set[i];
+          double x = 0, y = 0, z = 0;
+          if (scalar)
+          {
+            const float* w = this->Weights.data() + this->RowStart[r];
+            for (std::size_t s = this->RowStart[r]; s < this->RowStart[r + 1]; ++s, ++w)
+            {
+              const RGB& b = previous[this->Senders[s]];
+              x += *w * b.x;
+              y += *w * b.y;
+              z += *w * b.z;
+            }
+          }
+          else
+          {
+            const float* w = this->Weights.data() + 3 * this->RowStart[r];
+            for (std::size_t s = this->RowStart[r]; s < this->RowStart[r + 1]; ++s, w += 3)
+            {
+              const RGB& b = previous[this->Senders[s]];
+              x += w[0] * b.x;
+              y += w[1] * b.y;
+              z += w[2] * b.z;
+            }
+          }
+          value[r] = RGB(x, y, z);
+        }
+      });
+    std::size_t begin = 0;
+    while (begin < set.size())
+    {
+      std::size_t end = begin;
+      const int level = all[this->Rows[set[begin]]].Level;
+      while (end < set.size() && all[this->Rows[set[end]]].Level == level)
+      {
+        ++end;
+      }
+      tbb::parallel_for(begin, end, [&](std::size_t i) {
+        const std::uint32_t r = set[i];
+        RGB a = value[r];
+        for (std::size_t f = this->FitStart[r]; f < this->FitStart[r + 1]; ++f)
+        {
+          a -= static_cast<double>(this->FitWeights[f]) * alpha[this->FitColumns[f]];
+        }
+        alpha[r] = a;
+      });
+      begin = end;
+    }
+    for (std::uint32_t r : set)
+    {
+      computed[r] = 1;
+      done.push_back(r);
+    }
+  };
+
+  BounceSeries series;
+  double previousMagnitude = base;
+  std::vector<std::uint32_t> wave, refine, children, missing;
+  for (int bounce = 1; bounce <= maxBounces; ++bounce)
+  {
+    // The solve's RECEIVER-ORACLE (MeshlessRadiosity::Refine) over the rows.
+    for (std::uint32_t r : done)
+    {
+      alpha[r] = RGB(0.0);
+      value[r] = RGB(0.0);
+      computed[r] = 0;
+    }
+    done.clear();
+    wave.resize(this->CoarseRows);
+    for (std::size_t r = 0; r < this->CoarseRows; ++r)
+    {
+      wave[r] = static_cast<std::uint32_t>(r);
+    }
+    compute(wave);
+    refine.clear();
+    for (std::size_t r = 0; r < this->CoarseRows; ++r)
+    {
+      double variation = 0.0;
+      for (std::size_t n = this->NeighbourStart[r]; n < this->NeighbourStart[r + 1]; ++n)
+      {
+        variation = std::max(variation, MaxComponent(glm::abs(value[this->Neighbours[n]] - value[r])));
+      }
+      if (variation > threshold)
+      {
+        refine.push_back(static_cast<std::uint32_t>(r));
+      }
+    }
+    while (!refine.empty())
+    {
+      children.clear();
+      for (std::uint32_t r : refine)
+      {
+        for (std::size_t c = this->ChildStart[r]; c < this->ChildStart[r + 1]; ++c)
+        {
+          if (!computed[this->Children[c]])
+          {
+            children.push_back(this->Children[c]);
+          }
+        }
+      }
+      missing.clear();
+      for (std::uint32_t c : children)
+      {
+        for (std::size_t a = this->AncestorStart[c]; a < this->AncestorStart[c + 1]; ++a)
+        {
+          if (!computed[this->Ancestors[a]])
+          {
+            missing.push_back(this->Ancestors[a]);
+          }
+        }
+      }
+      if (!missing.empty())
+      {
+        compute(missing);
+      }
+      compute(children);
+      refine.clear();
+      for (std::uint32_t c : children)
+      {
+        if (MaxComponent(glm::abs(alpha[c])) > threshold)
+        {
+          refine.push_back(c);
+        }
+      }
+    }
+    double magnitude = 0.0;
+    for (std::size_t r = 0; r < this->CoarseRows; ++r)
+    {
+      magnitude += MaxComponent(value[r]);
+    }
+    const BounceSeries::Step step = series.Next(previousMagnitude, magnitude);
+    for (std::uint32_t r : done)
+    {
+      out.Indirect[this->Rows[r]] += step.Gain * alpha[r];
+    }
+    out.Bounces = bounce;
+    out.RowsComputed += done.size();
+    out.Magnitudes.push_back(magnitude);
+    if (step.Steady || magnitude / base <= tolerance)
+    {
+      out.Converged = true;
+      break;
+    }
+    if (bounce == 1)
+    {
+      std::fill(previous.begin(), previous.end(), RGB(0.0));
+    }
+    else
+    {
+      for (std::size_t r = 0; r < rows; ++r)
+      {
+        previous[this->Rows[r]] = RGB(0.0);
+      }
+    }
+    for (std::uint32_t r : done)
+    {
+      const std::uint32_t j = this->Rows[r];
+      previous[j] = scalar ? alpha[r] * this->SenderReflectance[j] : alpha[r];
+    }
+    previousMagnitude = magnitude;
+  }
+  return out;
+}
+} // namespace radiosity
