@@ -128,24 +128,41 @@ void DirectLighting::SkyVisibility(const Vec3& x, const Vec3& n, std::uint64_t* 
   }
 }
 
-RGB DirectLighting::SkyIrradianceMasked(const Vec3& n, const std::uint64_t* mask) const
+DirectLighting::SkyMoments DirectLighting::SkyMomentsOf(const Vec3& n, const std::uint64_t* mask) const
 {
-  if (!this->HasSky())
-  {
-    return RGB(0.0);
-  }
   const int m = this->SkySampleCount;
   Vec3 t, b;
   FrameAround(n, t, b);
-  RGB sum(0.0);
+  SkyMoments out;
   for (int i = 0; i < m; ++i)
   {
     if (mask[i / 64] >> (i % 64) & 1)
     {
-      sum += SkyRadiance(this->Set.SkyLight, SkyDirection(i, m, t, b, n));
+      const double c = glm::dot(SkyDirection(i, m, t, b, n), this->Set.SkyLight.Up);
+      if (c > 0.0)
+      {
+        out.Count += 1.0;
+        out.Cosines += c;
+      }
     }
   }
-  return (Pi / m) * sum;
+  return out;
+}
+
+RGB DirectLighting::SkyIrradianceFromMoments(const SkyMoments& moments) const
+{
+  const Sky& sky = this->Set.SkyLight;
+  const int m = this->SkySampleCount;
+  switch (this->HasSky() ? sky.Model : SkyModel::None)
+  {
+    case SkyModel::Uniform:
+      return (Pi / m) * moments.Count * sky.Radiance;
+    case SkyModel::CieOvercast:
+      return (Pi / m) * ((moments.Count + 2.0 * moments.Cosines) / 3.0) * sky.Radiance;
+    case SkyModel::None:
+      break;
+  }
+  return RGB(0.0);
 }
 
 RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const

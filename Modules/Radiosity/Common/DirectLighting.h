@@ -60,13 +60,23 @@ public:
   /// Which of the sky quadrature's directions at x (normal n) reach the sky,
   /// every direction whatever the sky's radiance there: bit i of `mask`
   /// (SkyMaskWords() words). It depends on the geometry alone, so a relight
-  /// keeps it (MeshlessRadiosity) and SkyIrradianceMasked replays the
-  /// quadrature for any sky without a ray. Needs the shadow rays (a light or
+  /// keeps it (MeshlessRadiosity) and SkyMomentsOf replays the quadrature
+  /// for any sky without a ray. Needs the shadow rays (a light or
   /// a sky, or the caller's occluders).
   void SkyVisibility(const Vec3& x, const Vec3& n, std::uint64_t* mask) const;
-  /// SkyIrradiance from a SkyVisibility mask taken at a point of normal n:
-  /// the same sum over the same directions.
-  RGB SkyIrradianceMasked(const Vec3& n, const std::uint64_t* mask) const;
+  /// What SkyIrradiance needs of a point's visible directions for every sky
+  /// of one Up: each sky model's radiance is affine in the cosine to Up
+  /// above the horizon (SkyRadiance), so the quadrature is fixed by how many
+  /// visible directions lie above it and the sum of their cosines.
+  struct SkyMoments
+  {
+    double Count = 0.0;
+    double Cosines = 0.0;
+  };
+  /// The moments of a SkyVisibility mask (normal n) for this sky's Up.
+  SkyMoments SkyMomentsOf(const Vec3& n, const std::uint64_t* mask) const;
+  /// SkyIrradiance from the moments: the same sum over the same directions.
+  RGB SkyIrradianceFromMoments(const SkyMoments& moments) const;
   RGB Irradiance(const Vec3& x, const Vec3& n) const
   {
     return this->Punctual(x, n) + this->SkyIrradiance(x, n);

@@ -412,8 +412,16 @@ RGB MeshlessRadiosity::CachedSky(std::uint32_t j) const
   {
     this->Lights->SkyVisibility(p.Position, p.Normal, mask);
     this->SkyKnown[j] = 1;
+    this->SkyMomentsKnown[j] = 0;
   }
-  return this->Lights->SkyIrradianceMasked(p.Normal, mask);
+  // The moments hold for every sky of the Up they were taken with
+  // (Relight forgets them when Up changes).
+  if (!this->SkyMomentsKnown[j])
+  {
+    this->SkyMoment[j] = this->Lights->SkyMomentsOf(p.Normal, mask);
+    this->SkyMomentsKnown[j] = 1;
+  }
+  return this->Lights->SkyIrradianceFromMoments(this->SkyMoment[j]);
 }
 
 double MeshlessRadiosity::CoarseLightIrradiance() const

@@ -219,6 +219,10 @@ private:
   std::size_t SkyMaskWords = 0;
   mutable std::vector<std::uint64_t> SkyMask;
   mutable std::vector<unsigned char> SkyKnown;
+  /// Per point: the mask's moments for the sky's Up of SkyMomentUp.
+  mutable std::vector<DirectLighting::SkyMoments> SkyMoment;
+  mutable std::vector<unsigned char> SkyMomentsKnown;
+  Vec3 SkyMomentUp{ 0.0 };
   double Scale = 0.0;                 ///< largest coarse direct irradiance (one channel)
   MeshlessStatistics Stats;
 };

@@ -44,7 +44,8 @@ bool MeshlessRadiosity::PrecomputeTransfer(const ProgressCallback& progress)
     {
       this->Lists = std::make_unique<MeshlessNeighbourhoods>(points,
         [&]() { return ReportProgress(progress, "precomputing the transfer", 0, 1.0, this->Settings.Tolerance); });
-      this->Transfer = std::make_unique<MeshlessTransfer>(*this->SourceScene, points, *this->Rays, this->Settings,
+      this->Transfer = std::make_unique<MeshlessTransfer>(*this->SourceScene, points, *this->Rays, *this->Lists,
+        this->Settings,
         std::move(receivers),
         [&]() { return ReportProgress(progress, "precomputing the transfer", 0, 1.0, this->Settings.Tolerance); },
         ResolveMemoryBudget(this->Settings.MemoryBudgetBytes));
@@ -67,6 +68,9 @@ bool MeshlessRadiosity::PrecomputeTransfer(const ProgressCallback& progress)
       this->SkyMaskWords = this->Lights->SkyMaskWords();
       this->SkyMask.assign(this->SkyMaskWords * points.Points().size(), 0);
       this->SkyKnown.assign(points.Points().size(), 0);
+      this->SkyMoment.assign(points.Points().size(), DirectLighting::SkyMoments());
+      this->SkyMomentsKnown.assign(points.Points().size(), 0);
+      this->SkyMomentUp = scene.Lighting.SkyLight.Up;
       if (this->Lights->HasSky())
       {
         tbb::parallel_for(std::size_t(0), this->LightKnown.size(), [&](std::size_t j) {
@@ -111,6 +115,12 @@ SolverStatistics MeshlessRadiosity::Relight(const Scene& lit, const ProgressCall
     {
       // The solve's rays over every triangle serve the shadow rays too.
       this->Lights = std::make_unique<DirectLighting>(lit, this->Settings.SkySamples, this->Rays.get());
+    }
+    if (lit.Lighting.SkyLight.Up != this->SkyMomentUp)
+    {
+      // Another Up: another horizon, the moments taken anew from the masks.
+      std::fill(this->SkyMomentsKnown.begin(), this->SkyMomentsKnown.end(), 0);
+      this->SkyMomentUp = lit.Lighting.SkyLight.Up;
     }
     stats.EmittedPowerW = lit.EmittedPower();
     const PointHierarchy& points = *this->Hierarchy;

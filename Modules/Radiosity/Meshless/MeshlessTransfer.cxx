@@ -3,6 +3,7 @@
 #include "Radiosity/Common/MemoryBudget.h"
 #include "Radiosity/Meshless/BounceSeries.h"
 #include "Radiosity/Meshless/MeshlessGather.h"
+#include "Radiosity/Meshless/MeshlessNeighbourhoods.h"
 
 #include <tbb/parallel_for.h>
 
@@ -18,7 +19,7 @@ constexpr std::size_t RowsPerBlock = 2048;
 }
 
 MeshlessTransfer::MeshlessTransfer(const Scene& scene, const PointHierarchy& points, const Visibility& rays,
-  const MeshlessOptions& options, std::vector<std::uint32_t> receivers, const std::function<bool()>& keepGoing,
+  const MeshlessNeighbourhoods& lists, const MeshlessOptions& options, std::vector<std::uint32_t> receivers, const std::function<bool()>& keepGoing,
   double memoryBudgetBytes)
   : Points(points)
   , Rows(std::move(receivers))
@@ -44,66 +45,28 @@ MeshlessTransfer::MeshlessTransfer(const Scene& scene, const PointHierarchy& poi
     rowOf[this->Rows[r]] = static_cast<std::uint32_t>(r);
   }
 
-  // The receiver oracle's neighbourhoods, as the solve's Refine finds them
-  // (MeshlessRadiosity.cxx), in rows: a coarsest row's neighbours, a row's
-  // children on the next level, and a row's coarser functions non-zero at
-  // its point (computed before it).
+  // The receiver oracle's neighbourhoods (MeshlessNeighbourhoods) in rows:
+  // a function that is not a row is never computed in a relit bounce.
   {
-    std::vector<std::vector<std::uint32_t>> neighbours(this->Rows.size()), children(this->Rows.size()),
-      ancestors(this->Rows.size());
-    tbb::parallel_for(std::size_t(0), this->Rows.size(), [&](std::size_t r) {
-      const MeshlessPoint& p = all[this->Rows[r]];
-      thread_local std::vector<std::uint32_t> near;
-      const auto keep = [&](std::vector<std::uint32_t>& into, std::uint32_t k) {
-        if (rowOf[k] != UINT32_MAX && glm::dot(all[k].Normal, p.Normal) > 0)
-        {
-          into.push_back(rowOf[k]);
-        }
-      };
-      if (p.Level == 0)
+    const auto inRows = [&](auto list, std::vector<std::size_t>& start, std::vector<std::uint32_t>& items) {
+      for (std::uint32_t k : list)
       {
-        near.clear();
-        points.Supporting(0, p.Group, p.Position, near);
-        for (std::uint32_t k : near)
+        if (rowOf[k] != UINT32_MAX)
         {
-          keep(neighbours[r], k);
+          items.push_back(rowOf[k]);
         }
       }
-      if (p.Level + 1 < levels)
-      {
-        near.clear();
-        points.Supporting(p.Level + 1, p.Group, p.Position, near);
-        for (std::uint32_t c : near)
-        {
-          if (glm::length(all[c].Position - p.Position) < p.Radius)
-          {
-            keep(children[r], c);
-          }
-        }
-      }
-      for (int coarser = 1; coarser < p.Level; ++coarser)
-      {
-        near.clear();
-        points.Supporting(coarser, p.Group, p.Position, near);
-        for (std::uint32_t q : near)
-        {
-          keep(ancestors[r], q);
-        }
-      }
-    });
-    const auto flatten = [](std::vector<std::vector<std::uint32_t>>& lists, std::vector<std::size_t>& start,
-                           std::vector<std::uint32_t>& items) {
-      start.assign(1, 0);
-      for (std::vector<std::uint32_t>& l : lists)
-      {
-        items.insert(items.end(), l.begin(), l.end());
-        start.push_back(items.size());
-        std::vector<std::uint32_t>().swap(l);
-      }
+      start.push_back(items.size());
     };
-    flatten(neighbours, this->NeighbourStart, this->Neighbours);
-    flatten(children, this->ChildStart, this->Children);
-    flatten(ancestors, this->AncestorStart, this->Ancestors);
+    this->NeighbourStart.assign(1, 0);
+    this->ChildStart.assign(1, 0);
+    this->AncestorStart.assign(1, 0);
+    for (std::uint32_t j : this->Rows)
+    {
+      inRows(lists.Neighbours(j), this->NeighbourStart, this->Neighbours);
+      inRows(lists.Children(j), this->ChildStart, this->Children);
+      inRows(lists.Ancestors(j), this->AncestorStart, this->Ancestors);
+    }
   }
 
   // One reflectance per object: the weights need no colour.
@@ -184,19 +147,12 @@ MeshlessTransfer::MeshlessTransfer(const Scene& scene, const PointHierarchy& poi
         }
       }
       // Eq. 10: the coarser receivers' basis values at this receiver's point.
-      const MeshlessPoint& p = all[j];
-      thread_local std::vector<std::pair<std::uint32_t, double>> found;
-      for (int level = 0; level < p.Level; ++level)
+      for (const auto& [k, w] : lists.Fit(j))
       {
-        found.clear();
-        basis.Basis(level, p.Group, p.Position, p.Normal, found);
-        for (const auto& [k, w] : found)
+        if (rowOf[k] != UINT32_MAX)
         {
-          if (rowOf[k] != UINT32_MAX)
-          {
-            row.FitColumns.push_back(rowOf[k]);
-            row.FitWeights.push_back(static_cast<float>(w));
-          }
+          row.FitColumns.push_back(rowOf[k]);
+          row.FitWeights.push_back(static_cast<float>(w));
         }
       }
     });

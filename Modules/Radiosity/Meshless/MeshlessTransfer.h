@@ -35,18 +35,19 @@
 namespace radiosity
 {
 class Visibility;
+class MeshlessNeighbourhoods;
 
 class MeshlessTransfer
 {
 public:
   /**
    * The one-bounce operator onto `receivers` (point indices, any order;
-   * kept sorted by level). `keepGoing` is asked every few thousand rows
+   * kept sorted by level); `lists` give its fit and oracle in rows. `keepGoing` is asked every few thousand rows
    * (false: PlacementAborted is thrown). Throws SceneError when the rows
    * outgrow `memoryBudgetBytes` (0: no limit), naming what it needed.
    */
   MeshlessTransfer(const Scene& scene, const PointHierarchy& points, const Visibility& rays,
-    const MeshlessOptions& options, std::vector<std::uint32_t> receivers,
+    const MeshlessNeighbourhoods& lists, const MeshlessOptions& options, std::vector<std::uint32_t> receivers,
     const std::function<bool()>& keepGoing = {}, double memoryBudgetBytes = 0.0);
 
   struct Series
