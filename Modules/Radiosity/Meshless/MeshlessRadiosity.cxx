@@ -13,6 +13,7 @@
 #include "Radiosity/Meshless/BounceSeries.h"
 #include "Radiosity/Meshless/MeshlessGather.h"
 #include "Radiosity/Meshless/MeshlessNeighbourhoods.h"
+#include "Radiosity/Meshless/ReceiverOracle.h"
 #include "Radiosity/Meshless/MeshlessTransfer.h"
 
 #include <tbb/parallel_for.h>
@@ -230,111 +231,51 @@ void MeshlessRadiosity::Refine(Bounce& out, const ValueAt& valueAt)
   {
     wave.push_back(static_cast<std::uint32_t>(j));
   }
-  compute(wave);
-  // Coarsest-level oracle: variation against the neighbours non-zero there.
-  std::vector<std::uint32_t> refine;
-  std::vector<std::uint32_t> near;
+  // The oracle's neighbourhoods: listed (a relight), or searched in the
+  // point index, facing the point's side.
   const MeshlessNeighbourhoods* lists = this->Lists.get();
-  // The functions facing j's side among `near` (a search's), or j's list.
-  const auto facing = [&](std::uint32_t j, std::vector<std::uint32_t>& into) {
-    into.erase(std::remove_if(into.begin(), into.end(),
-                 [&](std::uint32_t k) { return !(glm::dot(all[k].Normal, all[j].Normal) > 0); }),
-      into.end());
-  };
-  for (std::uint32_t j : wave)
-  {
+  const auto search = [&](int level, std::uint32_t j, const Vec3& at, double within, std::vector<std::uint32_t>& into) {
+    thread_local std::vector<std::uint32_t> near;
     near.clear();
-    if (lists)
-    {
-      near.assign(lists->Neighbours(j).begin(), lists->Neighbours(j).end());
-    }
-    else
-    {
-      points.Supporting(0, all[j].Group, all[j].Position, near);
-      facing(j, near);
-    }
-    double variation = 0.0;
+    points.Supporting(level, all[j].Group, at, near);
     for (std::uint32_t k : near)
     {
-      variation = std::max(variation, MaxComponent(glm::abs(out.Value[k] - out.Value[j])));
+      if (glm::dot(all[k].Normal, all[j].Normal) > 0 && (within <= 0 || glm::length(all[k].Position - at) < within))
+      {
+        into.push_back(k);
+      }
     }
-    if (variation > threshold)
-    {
-      refine.push_back(j);
-    }
-  }
-  for (int level = 1; level < levels && !refine.empty(); ++level)
-  {
-    // Children: this level's functions centred in a refined parent's support.
-    std::vector<std::uint32_t> children;
-    for (std::uint32_t k : refine)
-    {
-      const MeshlessPoint& parent = all[k];
+  };
+  RunReceiverOracle(std::move(wave), threshold, out.Value, alpha, out.Computed, compute,
+    [&](std::uint32_t j, std::vector<std::uint32_t>& into) {
       if (lists)
       {
-        for (std::uint32_t c : lists->Children(k))
-        {
-          if (!out.Computed[c])
-          {
-            children.push_back(c);
-          }
-        }
-        continue;
+        into.insert(into.end(), lists->Neighbours(j).begin(), lists->Neighbours(j).end());
+        return;
       }
-      near.clear();
-      points.Supporting(level, parent.Group, parent.Position, near);
-      for (std::uint32_t c : near)
-      {
-        if (!out.Computed[c] && glm::length(all[c].Position - parent.Position) < parent.Radius &&
-          glm::dot(all[c].Normal, parent.Normal) > 0)
-        {
-          children.push_back(c);
-        }
-      }
-    }
-    // Their parents first: every coarser function non-zero at a child must
-    // have its coefficient before the child's difference is taken.
-    std::vector<std::uint32_t> missing;
-    for (std::uint32_t c : children)
-    {
+      search(0, j, all[j].Position, 0.0, into);
+    },
+    [&](std::uint32_t k, std::vector<std::uint32_t>& into) {
       if (lists)
       {
-        for (std::uint32_t q : lists->Ancestors(c))
-        {
-          if (!out.Computed[q])
-          {
-            missing.push_back(q);
-          }
-        }
-        continue;
+        into.insert(into.end(), lists->Children(k).begin(), lists->Children(k).end());
       }
-      for (int coarser = 1; coarser < level; ++coarser)
+      else if (all[k].Level + 1 < levels)
       {
-        near.clear();
-        points.Supporting(coarser, all[c].Group, all[c].Position, near);
-        for (std::uint32_t q : near)
-        {
-          if (!out.Computed[q] && glm::dot(all[q].Normal, all[c].Normal) > 0)
-          {
-            missing.push_back(q);
-          }
-        }
+        search(all[k].Level + 1, k, all[k].Position, all[k].Radius, into);
       }
-    }
-    if (!missing.empty())
-    {
-      compute(missing);
-    }
-    compute(children);
-    refine.clear();
-    for (std::uint32_t c : children)
-    {
-      if (MaxComponent(glm::abs(alpha[c])) > threshold)
+    },
+    [&](std::uint32_t c, std::vector<std::uint32_t>& into) {
+      if (lists)
       {
-        refine.push_back(c);
+        into.insert(into.end(), lists->Ancestors(c).begin(), lists->Ancestors(c).end());
+        return;
       }
-    }
-  }
+      for (int coarser = 1; coarser < all[c].Level; ++coarser)
+      {
+        search(coarser, c, all[c].Position, 0.0, into);
+      }
+    });
   out.Magnitude = 0.0;
   for (std::size_t j = points.LevelBegin(0); j < points.LevelEnd(0); ++j)
   {

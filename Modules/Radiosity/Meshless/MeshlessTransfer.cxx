@@ -4,6 +4,7 @@
 #include "Radiosity/Meshless/BounceSeries.h"
 #include "Radiosity/Meshless/MeshlessGather.h"
 #include "Radiosity/Meshless/MeshlessNeighbourhoods.h"
+#include "Radiosity/Meshless/ReceiverOracle.h"
 
 #include <tbb/parallel_for.h>
 
@@ -283,7 +284,7 @@ MeshlessTransfer::Series MeshlessTransfer::Indirect(
 
   BounceSeries series;
   double previousMagnitude = base;
-  std::vector<std::uint32_t> wave, refine, children, missing;
+  std::vector<std::uint32_t> wave;
   for (int bounce = 1; bounce <= maxBounces; ++bounce)
   {
     // The solve's RECEIVER-ORACLE (MeshlessRadiosity::Refine) over the rows.
@@ -299,58 +300,14 @@ MeshlessTransfer::Series MeshlessTransfer::Indirect(
     {
       wave[r] = static_cast<std::uint32_t>(r);
     }
-    compute(wave);
-    refine.clear();
-    for (std::size_t r = 0; r < this->CoarseRows; ++r)
-    {
-      double variation = 0.0;
-      for (std::size_t n = this->NeighbourStart[r]; n < this->NeighbourStart[r + 1]; ++n)
-      {
-        variation = std::max(variation, MaxComponent(glm::abs(value[this->Neighbours[n]] - value[r])));
-      }
-      if (variation > threshold)
-      {
-        refine.push_back(static_cast<std::uint32_t>(r));
-      }
-    }
-    while (!refine.empty())
-    {
-      children.clear();
-      for (std::uint32_t r : refine)
-      {
-        for (std::size_t c = this->ChildStart[r]; c < this->ChildStart[r + 1]; ++c)
-        {
-          if (!computed[this->Children[c]])
-          {
-            children.push_back(this->Children[c]);
-          }
-        }
-      }
-      missing.clear();
-      for (std::uint32_t c : children)
-      {
-        for (std::size_t a = this->AncestorStart[c]; a < this->AncestorStart[c + 1]; ++a)
-        {
-          if (!computed[this->Ancestors[a]])
-          {
-            missing.push_back(this->Ancestors[a]);
-          }
-        }
-      }
-      if (!missing.empty())
-      {
-        compute(missing);
-      }
-      compute(children);
-      refine.clear();
-      for (std::uint32_t c : children)
-      {
-        if (MaxComponent(glm::abs(alpha[c])) > threshold)
-        {
-          refine.push_back(c);
-        }
-      }
-    }
+    const auto listed = [](const std::vector<std::size_t>& start, const std::vector<std::uint32_t>& items) {
+      return [&start, &items](std::uint32_t r, std::vector<std::uint32_t>& into) {
+        into.insert(into.end(), items.begin() + start[r], items.begin() + start[r + 1]);
+      };
+    };
+    RunReceiverOracle(wave, threshold, value, alpha, computed, compute,
+      listed(this->NeighbourStart, this->Neighbours), listed(this->ChildStart, this->Children),
+      listed(this->AncestorStart, this->Ancestors));
     double magnitude = 0.0;
     for (std::size_t r = 0; r < this->CoarseRows; ++r)
     {
