@@ -47,6 +47,65 @@ bool ProjectOntoCluster(const FaceClusterHierarchy& h, std::uint32_t id, const V
 }
 }
 
+namespace
+{
+// Whether the basis at these points has full rank (a unique fit).
+bool FcqNodesDetermineBasis(const FaceCluster& c, const PolynomialBasis& basis, const std::vector<Vec3>& points)
+{
+  const int n = basis.Size();
+  if (static_cast<int>(points.size()) < n)
+  {
+    return false;
+  }
+  Eigen::MatrixXd phi(static_cast<Eigen::Index>(points.size()), n);
+  double values[PolynomialBasis::MaximumSize];
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    const glm::dvec2 uv = BoxCoordinates(c, points[p]);
+    basis.Evaluate(uv.x, uv.y, values);
+    for (int a = 0; a < n; ++a)
+    {
+      phi(static_cast<Eigen::Index>(p), a) = values[a];
+    }
+  }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(phi);
+  qr.setThreshold(1e-6);
+  return qr.rank() == n;
+}
+
+// Stroud's conical product nodes, m x m on every triangle of cluster c.
+void FcqTriangleNodes(const FaceClusterHierarchy& h, const FaceCluster& c, int functions, int n, SurfaceRule& rule)
+{
+  const std::uint32_t count = std::max<std::uint32_t>(c.Count, 1u);
+  int m = 1;
+  while (m < 5 && count * static_cast<std::uint32_t>(m * m) < static_cast<std::uint32_t>(std::max(n * n, functions)))
+  {
+    ++m;
+  }
+  double nodes[5], weights[5];
+  GaussLegendre(m, nodes, weights);
+  const Scene& scene = h.GetScene();
+  rule.Points.clear();
+  rule.Normals.clear();
+  rule.Weights.clear();
+  for (std::uint32_t k = 0; k < c.Count; ++k)
+  {
+    const std::uint32_t t = h.TriangleOrder()[c.First + k];
+    const Vec3 a = scene.Vertex(t, 0), e1 = scene.Vertex(t, 1) - a, e2 = scene.Vertex(t, 2) - a;
+    const double area = scene.Area(t);
+    for (int i = 0; i < m; ++i)
+    {
+      for (int j = 0; j < m; ++j)
+      {
+        rule.Points.push_back(a + nodes[i] * e1 + (1.0 - nodes[i]) * nodes[j] * e2);
+        rule.Normals.push_back(scene.Normal(t));
+        rule.Weights.push_back(2.0 * area * weights[i] * weights[j] * (1.0 - nodes[i]));
+      }
+    }
+  }
+}
+}
+
 void SurfaceRule::Fit(const double* values, std::size_t stride, double* coefficients) const
 {
   for (int a = 0; a < this->Functions; ++a)
@@ -177,7 +236,13 @@ SurfaceRule MakeSurfaceRule(const FaceClusterHierarchy& hierarchy, std::uint32_t
   GaussLegendre(n, nodes, weights);
   const Vec3 axis(c.Axis[2]);
   const double plane = std::max(double(c.HalfSize.x), double(c.HalfSize.y));
-  const double reach = 1.01 * double(c.HalfSize.z) + 1e-6 * plane + 1e-12;
+  // The box is kept in single precision: its centre is off the surface by
+  // up to a few float ulps of its coordinates, which for a flat cluster far
+  // from the origin (a quad of the Cornell box's light, 0.5 m up and 3 cm
+  // wide) exceeded 1e-6 of its size, so no node landed on it.
+  const double ulps = 8.0 * std::numeric_limits<float>::epsilon() *
+    (glm::length(Vec3(c.Centre)) + glm::length(Vec3(c.HalfSize)));
+  const double reach = 1.01 * double(c.HalfSize.z) + 1e-6 * plane + ulps + 1e-12;
   // A cluster that is not one flat sheet (its faces do not all look along
   // its normal) gets nodes at its area quantiles instead, on every face:
   // projected along the normal, the nodes would all land on the faces that
@@ -216,6 +281,19 @@ SurfaceRule MakeSurfaceRule(const FaceClusterHierarchy& hierarchy, std::uint32_t
         rule.Weights.push_back(weights[i] * weights[j] / tilt);
       }
     }
+  }
+  if (!FcqNodesDetermineBasis(c, basis, rule.Points) && c.Count <= 4u * static_cast<std::uint32_t>(n * n))
+  {
+    // Too few distinct nodes for the basis (a folded pair of triangles has
+    // two centroids; a flat cluster whose triangles miss most of its box):
+    // a least-squares fit through them is underdetermined, and its
+    // minimum-norm coefficients swing far from the nodes. Measured on the
+    // Cornell box split 16 with the quadratic basis: the light's leaves
+    // had irradiance vectors pointing into the ceiling, up to 0.19 of the
+    // peak below zero at its vertices. Instead: m x m nodes of Stroud's
+    // rule on every triangle of the cluster, m the least with
+    // Count m^2 >= max(n^2, basis size).
+    FcqTriangleNodes(hierarchy, c, basis.Size(), n, rule);
   }
   if (rule.Points.empty())
   {

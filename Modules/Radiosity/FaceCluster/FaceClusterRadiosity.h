@@ -132,7 +132,9 @@ public:
   RGB IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const;
   /// Per scene point: the irradiance vector (9 values: R, G, B vectors),
   /// the mean over the triangles using the point of their leaf elements'
-  /// expansions at it (section 3.5: what the display interpolates).
+  /// expansions at it (section 3.5: what the display interpolates), kept in
+  /// the half-space n . E >= 0 of the point's area-weighted normal n, where
+  /// the light arriving from above its surface lies.
   std::vector<std::array<double, 9>> VertexIrradianceVectors() const;
   /// Irradiance at probes, on the nearest input triangle facing each.
   std::vector<RGB> Evaluate(const std::vector<Probe>& probes) const;
