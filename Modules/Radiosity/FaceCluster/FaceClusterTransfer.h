@@ -85,7 +85,10 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
 double SelfTransferError(const FaceCluster& c, double radiosityMax);
 
 /// Whether any of `to`'s box lies in front of `from` (always true for a
-/// cluster with faces pointing both ways).
+/// cluster with faces pointing both ways), or, below its box, in front of
+/// any of its faces: Willmott's bound on the area facing along a corner to
+/// corner direction of the two boxes (exact for a curved cluster, whose
+/// tilted faces see below its base).
 bool ClusterFaces(const FaceCluster& from, const FaceCluster& to);
 
 /// n-point Gauss-Legendre nodes and weights on [0, 1] (n in 1..5).
