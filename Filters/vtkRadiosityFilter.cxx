@@ -37,13 +37,6 @@
 vtkStandardNewMacro(vtkRadiosityFilter);
 vtkCxxSetObjectMacro(vtkRadiosityFilter, Controller, vtkMultiProcessController);
 
-namespace
-{
-bool StartsWith(const std::string& text, const char* prefix)
-{
-  return text.compare(0, std::char_traits<char>::length(prefix), prefix) == 0;
-}
-}
 
 namespace
 {
@@ -65,167 +58,6 @@ vtkRadiosityFilter::~vtkRadiosityFilter()
 {
   this->SetLightsFileName(nullptr);
   this->SetController(nullptr);
-}
-
-void vtkRadiosityFilter::AddLight(vtkLight* light)
-{
-  if (light && !this->Lights->IsItemPresent(light))
-  {
-    this->Lights->AddItem(light);
-    this->Modified();
-  }
-}
-
-void vtkRadiosityFilter::SetLights(vtkLightCollection* lights)
-{
-  this->Lights->RemoveAllItems();
-  if (lights)
-  {
-    vtkCollectionSimpleIterator it;
-    lights->InitTraversal(it);
-    while (vtkLight* light = lights->GetNextLight(it))
-    {
-      this->Lights->AddItem(light);
-    }
-  }
-  this->Modified();
-}
-
-vtkLightCollection* vtkRadiosityFilter::GetLights()
-{
-  return this->Lights;
-}
-
-void vtkRadiosityFilter::RemoveAllLights()
-{
-  if (this->Lights->GetNumberOfItems() > 0)
-  {
-    this->Lights->RemoveAllItems();
-    this->Modified();
-  }
-}
-
-void vtkRadiosityFilter::SetSceneLights(const radiosity::LightSet& lights)
-{
-  *this->SceneLights = lights;
-  this->Modified();
-}
-
-vtkMTimeType vtkRadiosityFilter::GetMTime()
-{
-  vtkMTimeType time = std::max(this->Superclass::GetMTime(), this->Lights->GetMTime());
-  vtkCollectionSimpleIterator it;
-  this->Lights->InitTraversal(it);
-  while (vtkLight* light = this->Lights->GetNextLight(it))
-  {
-    time = std::max(time, light->GetMTime());
-  }
-  return time;
-}
-
-const char* vtkRadiosityFilter::GetSkyModelName(int model)
-{
-  switch (model)
-  {
-    case SkyNone:
-      return "none";
-    case SkyUniform:
-      return "uniform";
-    case SkyCieOvercast:
-      return "cie-overcast";
-    default:
-      return "unknown";
-  }
-}
-
-radiosity::LightSet vtkRadiosityFilter::GatherLights() const
-{
-  using radiosity::LightSet;
-  using radiosity::SceneError;
-  LightSet all;
-  std::string skyFrom;
-  const auto addSky = [&all, &skyFrom](const radiosity::Sky& sky, const std::string& from)
-  {
-    if (sky.Model == radiosity::SkyModel::None)
-    {
-      return;
-    }
-    if (!skyFrom.empty())
-    {
-      throw SceneError(from + ": a second sky (the first from " + skyFrom +
-        "; a scene has at most one)");
-    }
-    skyFrom = from;
-    all.SkyLight = sky;
-  };
-  if (this->LightsFileName && *this->LightsFileName)
-  {
-    // Throws naming the file, the light's index and the field.
-    const LightSet file = radiosity::ReadLightsFile(this->LightsFileName);
-    all.Lights = file.Lights;
-    addSky(file.SkyLight, std::string("LightsFileName ") + this->LightsFileName);
-  }
-  {
-    LightSet scene = *this->SceneLights;
-    try
-    {
-      radiosity::ValidateLights(scene);
-    }
-    catch (const SceneError& e)
-    {
-      throw SceneError(std::string("scene lights (SetSceneLights): ") + e.what());
-    }
-    all.Lights.insert(all.Lights.end(), scene.Lights.begin(), scene.Lights.end());
-    addSky(scene.SkyLight, "the sky of SetSceneLights");
-  }
-  {
-    LightSet vtk;
-    std::vector<bool> on;
-    vtkCollectionSimpleIterator it;
-    this->Lights->InitTraversal(it);
-    while (vtkLight* light = this->Lights->GetNextLight(it))
-    {
-      vtk.Lights.push_back(vtkRadiositySceneConverter::ToLight(light, this->LightScale));
-      on.push_back(light->GetSwitch() != 0);
-    }
-    try
-    {
-      radiosity::ValidateLights(vtk);
-    }
-    catch (const SceneError& e)
-    {
-      // "light i (type): field ..." of the core, i the index among AddLight's lights.
-      throw SceneError(std::string("vtkLights (AddLight, SetLights): ") + e.what());
-    }
-    for (std::size_t i = 0; i < vtk.Lights.size(); ++i)
-    {
-      if (on[i])
-      {
-        all.Lights.push_back(vtk.Lights[i]);
-      }
-    }
-  }
-  if (this->SkyModel != SkyNone)
-  {
-    radiosity::Sky sky;
-    sky.Model = this->SkyModel == SkyUniform ? radiosity::SkyModel::Uniform
-                                             : radiosity::SkyModel::CieOvercast;
-    sky.Radiance = radiosity::RGB(this->SkyRadiance[0], this->SkyRadiance[1], this->SkyRadiance[2]);
-    sky.Up = radiosity::Vec3(this->SkyUp[0], this->SkyUp[1], this->SkyUp[2]);
-    LightSet check;
-    check.SkyLight = sky;
-    try
-    {
-      radiosity::ValidateLights(check);
-    }
-    catch (const SceneError& e)
-    {
-      throw SceneError(std::string("SkyModel ") + GetSkyModelName(this->SkyModel) +
-        " (SkyRadiance, SkyUp): " + e.what());
-    }
-    addSky(check.SkyLight, std::string("SkyModel ") + GetSkyModelName(this->SkyModel));
-  }
-  return all;
 }
 
 const char* vtkRadiosityFilter::GetMethodName(int method)
@@ -572,46 +404,15 @@ int vtkRadiosityFilter::ExecuteRequest(
     return collective ? !this->Share->AnyRank(!go) : go;
   };
 
-  // Relighting: the kept transfer applies when the settings are those it
-  // was precomputed with and the surfaces are the same (the solver checks
-  // them and refuses, naming the difference, before changing anything).
-  bool relit = false;
-  this->RelightingStatus = this->Relighting ? "pending" : "off";
-  if (this->Relighting && !distributed && previous && previous->HasRelighting() &&
-    this->RelightingSettingsKey() == this->RelightingSettings)
+  // Relighting: the kept transfer, when it still applies, instead of a solve.
+  this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  last = Clock::now();
+  const auto relighting = last;
+  const bool relit = this->RelightWith(std::move(previous), sharedScene, progress, distributed);
+  if (relit)
   {
-    this->PreprocessSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-    last = Clock::now();
-    const auto relighting = last;
-    try
-    {
-      this->Statistics = previous->Relight(sharedScene, progress);
-      relit = true;
-      this->Solver = previous;
-      this->SolveWallSeconds = std::chrono::duration<double>(Clock::now() - relighting).count();
-      if (const auto meshless = this->GetMeshlessSolution())
-      {
-        const radiosity::MeshlessStatistics& m = meshless->Statistics();
-        std::ostringstream status;
-        status << "relit: direct light " << m.RelightDirectSeconds << " s, transfer " << m.RelightIndirectSeconds
-               << " s, " << m.RelightBounces << " bounces";
-        this->RelightingStatus = status.str();
-      }
-    }
-    catch (const radiosity::SceneError& e)
-    {
-      this->Warn(std::string("relighting invalidated: ") + e.what());
-      this->RelightingStatus = std::string("invalidated: ") + e.what();
-    }
+    this->SolveWallSeconds = std::chrono::duration<double>(Clock::now() - relighting).count();
   }
-  else if (this->Relighting && previous && previous->HasRelighting())
-  {
-    const std::string why = distributed ? "the request runs on MPI ranks"
-                                        : "the method's settings changed since the precomputation";
-    this->Warn("relighting invalidated: " + why + "; solving and precomputing again");
-    this->RelightingStatus = "invalidated: " + why;
-  }
-  previous.reset();
   if (!relit)
   {
     // One path for every method: build its solver, solve, output the surface
@@ -627,15 +428,7 @@ int vtkRadiosityFilter::ExecuteRequest(
     this->SolveWallSeconds = std::chrono::duration<double>(Clock::now() - solving).count();
     if (this->Relighting)
     {
-      // An invalidated transfer's status keeps why, before the new one's.
-      const std::string invalidated =
-        StartsWith(this->RelightingStatus, "invalidated: ") ? this->RelightingStatus + "; " : std::string();
       this->PrecomputeRelighting(progress);
-      this->RelightingStatus = invalidated + this->RelightingStatus;
-    }
-    else
-    {
-      this->RelightingStatus = "off";
     }
   }
   const auto solved = Clock::now();
@@ -764,58 +557,6 @@ int vtkRadiosityFilter::ExecuteRequest(
   this->ProductSeconds = std::chrono::duration<double>(Clock::now() - evaluated).count();
   this->UpdateProgress(1.0);
   return 1;
-}
-
-std::string vtkRadiosityFilter::RelightingSettingsKey() const
-{
-  std::ostringstream key;
-  key.precision(17);
-  key << this->Method << ' ' << this->Tolerance << ' ' << this->MaxIterations << ' ' << this->MaxTime << ' '
-      << this->NumberOfThreads << ' ' << this->MaxMemory << ' ' << this->PointRadius << ' ' << this->PointLevels
-      << ' ' << this->GatherRays << ' ' << this->VariationThreshold << ' ' << this->SolidAngleThreshold;
-  return key.str();
-}
-
-void vtkRadiosityFilter::PrecomputeRelighting(const radiosity::ProgressCallback& progress)
-{
-  this->RelightingSettings.clear();
-  if (this->Controller && this->Controller->GetNumberOfProcesses() > 1)
-  {
-    this->RelightingStatus = "unavailable: relighting runs on one process (this request runs on MPI ranks)";
-    return;
-  }
-  if (!this->Solver->SupportsRelighting())
-  {
-    this->RelightingStatus = std::string("unavailable: method ") + this->Solver->MethodName() +
-      " has no relighting (Method Meshless has)";
-    this->Warn("Relighting is on, but " + this->RelightingStatus.substr(13));
-    return;
-  }
-  if (this->Statistics.Stop == radiosity::StopReason::Aborted ||
-    this->Statistics.Stop == radiosity::StopReason::NoEmitters)
-  {
-    this->RelightingStatus = "unavailable: the solve was aborted or had no light; nothing precomputed";
-    return;
-  }
-  const auto start = std::chrono::steady_clock::now();
-  if (!this->Solver->PrecomputeRelighting(progress))
-  {
-    this->RelightingStatus = "unavailable: the precomputation was aborted";
-    return;
-  }
-  this->RelightingPrecomputeSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  this->RelightingSettings = this->RelightingSettingsKey();
-  std::ostringstream status;
-  status << "precomputed: ";
-  if (const auto meshless = this->GetMeshlessSolution())
-  {
-    const radiosity::MeshlessStatistics& m = meshless->Statistics();
-    status << m.TransferReceivers << " receivers, " << m.TransferEntries << " entries, "
-           << static_cast<double>(m.TransferBytes) / 1048576.0 << " MiB, ";
-  }
-  status << this->RelightingPrecomputeSeconds << " s";
-  this->RelightingStatus = status.str();
 }
 
 void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)

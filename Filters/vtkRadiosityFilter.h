@@ -660,8 +660,16 @@ private:
   double RelightingPrecomputeSeconds = 0.0;
   /// The settings a precomputed transfer depends on (the method's, not the lights').
   std::string RelightingSettingsKey() const;
-  /// After a solve with Relighting on: precompute the transfer, or say why not.
+  /// After a solve with Relighting on: precompute the transfer, or say why
+  /// not (an invalidated transfer's reason kept before the new status).
   void PrecomputeRelighting(const radiosity::ProgressCallback& progress);
+  void PrecomputeRelightingAnew(const radiosity::ProgressCallback& progress);
+  /// The previous request's solver relit for `scene` when Relighting is on
+  /// and its transfer still applies (then it is the solver again); false,
+  /// with the status and a warning saying why, when a solve is needed.
+  bool RelightWith(std::shared_ptr<radiosity::RadiositySolver> previous,
+    const std::shared_ptr<const radiosity::Scene>& scene, const radiosity::ProgressCallback& progress,
+    bool distributed);
 };
 
 #endif
