@@ -33,6 +33,15 @@ void StandUpright(Scene& bunny, double height, const Vec3& base);
  * evenly spread triangles bisected (T-junctions; the shape is unchanged).
  */
 Scene MakeBunnyRoomWithTriangles(const Scene& bunny, std::size_t triangles);
+
+/**
+ * The glossy statue (TestGlossyBunnyCornell, TestFaceClusterVectorIrradiance):
+ * the Cornell box without its blocks, every triangle split in 16, and the
+ * bunny subdivided `levels` times, 0.25 m high on the middle of the floor,
+ * reflectance (0.6, 0.55, 0.5), specular 0.35, shininess 10, object 0.
+ * `firstBunnyPoint`: where the bunny's points start.
+ */
+Scene MakeGlossyStatueCornell(Scene bunny, int levels, std::size_t* firstBunnyPoint = nullptr);
 } // namespace radiosity
 
 #endif

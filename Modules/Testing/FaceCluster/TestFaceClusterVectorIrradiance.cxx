@@ -176,38 +176,7 @@ VectorErrors CompareWithDenseGather(
 /// triangles, to keep the dense gather quick). `firstBunnyPoint`: its first point.
 Scene GlossyStatue(int levels, std::size_t& firstBunnyPoint)
 {
-  const Scene box = MakeCornellBox();
-  Scene room;
-  room.Points = box.Points;
-  room.ObjectNames = box.ObjectNames;
-  for (std::size_t t = 0; t < box.Triangles.size(); ++t)
-  {
-    if (box.ObjectIds[t] < 6)
-    {
-      room.Triangles.push_back(box.Triangles[t]);
-      room.Materials.push_back(box.Materials[t]);
-      room.ObjectIds.push_back(box.ObjectIds[t]);
-    }
-  }
-  room.ObjectNames.resize(6);
-  room = SubdividedScene(room, 2);
-  Scene bunny = ReadNpmBunny(RADIOSITY_BUNNY_JS);
-  for (int l = 0; l < levels; ++l)
-  {
-    SubdivideAtMidpoints(bunny.Points, bunny.Triangles);
-  }
-  StandUpright(bunny, 0.25, Vec3(0.278, 0.0, 0.3));
-  Material statue;
-  statue.Reflectance = RGB(0.6, 0.55, 0.5);
-  statue.Specular = RGB(0.35);
-  statue.Shininess = 10.0;
-  bunny.Materials.assign(bunny.Triangles.size(), statue);
-  bunny.ObjectIds.assign(bunny.Triangles.size(), 0);
-  bunny.ObjectNames = { "bunny" };
-  firstBunnyPoint = room.Points.size();
-  AppendScene(room, bunny);
-  room.SourceCells.clear();
-  return room;
+  return MakeGlossyStatueCornell(ReadNpmBunny(RADIOSITY_BUNNY_JS), levels, &firstBunnyPoint);
 }
 #endif
 }
