@@ -103,6 +103,7 @@ struct SolverStatistics
   std::size_t PairsUnoccludable = 0; ///< visible pairs that needed no ray
   std::size_t Occluders = 0;         ///< input triangles that can block a transfer
   std::size_t Links = 0;             ///< hierarchical: node-to-node transfers
+  std::size_t ClusterLinks = 0;      ///< hierarchical: links with a cluster at one end (part of Links)
   std::size_t PartialLinks = 0;      ///< hierarchical: links with recorded blockers
   std::size_t HiddenLinks = 0;       ///< hierarchical: links found fully occluded
   /// hierarchical: links with more candidate blockers than MaxBlockersPerLink

@@ -405,7 +405,8 @@ std::size_t ConformBoundaries(
 RGB AccuratePointIrradiance(
   const HierarchicalRadiosity& solution, std::uint32_t leaf, const Vec3& x, const Vec3& n)
 {
-  return ChainIrradiance(GatherChain(solution, leaf), x, n) + solution.DirectLight(x, n);
+  return ChainIrradiance(GatherChain(solution, leaf), x, n) + solution.DirectLight(x, n) +
+    solution.ClusterIrradiance(leaf);
 }
 
 DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
@@ -624,10 +625,12 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       const std::vector<ChainSource> chain = GatherChain(s, leaves[i]);
       const Vec3& n = mesh[leaves[i]].Normal;
       const Vec3& c = mesh[leaves[i]].Centroid;
+      // Clustered: what the cluster links bring, a constant per input triangle.
+      const RGB clustered = s.ClusterIrradiance(leaves[i]);
       for (std::uint32_t k : owned[i])
       {
         const Vec3 x = Inside(sharedPoints[k], c);
-        sharedValues[k] = ChainIrradiance(chain, x, n) +
+        sharedValues[k] = clustered + ChainIrradiance(chain, x, n) +
           (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n) : RGB(0.0));
       }
       LeafWork& w = work[i];
@@ -635,7 +638,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
       {
         const Vec3 x = Inside(w.LocalPoints[k], c);
-        w.LocalValues[k] = ChainIrradiance(chain, x, n) +
+        w.LocalValues[k] = clustered + ChainIrradiance(chain, x, n) +
           (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n) : RGB(0.0));
       }
       if (lights && lights->HasPunctualLights())

@@ -260,5 +260,6 @@ void HierarchicalRadiosity::Normalize()
       }
     });
   share.Combine(this->Normalization.data(), n);
+  this->NormalizeClusters();
 }
 } // namespace radiosity

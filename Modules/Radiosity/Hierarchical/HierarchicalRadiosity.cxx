@@ -6,6 +6,7 @@
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/MemoryBudget.h"
 #include "Radiosity/Common/MeshProbeTracker.h"
+#include "Radiosity/Hierarchical/ClusterLinks.h"
 #include "Radiosity/Hierarchical/HierarchicalNodeRules.h"
 #include "Radiosity/Common/Visibility.h"
 
@@ -31,8 +32,13 @@ using hierarchical::RuleA;
 // per-node arrays. Measured: the sphere interior's 1.64 million links
 // (1,280 triangles) raise the peak resident memory by 183 MB, 112 bytes each.
 constexpr double BytesPerLink = 8.0 + 32.0 + 24.0 + 1.5 * 32.0;
-constexpr double BytesPerNode = sizeof(Element) + 24.0 + 48.0 + 4 * sizeof(RGB) + sizeof(double);
+constexpr double NodeBytes = sizeof(Element) + 24.0 + 48.0 + 4 * sizeof(RGB) + sizeof(double);
 } // namespace
+
+double HierarchicalRadiosity::BytesPerNode()
+{
+  return NodeBytes;
+}
 
 HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const HierarchicalOptions& options)
   : SourceScene(scene)
@@ -41,17 +47,21 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene, const Hierarchi
 {
   // Every facing pair of input triangles is linked before any refinement:
   // refuse a scene whose initial links do not fit before making them.
+  // Clustered, the first links are between the objects' cluster roots
+  // (checked in InitialClusterLinks).
   this->Budget = ResolveMemoryBudget(this->Settings.MemoryBudgetBytes);
-  const double initial = FacingTrianglePairs(scene);
   const std::size_t n = scene.Triangles.size();
-  CheckMemoryBudget(initial * BytesPerLink + static_cast<double>(n) * BytesPerNode, this->Budget,
+  this->UseClusters = this->Settings.Clustering == HierarchicalClustering::On ||
+    (this->Settings.Clustering == HierarchicalClustering::Auto && n > this->Settings.ClusterAbove);
+  const double initial = this->UseClusters ? 0.0 : FacingTrianglePairs(scene);
+  CheckMemoryBudget(initial * BytesPerLink + static_cast<double>(n) * NodeBytes, this->Budget,
     "hierarchical radiosity: the initial links between every facing pair of the " + std::to_string(n) +
       " input triangles (" + FormatCount(initial) + " links, before any refinement)",
     "plain hierarchical radiosity links every pair of input triangles; for this many, use "
     "--method facecluster or --method meshless (clustered), or fewer triangles");
   this->LinkCapacity = this->Budget > 0 ? static_cast<std::size_t>(std::min(this->Budget / BytesPerLink, 1e18))
                                         : std::numeric_limits<std::size_t>::max();
-  this->NodeCapacity = this->Budget > 0 ? static_cast<std::size_t>(std::min(this->Budget / BytesPerNode, 1e18))
+  this->NodeCapacity = this->Budget > 0 ? static_cast<std::size_t>(std::min(this->Budget / NodeBytes, 1e18))
                                         : std::numeric_limits<std::size_t>::max();
   this->Rays = std::make_unique<Visibility>(scene, this->SceneInfo.CanOcclude);
   // Roots only: one node per input triangle, split where the links ask.
@@ -131,7 +141,7 @@ std::uint32_t HierarchicalRadiosity::Children(std::uint32_t e)
   }
   if (mesh.Elements().size() + 4 > this->NodeCapacity)
   {
-    CheckMemoryBudget(static_cast<double>(mesh.Elements().size() + 4) * BytesPerNode +
+    CheckMemoryBudget(static_cast<double>(mesh.Elements().size() + 4) * NodeBytes +
         static_cast<double>(this->LinkList.size()) * BytesPerLink,
       this->Budget,
       "hierarchical radiosity: refining to " + std::to_string(mesh.Elements().size() + 4) + " quadtree nodes",
@@ -224,7 +234,7 @@ std::size_t HierarchicalRadiosity::RefineLinks(std::vector<PendingLink>& out)
 {
   std::vector<HierarchicalLink> kept;
   kept.reserve(this->LinkList.size());
-  std::size_t changed = 0;
+  std::size_t changed = this->RefineClusterLinks(out);
   for (const HierarchicalLink& l : this->LinkList)
   {
     const double bq = MaxComponent(this->NodeRadiosity[l.Source]);
@@ -276,14 +286,18 @@ std::vector<std::uint32_t> HierarchicalRadiosity::LinksOf(std::uint32_t e) const
   return out;
 }
 
-RGB HierarchicalRadiosity::PushPull(
-  std::uint32_t e, const RGB& downVisible, const RGB& downOther, std::vector<RGB>& change)
+RGB HierarchicalRadiosity::PushPull(std::uint32_t e, const RGB& downVisible, const RGB& downOther,
+  const RGB& downClustered, std::vector<RGB>& change)
 {
   const ElementMesh& mesh = *this->Elements;
   const Element& el = mesh[e];
   const RGB hv = downVisible + this->NodeGatheredVisible[e];
   const RGB ho = downOther + this->NodeGathered[e] - this->NodeGatheredVisible[e];
-  const RGB h = (el.IsLeaf() ? this->Normalization[e] : 1.0) * hv + ho;
+  // Clustered: the cluster links' part, normalised per leaf (ClusterLinks::Normalize).
+  const RGB hc = downClustered + (e < this->ClusterDown.size() ? this->ClusterDown[e] : RGB(0.0)) +
+    (e < this->ElementDown.size() ? this->ElementDown[e] : RGB(0.0));
+  const RGB h = (el.IsLeaf() ? this->Normalization[e] : 1.0) * hv + ho +
+    (el.IsLeaf() && e < this->ClusterScale.size() ? this->ClusterScale[e] : 1.0) * hc;
   this->NodeIrradiance[e] = h;
   if (el.IsLeaf())
   {
@@ -298,7 +312,7 @@ RGB HierarchicalRadiosity::PushPull(
   for (int i = 0; i < 4; ++i)
   {
     const std::uint32_t c = static_cast<std::uint32_t>(el.FirstChild + i);
-    sum += mesh[c].Area * this->PushPull(c, hv, ho, change);
+    sum += mesh[c].Area * this->PushPull(c, hv, ho, hc, change);
     area += mesh[c].Area;
   }
   this->NodeRadiosity[e] = area > 0 ? sum / area : this->NodeRadiosity[e];
@@ -329,6 +343,7 @@ double HierarchicalRadiosity::Sweep(std::vector<RGB>& change)
 {
   const std::size_t n = this->Elements->Elements().size();
   change.assign(n, RGB(0.0));
+  this->GatherClusters();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
     [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t e = range.begin(); e != range.end(); ++e)
@@ -351,7 +366,7 @@ double HierarchicalRadiosity::Sweep(std::vector<RGB>& change)
       }
     });
   tbb::parallel_for(std::size_t(0), this->Roots.size(),
-    [&](std::size_t r) { this->PushPull(this->Roots[r], RGB(0.0), RGB(0.0), change); });
+    [&](std::size_t r) { this->PushPull(this->Roots[r], RGB(0.0), RGB(0.0), RGB(0.0), change); });
   double delta = 0.0;
   for (std::size_t e = 0; e < n; ++e)
   {
@@ -418,7 +433,9 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
       return stats;
     }
     const auto linking = [&]() { return report("linking", 0, 1.0); };
-    if (!this->InitialLinks(pending, linking) || !this->ComputeLinks(pending, stats, linking))
+    const bool linked = this->UseClusters ? this->InitialClusterLinks(pending, linking, progress)
+                                          : this->InitialLinks(pending, linking);
+    if (!linked || !this->ComputeLinks(pending, stats, linking))
     {
       stats.Stop = StopReason::Aborted;
       stats.SolveSeconds = start.Seconds();
@@ -539,7 +556,8 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
       previousDelta = delta;
     }
     stats.Elements = mesh.NumberOfLeaves();
-    stats.Links = this->LinkList.size();
+    stats.Links = this->LinkList.size() + this->NumberOfClusterLinks();
+    stats.ClusterLinks = this->NumberOfClusterLinks();
     stats.PartialLinks = 0;
     stats.HiddenLinks = 0;
     stats.LinksWithBlockersCut = 0;

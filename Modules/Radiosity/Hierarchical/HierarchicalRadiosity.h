@@ -56,7 +56,17 @@
 
 namespace radiosity
 {
+class ClusterLinks;
 class Visibility;
+
+/// Whether links start from the face cluster hierarchy (ClusterLinks.h)
+/// instead of every facing pair of input triangles.
+enum class HierarchicalClustering
+{
+  Off,
+  On,
+  Auto ///< on above HierarchicalOptions::ClusterAbove triangles
+};
 
 struct HierarchicalOptions
 {
@@ -81,6 +91,8 @@ struct HierarchicalOptions
   /// Checked before the first allocation (the initial links of every facing
   /// pair of input triangles) and while links and nodes are refined.
   double MemoryBudgetBytes = 0.0;
+  HierarchicalClustering Clustering = HierarchicalClustering::Auto;
+  std::size_t ClusterAbove = 2048; ///< Auto: clustered for more input triangles than this
   int SkySamples = 1024; ///< sky quadrature directions per light-link sample (DirectLighting)
   std::vector<Probe> ErrorProbes;   ///< reference irradiance: error in every history row
   std::vector<RGB> ErrorReference;
@@ -148,6 +160,14 @@ public:
   /// its light arrives through an ancestor's link or not at all).
   const RGB& LightLinkIrradiance(std::uint32_t e) const { return this->NodeDirect[e]; }
   std::size_t NumberOfLightLinks() const { return this->LightLinks; }
+  /// Whether the links start from clusters (HierarchicalOptions::Clustering).
+  bool Clustered() const { return this->ClusterSolve != nullptr; }
+  /// Links with a cluster at one end (0 unclustered); not in Links().
+  std::size_t NumberOfClusterLinks() const;
+  /// Irradiance quadtree leaf e receives through the cluster links, W/m^2
+  /// (a constant over the leaf; 0 unclustered): part of Irradiance(e), and
+  /// of every point irradiance the mesher computes on the leaf.
+  RGB ClusterIrradiance(std::uint32_t leaf) const;
   TriangleCorners Corners(std::uint32_t e) const;
 
 private:
@@ -161,7 +181,16 @@ private:
   void Refine(std::uint32_t p, std::uint32_t q, std::vector<PendingLink>& out);
   /// false when `keepGoing` (asked once per root) said stop.
   bool InitialLinks(std::vector<PendingLink>& out, const std::function<bool()>& keepGoing);
+  /// Clustered: the face cluster hierarchy built and the roots linked
+  /// (HierarchicalClusters.cxx); the triangle pairs go to Refine.
+  bool InitialClusterLinks(std::vector<PendingLink>& out, const std::function<bool()>& keepGoing,
+    const ProgressCallback& progress);
+  void GatherClusters();
+  /// ClusterLinks::Normalize with each triangle's polygon links' sum.
+  void NormalizeClusters();
   std::size_t RefineLinks(std::vector<PendingLink>& out);
+  std::size_t RefineClusterLinks(std::vector<PendingLink>& out);
+  static double BytesPerNode();
   /// false when `keepGoing` (asked between blocks of links, on this thread) said stop.
   bool ComputeLinks(const std::vector<PendingLink>& pending, SolverStatistics& stats,
     const std::function<bool()>& keepGoing);
@@ -175,7 +204,7 @@ private:
   /// Returns the power the lights deliver to the surfaces.
   double LinkLights();
   double Sweep(std::vector<RGB>& change);
-  RGB PushPull(std::uint32_t e, const RGB& downVisible, const RGB& downOther,
+  RGB PushPull(std::uint32_t e, const RGB& downVisible, const RGB& downOther, const RGB& downClustered,
     std::vector<RGB>& change);
   void Normalize();
   RGB Pull(std::uint32_t e);
@@ -197,6 +226,12 @@ private:
   /// its links and its ancestors' links (see Normalize).
   std::vector<double> Normalization;
   std::vector<std::uint32_t> Roots;
+  bool UseClusters = false;
+  std::unique_ptr<ClusterLinks> ClusterSolve;
+  std::vector<RGB> ClusterDown; ///< per input triangle: irradiance through the clusters' vector links
+  std::vector<RGB> ElementDown; ///< per quadtree node: irradiance through its own scalar cluster links
+  std::vector<double> ClusterScale; ///< per leaf: the cluster links' row-sum normalisation (ClusterLinks::Normalize)
+  std::size_t ClusterRowsScaled = 0; ///< triangles whose cluster links were normalised
   double Epsilon = 0.0;
   double MinEdge = 0.0;
   double PlaneTolerance = 0.0;

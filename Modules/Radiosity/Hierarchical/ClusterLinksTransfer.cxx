@@ -1,0 +1,355 @@
+// Clustered hierarchical radiosity's transfers: the links' form factors from
+// sample points with sampled visibility, the gather with first-order vector
+// irradiance pushed down the face cluster tree, and the row-sum normalisation
+// where a triangle's hemisphere is closed (ClusterLinks.h has the method).
+#include "Radiosity/Hierarchical/ClusterLinks.h"
+
+#include "Radiosity/Common/Visibility.h"
+#include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
+#include "Radiosity/Hierarchical/HierarchicalNodeRules.h"
+
+#include <glm/geometric.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace radiosity
+{
+void ClusterLinks::SamplesOf(std::uint32_t node, SamplePoints& s) const
+{
+  const Scene& scene = this->SourceScene;
+  const FaceClusterHierarchy& h = *this->Clusters;
+  s.Count = 0;
+  auto add = [&](const Vec3& x, const Vec3& n, double w) {
+    s.Point[s.Count] = x;
+    s.Normal[s.Count] = n;
+    s.Weight[s.Count] = w;
+    ++s.Count;
+  };
+  if (IsElement(node))
+  {
+    const std::uint32_t e = ElementOf(node);
+    const TriangleCorners p = { this->Mesh.Corner(e, 0), this->Mesh.Corner(e, 1), this->Mesh.Corner(e, 2) };
+    for (const auto& w : hierarchical::RuleA)
+    {
+      add(hierarchical::At(p, w), this->Mesh[e].Normal, 0.25 * this->Mesh[e].Area);
+    }
+    return;
+  }
+  const std::vector<double>& cumulative = h.CumulativeArea();
+  const std::vector<std::uint32_t>& order = h.TriangleOrder();
+  const FaceCluster& f = *h.InternalCluster(node);
+  if (f.Count <= SamplePoints::Most)
+  {
+    for (std::uint32_t k = f.First; k < f.First + f.Count; ++k)
+    {
+      add(scene.Centroid(order[k]), scene.Normal(order[k]), scene.Area(order[k]));
+    }
+    return;
+  }
+  const double begin = cumulative[f.First], area = cumulative[f.First + f.Count] - begin;
+  for (int k = 0; k < SamplePoints::Most; ++k)
+  {
+    const double target = begin + (k + 0.5) / SamplePoints::Most * area;
+    const auto it = std::upper_bound(cumulative.begin() + f.First + 1, cumulative.begin() + f.First + f.Count + 1, target);
+    const std::uint32_t t = order[static_cast<std::size_t>(it - cumulative.begin()) - 1];
+    add(scene.Centroid(t), scene.Normal(t), area / SamplePoints::Most);
+  }
+}
+
+bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function<bool()>& keepGoing)
+{
+  constexpr int Most = SamplePoints::Most;
+  std::vector<ScalarLink> scalars(pending.size());
+  std::vector<VectorLink> vectors(pending.size());
+  constexpr std::size_t Block = 1 << 14;
+  for (std::size_t begin = 0; begin < pending.size(); begin += Block)
+  {
+    if (!keepGoing())
+    {
+      return false;
+    }
+    const std::size_t end = std::min(pending.size(), begin + Block);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 16), [&](const tbb::blocked_range<std::size_t>& range) {
+      SamplePoints rs, qs;
+      Vec3 from[Most * Most], to[Most * Most];
+      unsigned char visible[Most * Most];
+      double seen[Most];
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+      {
+        const Pair& p = pending[i];
+        this->SamplesOf(p.Receiver, rs);
+        this->SamplesOf(p.Source, qs);
+        const std::size_t pairs = static_cast<std::size_t>(rs.Count) * static_cast<std::size_t>(qs.Count);
+        if (this->Rays.Empty())
+        {
+          std::fill(visible, visible + pairs, static_cast<unsigned char>(1));
+        }
+        else
+        {
+          for (int a = 0; a < rs.Count; ++a)
+          {
+            for (int b = 0; b < qs.Count; ++b)
+            {
+              from[a * qs.Count + b] = rs.Point[a];
+              to[a * qs.Count + b] = qs.Point[b];
+            }
+          }
+          this->Rays.TestSegments(from, to, pairs, visible);
+        }
+        if (IsElement(p.Receiver))
+        {
+          // The mean over the element's points, each in its own half-space.
+          double f = 0.0;
+          for (int a = 0; a < rs.Count; ++a)
+          {
+            for (int b = 0; b < qs.Count; ++b)
+            {
+              const Vec3 d = qs.Point[b] - rs.Point[a];
+              const double r2 = glm::dot(d, d);
+              if (visible[a * qs.Count + b] && r2 > 0)
+              {
+                const double r = std::sqrt(r2);
+                f += qs.Weight[b] * std::max(0.0, -glm::dot(qs.Normal[b], d) / r) *
+                  std::max(0.0, glm::dot(rs.Normal[a], d) / r) / (Pi * r2);
+              }
+            }
+          }
+          scalars[i] = { ElementOf(p.Receiver), p.Source, static_cast<float>(f / rs.Count) };
+          continue;
+        }
+        // A cluster: the vector irradiance per unit radiosity at its centroid
+        // and its gradient, each source point weighted by the fraction of the
+        // receiver's points that see it. A point source y of area w and
+        // normal m gives at x, with d = x - y and r = |d|:
+        //   E(x) = -w (m . d) d / (pi r^4),
+        //   dE_j/dx_k = -w (m_k d_j + (m . d) delta_jk - 4 (m . d) d_j d_k / r^2) / (pi r^4).
+        for (int b = 0; b < qs.Count; ++b)
+        {
+          int count = 0;
+          for (int a = 0; a < rs.Count; ++a)
+          {
+            count += visible[a * qs.Count + b] != 0;
+          }
+          seen[b] = static_cast<double>(count) / rs.Count;
+        }
+        const Vec3 c(this->Clusters->InternalCluster(p.Receiver)->Centroid);
+        Vec3 e(0.0);
+        double g[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+        for (int b = 0; b < qs.Count; ++b)
+        {
+          const Vec3 d = c - qs.Point[b];
+          const double r2 = glm::dot(d, d);
+          const double md = glm::dot(qs.Normal[b], d);
+          if (!(seen[b] > 0) || !(r2 > 0) || md <= 0)
+          {
+            continue;
+          }
+          const double w = seen[b] * qs.Weight[b] / (Pi * r2 * r2);
+          e -= w * md * d;
+          for (int k = 0; k < 3; ++k)
+          {
+            for (int j = 0; j < 3; ++j)
+            {
+              g[3 * k + j] -= w * (qs.Normal[b][k] * d[j] + (j == k ? md : 0.0) - 4.0 * md * d[j] * d[k] / r2);
+            }
+          }
+        }
+        VectorLink& l = vectors[i];
+        l.Receiver = p.Receiver;
+        l.Source = p.Source;
+        l.Factor = glm::vec3(e);
+        for (int k = 0; k < 9; ++k)
+        {
+          l.Gradient[k] = static_cast<float>(g[k]);
+        }
+      }
+    });
+  }
+  for (std::size_t i = 0; i < pending.size(); ++i)
+  {
+    if (IsElement(pending[i].Receiver))
+    {
+      if (scalars[i].Factor > 0)
+      {
+        this->ToElements.push_back(scalars[i]);
+      }
+    }
+    else if (vectors[i].Factor != glm::vec3(0.0f))
+    {
+      this->ToClusters.push_back(vectors[i]);
+    }
+  }
+  this->Index();
+  return true;
+}
+
+namespace
+{
+/// Irradiance about a centre to first order: per colour channel, the vector
+/// E (x, y, z) and its gradient G[3 k + j] = dE_j / dx_k.
+struct Expansion
+{
+  Vec3 Centre{ 0.0 };
+  RGB E[3] = { RGB(0.0), RGB(0.0), RGB(0.0) };
+  RGB G[9] = { RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0) };
+
+  /// The vector at x (first order).
+  void At(const Vec3& x, RGB (&out)[3]) const
+  {
+    const Vec3 d = x - this->Centre;
+    for (int j = 0; j < 3; ++j)
+    {
+      out[j] = this->E[j] + d.x * this->G[j] + d.y * this->G[3 + j] + d.z * this->G[6 + j];
+    }
+  }
+};
+} // namespace
+
+void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, std::vector<RGB>& out) const
+{
+  const Expansion& above = *static_cast<const Expansion*>(aboveExpansion);
+  if (c < this->Triangles)
+  {
+    RGB v[3];
+    above.At(this->SourceScene.Centroid(c), v);
+    const Vec3 normal = this->SourceScene.Normal(c);
+    out[c] = glm::max(normal.x * v[0] + normal.y * v[1] + normal.z * v[2], RGB(0.0));
+    return;
+  }
+  const FaceCluster& f = *this->Clusters->InternalCluster(c);
+  Expansion here;
+  here.Centre = Vec3(f.Centroid);
+  above.At(here.Centre, here.E);
+  std::copy(std::begin(above.G), std::end(above.G), std::begin(here.G));
+  const std::size_t i = c - this->Triangles;
+  for (std::uint32_t k = this->ClusterOffsets[i]; k < this->ClusterOffsets[i + 1]; ++k)
+  {
+    const VectorLink& l = this->ToClusters[k];
+    const RGB& b = this->RadiosityOf(l.Source);
+    for (int j = 0; j < 3; ++j)
+    {
+      here.E[j] += double(l.Factor[j]) * b;
+    }
+    for (int j = 0; j < 9; ++j)
+    {
+      here.G[j] += double(l.Gradient[j]) * b;
+    }
+  }
+  if (f.Count > 4096)
+  {
+    tbb::parallel_invoke([&]() { this->Descend(f.Child[0], &here, out); },
+      [&]() { this->Descend(f.Child[1], &here, out); });
+  }
+  else
+  {
+    this->Descend(f.Child[0], &here, out);
+    this->Descend(f.Child[1], &here, out);
+  }
+}
+
+void ClusterLinks::Gather(std::vector<RGB>& triangleIrradiance, std::vector<RGB>& elementIrradiance) const
+{
+  const std::size_t elements = this->Mesh.Elements().size();
+  triangleIrradiance.assign(this->Triangles, RGB(0.0));
+  elementIrradiance.assign(elements, RGB(0.0));
+  if (!this->ToClusters.empty())
+  {
+    const Expansion none;
+    const std::vector<std::uint32_t>& roots = this->Clusters->Roots();
+    tbb::parallel_for(
+      std::size_t(0), roots.size(), [&](std::size_t r) { this->Descend(roots[r], &none, triangleIrradiance); });
+  }
+  const std::size_t indexed = std::min(elements, this->ElementOffsets.empty() ? 0 : this->ElementOffsets.size() - 1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, indexed, 256), [&](const tbb::blocked_range<std::size_t>& range) {
+    for (std::size_t e = range.begin(); e != range.end(); ++e)
+    {
+      RGB sum(0.0);
+      for (std::uint32_t k = this->ElementOffsets[e]; k < this->ElementOffsets[e + 1]; ++k)
+      {
+        sum += double(this->ToElements[k].Factor) * this->RadiosityOf(this->ToElements[k].Source);
+      }
+      elementIrradiance[e] = sum;
+    }
+  });
+}
+
+std::size_t ClusterLinks::Normalize(const std::vector<double>& polygonFactors, std::vector<double>& scale)
+{
+  const Scene& scene = this->SourceScene;
+  const std::size_t n = this->Triangles;
+  if (this->Closed.empty())
+  {
+    // Rays over the cosine-weighted hemisphere (stratified in the cosine,
+    // golden-angle turns), each longer than the scene, against every triangle.
+    constexpr int Rays = 32;
+    const Visibility all(scene, Visibility::AllTriangles(scene));
+    Vec3 lo(1e300), hi(-1e300);
+    for (const Vec3& p : scene.Points)
+    {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    const double diagonal = glm::length(hi - lo);
+    this->Closed.assign(n, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& range) {
+      Vec3 from[Rays], to[Rays];
+      unsigned char open[Rays];
+      for (std::size_t t = range.begin(); t != range.end(); ++t)
+      {
+        const Vec3 z = scene.Normal(t);
+        const Vec3 x = glm::normalize(std::fabs(z.x) < 0.9 ? glm::cross(z, Vec3(1, 0, 0)) : glm::cross(z, Vec3(0, 1, 0)));
+        const Vec3 y = glm::cross(z, x);
+        const Vec3 c = scene.Centroid(t);
+        for (int k = 0; k < Rays; ++k)
+        {
+          const double u = (k + 0.5) / Rays;
+          const double phi = 2.39996322972865332 * k + 0.618 * static_cast<double>(t % 97);
+          const double r = std::sqrt(u);
+          const Vec3 d = r * std::cos(phi) * x + r * std::sin(phi) * y + std::sqrt(1.0 - u) * z;
+          from[k] = c;
+          to[k] = c + 2.0 * diagonal * d;
+        }
+        all.TestSegments(from, to, Rays, open);
+        this->Closed[t] = std::none_of(open, open + Rays, [](unsigned char v) { return v != 0; });
+      }
+    });
+  }
+  // The cluster links' form factor sums: a gather of radiosity 1, then per
+  // leaf what its chain receives.
+  const std::vector<RGB>* radiosity = this->ElementRadiosity;
+  const std::size_t elements = this->Mesh.Elements().size();
+  const std::vector<RGB> ones(elements, RGB(1.0));
+  this->ElementRadiosity = &ones;
+  this->PullRadiosity();
+  std::vector<RGB> perTriangle, perElement;
+  this->Gather(perTriangle, perElement);
+  this->ElementRadiosity = radiosity;
+  scale.assign(elements, 1.0);
+  std::vector<unsigned char> scaled(elements, 0);
+  tbb::parallel_for(std::size_t(0), elements, [&](std::size_t i) {
+    const auto e = static_cast<std::uint32_t>(i);
+    const Element& el = this->Mesh[e];
+    if (!el.IsLeaf() || !this->Closed[el.Source])
+    {
+      return;
+    }
+    double clustered = perTriangle[el.Source].x;
+    for (std::int32_t a = static_cast<std::int32_t>(e); a >= 0; a = this->Mesh[static_cast<std::uint32_t>(a)].Parent)
+    {
+      clustered += perElement[static_cast<std::size_t>(a)].x;
+    }
+    const double wanted = 1.0 - polygonFactors[i];
+    // Far from 1 the links, not the quadrature, are wrong: left alone.
+    if (clustered > 0 && wanted > 0.5 * clustered && wanted < 2.0 * clustered)
+    {
+      scale[i] = wanted / clustered;
+      scaled[i] = 1;
+    }
+  });
+  return static_cast<std::size_t>(std::count(scaled.begin(), scaled.end(), 1));
+}
+} // namespace radiosity
