@@ -25,6 +25,17 @@ constexpr double HalfPi = 1.57079632679489661923;
 /// Measured on the 20,480-triangle sphere (rho 0.8): 0.25 and 0.4 gave the
 /// same links and error (the normal cone decides there).
 constexpr double ReceiverOpening = 0.25;
+/// Two elements whose spheres' radii sum to at most this fraction of their
+/// distance are linked with sampled visibility, not blockers.
+constexpr double DistantElements = 0.25;
+/// A link sampled at a cluster (K points with sampled visibility) only when
+/// the two spheres' radii sum to at most this fraction of the distance.
+/// Measured on a closed cube of 192 triangles, rho 0 and emission 1, without
+/// the row normalisation: irradiance 0.93 to 1.16 at 0.5, 0.96 to 1.10 at
+/// 0.35, 0.985 to 1.029 at 0.25 (exact 1).
+constexpr double SampledOpening = 0.25;
+/// Two elements too small to split are linked by samples up to this opening.
+constexpr double SmallOpening = 1.0;
 } // namespace
 
 ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceClusterHierarchy> hierarchy,
@@ -174,8 +185,9 @@ bool ClusterLinks::CannotExchange(const Bounds& receiver, const Bounds& source, 
 
 double ClusterLinks::Bound(const Bounds& r, const Bounds& q, std::uint32_t source) const
 {
-  const double gap = glm::length(q.Centre - r.Centre) - r.Radius - q.Radius;
-  return gap > 0 ? MaxComponent(this->RadiosityOf(source)) * std::max(q.Area, r.Area) / (Pi * gap * gap)
+  const double distance = glm::length(q.Centre - r.Centre);
+  const double gap = distance - r.Radius - q.Radius;
+  return gap > 0 ? MaxComponent(this->RadiosityOf(source)) * std::max(q.Area, r.Area) / (Pi * distance * distance)
                  : std::numeric_limits<double>::infinity();
 }
 
@@ -225,6 +237,44 @@ void ClusterLinks::Refine(
   }
   if (er && eq)
   {
+    // Two elements: a sampled link when they are distant, or both too small
+    // to split and apart; otherwise the polygon solver's exact link with its
+    // blockers (HierarchicalRadiosity::Refine).
+    if (MaxComponent(this->RadiosityOf(q)) > 0)
+    {
+      const Bounds R = this->BoundsOf(r), Q = this->BoundsOf(q);
+      const double distance = glm::length(Q.Centre - R.Centre);
+      const bool small = this->Mesh.LongestEdge(ElementOf(r)) <= this->MinEdge &&
+        this->Mesh.LongestEdge(ElementOf(q)) <= this->MinEdge && R.Radius + Q.Radius <= SmallOpening * distance;
+      const bool distant = R.Radius + Q.Radius <= DistantElements * distance && this->Bound(R, Q, q) <= epsilon;
+      const bool apart = distance > R.Radius + Q.Radius;
+      if (apart && this->Mesh.LongestEdge(ElementOf(r)) <= this->MinEdge &&
+        this->Mesh.LongestEdge(ElementOf(q)) > this->MinEdge && !small && !distant)
+      {
+        // A receiver too small to split, apart from a larger source: the
+        // source is split here, and its parts sampled, rather than every
+        // part's shaft searched for blockers on a receiver that meshing
+        // could not refine.
+        if (!this->CannotExchange(R, Q, q) && !this->CannotExchange(Q, R, r))
+        {
+          const std::uint32_t c = this->SplitElement(ElementOf(q));
+          for (std::uint32_t i = 0; i < 4; ++i)
+          {
+            this->Refine(r, (c + i) | ElementBit, epsilon, out, elements);
+          }
+        }
+        return;
+      }
+      if ((small || distant) && !this->CannotExchange(R, Q, q) && !this->CannotExchange(Q, R, r))
+      {
+        if (this->BeforeLink)
+        {
+          this->BeforeLink(this->NumberOfLinks() + out.size());
+        }
+        out.push_back({ r, q });
+        return;
+      }
+    }
     elements(ElementOf(r), ElementOf(q));
     return;
   }
@@ -249,7 +299,7 @@ void ClusterLinks::Refine(
     this->Deferred.push_back({ r, q });
     return;
   }
-  if (bound <= epsilon || (!sr && !sq))
+  if ((bound <= epsilon && R.Radius + Q.Radius <= SampledOpening * distance) || (!sr && !sq))
   {
     const double alpha = std::asin(std::min(1.0, (R.Radius + Q.Radius) / distance));
     const bool receives = er ||
