@@ -1,5 +1,7 @@
 #include "Radiosity/Scenes/SceneGenerators.h"
 
+#include <algorithm>
+
 #include <array>
 #include <cmath>
 #include <map>
@@ -237,6 +239,27 @@ Scene MakeSphereInterior(double radius, int levels, double reflectance, const RG
   }
   s.ObjectNames = { "sphere" };
   return s;
+}
+
+std::vector<Probe> CentroidProbes(const Scene& scene, std::size_t count)
+{
+  std::vector<Probe> probes;
+  const std::size_t step = std::max<std::size_t>(1, scene.Triangles.size() / std::max<std::size_t>(count, 1));
+  for (std::size_t t = 0; t < scene.Triangles.size(); t += step)
+  {
+    probes.push_back({ scene.Centroid(t), scene.Normal(t) });
+  }
+  return probes;
+}
+
+std::vector<Probe> PenumbraLineProbes()
+{
+  std::vector<Probe> probes;
+  for (int i = 0; i <= 36; ++i)
+  {
+    probes.push_back({ Vec3(-0.9 + 0.05 * i, 0.05, 0.0), Vec3(0, 0, 1) });
+  }
+  return probes;
 }
 
 Scene MakeShadowScene(int n, double emission)

@@ -3,6 +3,7 @@
 #ifndef Radiosity_SceneGenerators_h
 #define Radiosity_SceneGenerators_h
 
+#include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/Scene.h"
 
 #include <functional>
@@ -52,6 +53,14 @@ void SubdivideAtMidpoints(std::vector<Vec3>& points, std::vector<Triangle>& tria
 /// `scene` with every triangle split into 4^levels at edge midpoints, each
 /// part keeping its triangle's material, object and source cell.
 Scene SubdividedScene(const Scene& scene, int levels);
+
+/// About `count` probes at triangle centroids (every k-th triangle, k from
+/// the triangle count), each with its triangle's normal.
+std::vector<Probe> CentroidProbes(const Scene& scene, std::size_t count);
+
+/// The exact-penumbra scene's floor line (MakeShadowScene): 37 probes from
+/// x = -0.9 to 0.9 at y = 0.05, facing up, across both penumbrae.
+std::vector<Probe> PenumbraLineProbes();
 
 /// The inside of a sphere (an icosphere subdivided `levels` times, faces
 /// inward), uniform reflectance, emission `emission` on the cap z > 0.5 r only.

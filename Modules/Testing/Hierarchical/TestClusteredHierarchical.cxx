@@ -27,12 +27,7 @@ struct SphereRun
 SphereRun SolveSphere(int levels, double rho, HierarchicalClustering clustering, double scale = 1.0)
 {
   Scene sphere = MakeSphereInterior(1.0, levels, rho, RGB(1.0, 2.0, 3.0));
-  std::vector<Probe> probes;
-  const std::size_t step = std::max<std::size_t>(1, sphere.Triangles.size() / 500);
-  for (std::size_t t = 0; t < sphere.Triangles.size(); t += step)
-  {
-    probes.push_back({ sphere.Centroid(t), sphere.Normal(t) });
-  }
+  std::vector<Probe> probes = CentroidProbes(sphere, 500);
   AnalyticReference ref;
   std::string why;
   EXPECT_TRUE(ComputeAnalyticReference(sphere, probes, ref, why)) << why;
@@ -131,11 +126,7 @@ TEST(ClusteredHierarchical, DiscontinuityMeshingKeepsThePenumbra)
   // scene is black, so the dark clusters' pairs stay deferred and every
   // link from the emitter ends on polygons here.
   const Scene scene = MakeShadowScene(4, 1.0);
-  std::vector<Probe> probes;
-  for (int i = 0; i <= 36; ++i)
-  {
-    probes.push_back({ Vec3(-0.9 + 0.05 * i, 0.05, 0.0), Vec3(0, 0, 1) });
-  }
+  const std::vector<Probe> probes = PenumbraLineProbes();
   AnalyticReference ref;
   std::string why;
   ASSERT_TRUE(ComputeAnalyticReference(scene, probes, ref, why)) << why;

@@ -71,11 +71,7 @@ TEST(HierarchicalRadiosity, ShadowSceneRecordsBlockers)
   const Scene scene = MakeShadowScene(4, 1.0);
   // Black scene: one bounce, the floor's irradiance is the direct light with
   // its exact penumbra (the analytic reference), on a line under the blocker.
-  std::vector<Probe> probes;
-  for (int i = 0; i <= 36; ++i)
-  {
-    probes.push_back({ Vec3(-0.9 + 0.05 * i, 0.05, 0.0), Vec3(0, 0, 1) });
-  }
+  const std::vector<Probe> probes = PenumbraLineProbes();
   AnalyticReference ref;
   std::string why;
   ASSERT_TRUE(ComputeAnalyticReference(scene, probes, ref, why)) << why;
