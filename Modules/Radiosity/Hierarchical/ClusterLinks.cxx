@@ -39,11 +39,12 @@ constexpr double SmallOpening = 1.0;
 } // namespace
 
 ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceClusterHierarchy> hierarchy,
-  const Visibility& rays, double planeTolerance, const ElementMesh& mesh, Split split, double minEdge,
-  const std::vector<RGB>& radiosity)
+  const Visibility& rays, double diagonal, double planeTolerance, const ElementMesh& mesh, Split split,
+  double minEdge, const std::vector<RGB>& radiosity)
   : SourceScene(scene)
   , Clusters(std::move(hierarchy))
   , Rays(rays)
+  , Diagonal(diagonal)
   , PlaneTolerance(planeTolerance)
   , Mesh(mesh)
   , SplitElement(std::move(split))

@@ -87,10 +87,10 @@ public:
   /// `hierarchy` built on `scene`; `mesh` the polygon solver's quadtrees
   /// (root t is triangle t), split only through `split` and not below
   /// `minEdge` (longest edge), and `radiosity` its per-element radiosity;
-  /// `planeTolerance` in the scene's units.
+  /// `diagonal` (SceneAnalysis) and `planeTolerance` in the scene's units.
   ClusterLinks(const Scene& scene, std::shared_ptr<const FaceClusterHierarchy> hierarchy,
-    const Visibility& rays, double planeTolerance, const ElementMesh& mesh, Split split, double minEdge,
-    const std::vector<RGB>& radiosity);
+    const Visibility& rays, double diagonal, double planeTolerance, const ElementMesh& mesh, Split split,
+    double minEdge, const std::vector<RGB>& radiosity);
   ~ClusterLinks();
 
   const FaceClusterHierarchy& Hierarchy() const { return *this->Clusters; }
@@ -184,6 +184,7 @@ private:
   const Scene& SourceScene;
   std::shared_ptr<const FaceClusterHierarchy> Clusters;
   const Visibility& Rays;
+  double Diagonal;
   double PlaneTolerance;
   const ElementMesh& Mesh;
   Split SplitElement;

@@ -287,13 +287,6 @@ std::size_t ClusterLinks::Normalize(const std::vector<double>& polygonFactors, s
     // golden-angle turns), each longer than the scene, against every triangle.
     constexpr int Rays = 32;
     const Visibility all(scene, Visibility::AllTriangles(scene));
-    Vec3 lo(1e300), hi(-1e300);
-    for (const Vec3& p : scene.Points)
-    {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    const double diagonal = glm::length(hi - lo);
     this->Closed.assign(n, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& range) {
       Vec3 from[Rays], to[Rays];
@@ -311,7 +304,7 @@ std::size_t ClusterLinks::Normalize(const std::vector<double>& polygonFactors, s
           const double r = std::sqrt(u);
           const Vec3 d = r * std::cos(phi) * x + r * std::sin(phi) * y + std::sqrt(1.0 - u) * z;
           from[k] = c;
-          to[k] = c + 2.0 * diagonal * d;
+          to[k] = c + 2.0 * this->Diagonal * d;
         }
         all.TestSegments(from, to, Rays, open);
         this->Closed[t] = std::none_of(open, open + Rays, [](unsigned char v) { return v != 0; });

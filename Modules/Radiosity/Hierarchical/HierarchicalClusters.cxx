@@ -64,7 +64,8 @@ bool HierarchicalRadiosity::InitialClusterLinks(
     return false;
   }
   this->ClusterSolve = std::make_unique<ClusterLinks>(this->SourceScene, hierarchy, *this->Rays,
-    this->PlaneTolerance, *this->Elements, [this](std::uint32_t e) { return this->Children(e); }, this->MinEdge,
+    this->SceneInfo.Diagonal > 0 ? this->SceneInfo.Diagonal : 1.0, this->PlaneTolerance, *this->Elements,
+    [this](std::uint32_t e) { return this->Children(e); }, this->MinEdge,
     this->NodeRadiosity);
   ClusterLinks& clusters = *this->ClusterSolve;
   const double nodes = static_cast<double>(this->Elements->Elements().size()) * BytesPerNode();
@@ -133,7 +134,7 @@ void HierarchicalRadiosity::NormalizeClusters()
     }
     polygon[i] = f;
   });
-  this->ClusterRowsScaled = this->ClusterSolve->Normalize(polygon, this->ClusterScale);
+  this->ClusterSolve->Normalize(polygon, this->ClusterScale);
 }
 
 void HierarchicalRadiosity::GatherClusters()

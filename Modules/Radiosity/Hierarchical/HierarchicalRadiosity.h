@@ -231,7 +231,6 @@ private:
   std::vector<RGB> ClusterDown; ///< per input triangle: irradiance through the clusters' vector links
   std::vector<RGB> ElementDown; ///< per quadtree node: irradiance through its own scalar cluster links
   std::vector<double> ClusterScale; ///< per leaf: the cluster links' row-sum normalisation (ClusterLinks::Normalize)
-  std::size_t ClusterRowsScaled = 0; ///< triangles whose cluster links were normalised
   double Epsilon = 0.0;
   double MinEdge = 0.0;
   double PlaneTolerance = 0.0;
