@@ -84,6 +84,21 @@ const char* vtkRadiosityFilter::GetBasisName(int basis)
   return basis >= ConstantBasis && basis <= CubicBasis ? radiosity::BasisName(BasisKinds[basis]) : "unknown";
 }
 
+const char* vtkRadiosityFilter::GetClusteringName(int clustering)
+{
+  switch (clustering)
+  {
+    case ClusteringOff:
+      return "off";
+    case ClusteringOn:
+      return "on";
+    case ClusteringAuto:
+      return "auto";
+    default:
+      return "unknown";
+  }
+}
+
 int vtkRadiosityFilter::FillInputPortInformation(int, vtkInformation* info)
 {
   // What vtkRadiositySceneConverter::ToScene accepts: any dataset (polydata,
@@ -144,6 +159,9 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.RelativeLinkTolerance = this->LinkTolerance;
       options.MinElementSize = this->MinElementSize;
       options.MaxRefinementRounds = this->MaxRefinementRounds;
+      options.Clustering = this->Clustering == ClusteringOn ? radiosity::HierarchicalClustering::On
+        : this->Clustering == ClusteringOff                 ? radiosity::HierarchicalClustering::Off
+                                                            : radiosity::HierarchicalClustering::Auto;
       radiosity::DiscontinuityMeshOptions meshing;
       meshing.Discontinuities = this->DiscontinuityMeshing;
       meshing.MaxPerLeaf = this->MaxDiscontinuitiesPerLeaf;
@@ -578,6 +596,7 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LinkTolerance: " << this->LinkTolerance << "\n";
   os << indent << "MinElementSize: " << this->MinElementSize << "\n";
   os << indent << "MaxRefinementRounds: " << this->MaxRefinementRounds << "\n";
+  os << indent << "Clustering: " << GetClusteringName(this->Clustering) << "\n";
   os << indent << "PointRadius: " << this->PointRadius << "\n";
   os << indent << "PointLevels: " << this->PointLevels << "\n";
   os << indent << "GatherRays: " << this->GatherRays << "\n";

@@ -370,6 +370,29 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Hierarchical: whether the links start from the face cluster hierarchy
+   * (Smits-Arvo-Greenberg clustering: memory and time grow with the solution,
+   * not with the square of the input) instead of every facing pair of input
+   * triangles. ClusteringAuto (the default) clusters above 2048 triangles,
+   * where the pairs would outgrow memory; ClusteringOn and ClusteringOff
+   * force it.
+   */
+  enum ClusteringModes
+  {
+    ClusteringOff = 0,
+    ClusteringOn = 1,
+    ClusteringAuto = 2
+  };
+  vtkSetClampMacro(Clustering, int, ClusteringOff, ClusteringAuto);
+  vtkGetMacro(Clustering, int);
+  void SetClusteringToOff() { this->SetClustering(ClusteringOff); }
+  void SetClusteringToOn() { this->SetClustering(ClusteringOn); }
+  void SetClusteringToAuto() { this->SetClustering(ClusteringAuto); }
+  static const char* GetClusteringName(int clustering);
+  ///@}
+
+  ///@{
   /// Meshless: the coarsest Poisson-disk radius, a fraction of the scene
   /// diagonal (halved per level). Default 0.1.
   vtkSetClampMacro(PointRadius, double, 1e-6, 1.0);
@@ -573,6 +596,7 @@ protected:
   double LinkTolerance = 0.05;
   double MinElementSize = 1.0 / 64.0;
   int MaxRefinementRounds = 4;
+  int Clustering = ClusteringAuto;
   double PointRadius = 0.1;
   int PointLevels = 5;
   int GatherRays = 256;

@@ -33,6 +33,7 @@ set(HL_RMS 0.109)                # --no-discontinuity-meshing
 set(HL_RMS_BOUND 0.2)
 set(HROOM_RMS 0.0051)            # hierarchical room against the path tracer
 set(HROOM_RMS_BOUND 0.012)
+set(HCROOM_RMS 0.0061)           # the same, --clustering on
 set(ML_RMS 0.00176)              # meshless contact scene
 set(ML_RMS_BOUND 0.004)
 set(FC_RMS 9.5e-7)               # face cluster closed room of reflectance 0.99
@@ -291,6 +292,27 @@ string(JSON rms GET "${hroom}" error probe_output_rms_relative_error)
 expect_within("hierarchical room: RMS error against the path tracer (measured ${HROOM_RMS})" "${rms}"
   0 ${HROOM_RMS_BOUND})
 expect_exit(2 "${PROGRAM}" solve shadow --method hierarchical --link-tolerance 0
+  --output "${WORK}/bad.vtp")
+# The same room with clustering forced on (links from the face cluster
+# roots; Auto would leave 14 triangles unclustered): the report says so, the
+# answer stays within the plain solve's bound.
+expect_exit(0 "${PROGRAM}" solve "${DATA}/room.obj" --method hierarchical --max-time 20
+  --clustering on --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/hcroom_values.csv"
+  --reference pathtraced --reference-samples 16384 --report "${WORK}/hcroom.json")
+file(READ "${WORK}/hcroom.json" hcroom)
+string(JSON clustering GET "${hcroom}" parameters clustering)
+string(JSON clustered GET "${hcroom}" parameters clustered)
+string(JSON rms GET "${hcroom}" error probe_output_rms_relative_error)
+if (NOT clustering STREQUAL "on" OR NOT clustered)
+  message(FATAL_ERROR "--clustering on: the report says clustering ${clustering}, clustered ${clustered}")
+endif ()
+expect_within("clustered hierarchical room: RMS error against the path tracer (measured ${HCROOM_RMS})"
+  "${rms}" 0 ${HROOM_RMS_BOUND})
+string(JSON clustered GET "${hroom}" parameters clustered)
+if (clustered)
+  message(FATAL_ERROR "--clustering auto clustered a room of 14 triangles")
+endif ()
+expect_exit(2 "${PROGRAM}" solve shadow --method hierarchical --clustering sideways
   --output "${WORK}/bad.vtp")
 
 # Meshless: the contact scene against its closed form, probes from the Shepard

@@ -59,12 +59,26 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   {
     throw BadInput("--link-tolerance must be positive");
   }
+  int clustering = vtkRadiosityFilter::ClusteringAuto;
+  if (args.Clustering == "on")
+  {
+    clustering = vtkRadiosityFilter::ClusteringOn;
+  }
+  else if (args.Clustering == "off")
+  {
+    clustering = vtkRadiosityFilter::ClusteringOff;
+  }
+  else if (args.Clustering != "auto")
+  {
+    throw BadInput("--clustering " + args.Clustering + ": expected auto, on or off");
+  }
   // The VTK pipeline: the radiosity filter (hierarchical) solves and meshes.
   vtkRadiosityFilter* filter = target.Filter();
   target.SetMethod(vtkRadiosityFilter::Hierarchical);
   filter->SetLinkTolerance(args.LinkTolerance);
   filter->SetMinElementSize(args.MinElementSize);
   filter->SetMaxRefinementRounds(args.MaxRefinementRounds);
+  filter->SetClustering(clustering);
   filter->SetDiscontinuityMeshing(!args.NoDiscontinuityMeshing);
   filter->SetMaxDiscontinuitiesPerLeaf(args.DiscontinuitiesPerLeaf);
   filter->SetMinDiscontinuityWeight(args.MinDiscontinuityWeight);
@@ -142,6 +156,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       { "link_tolerance_W_m2", solver.GetLinkTolerance() },
       { "min_element_size", options.MinElementSize },
       { "max_refinement_rounds", options.MaxRefinementRounds },
+      { "clustering", args.Clustering }, { "clustered", solver.Clustered() },
       { "max_blockers_per_link", options.MaxBlockersPerLink },
       { "discontinuity_meshing", meshing },
       { "discontinuities", filter->GetDiscontinuityMeshing() },
@@ -158,7 +173,8 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
           { "solve_skipped_no_emitters", stats.Stop == StopReason::NoEmitters } } } };
     report["solution"] = { { "stop", ToString(stats.Stop) }, { "iterations", stats.Iterations },
       { "leaves", stats.Elements }, { "nodes", solver.Mesh().Elements().size() },
-      { "links", stats.Links }, { "partial_links", stats.PartialLinks },
+      { "links", stats.Links }, { "cluster_links", stats.ClusterLinks },
+      { "partial_links", stats.PartialLinks },
       { "hidden_links", stats.HiddenLinks }, { "links_with_blockers_cut", stats.LinksWithBlockersCut },
       { "rays", stats.RaysCast },
       { "relative_unshot_power",

@@ -72,6 +72,7 @@ struct SolveArguments
   double LinkTolerance = 0.05;   ///< relative to the scene's mean irradiance
   double MinElementSize = 1.0 / 64.0;
   int MaxRefinementRounds = 4;
+  std::string Clustering = "auto"; ///< hierarchical: auto|on|off
   bool NoDiscontinuityMeshing = false;
   int DiscontinuitiesPerLeaf = 10;
   double MinDiscontinuityWeight = 0.05; ///< relative to the brightest emitter

@@ -421,6 +421,9 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--max-refinement-rounds", solve.MaxRefinementRounds,
     "hierarchical: BF refinement passes after the first solve (default 4)")
     ->check(CLI::Range(0, 100));
+  solveCommand->add_option("--clustering", solve.Clustering,
+    "hierarchical: links from the face cluster hierarchy, auto|on|off (default auto: above 2048 "
+    "triangles)");
   solveCommand->add_flag("--no-discontinuity-meshing", solve.NoDiscontinuityMeshing,
     "hierarchical: output and probes from the constant quadtree leaves");
   solveCommand->add_option("--discontinuities-per-leaf", solve.DiscontinuitiesPerLeaf,

@@ -157,6 +157,17 @@ int TestRadiosityFilterConventions(int, char*[])
   radiosity->ConformingBoundariesOn();
   ok &= Check(radiosity->GetDiscontinuityMeshing() && radiosity->GetConformingBoundaries(),
     "DiscontinuityMeshingOn, ConformingBoundariesOn");
+  // The clustering mode: clamped to its three values, named in PrintSelf.
+  ok &= Check(radiosity->GetClustering() == vtkRadiosityFilter::ClusteringAuto, "Clustering: auto by default");
+  radiosity->SetClustering(7);
+  ok &= Check(radiosity->GetClustering() == vtkRadiosityFilter::ClusteringAuto, "SetClustering(7) clamps to auto");
+  radiosity->SetClusteringToOff();
+  ok &= Check(radiosity->GetClustering() == vtkRadiosityFilter::ClusteringOff &&
+      std::string(vtkRadiosityFilter::GetClusteringName(radiosity->GetClustering())) == "off",
+    "SetClusteringToOff");
+  radiosity->SetClusteringToOn();
+  ok &= Check(radiosity->GetClustering() == vtkRadiosityFilter::ClusteringOn, "SetClusteringToOn");
+  radiosity->SetClusteringToAuto();
   vtkNew<vtkRadiosityView> view;
   view->InterpolantRenderingOff();
   view->OffScreenOff();
@@ -178,7 +189,7 @@ int TestRadiosityFilterConventions(int, char*[])
                                "InitialElementSize", "MaxSubdivisionLevels",
                                "SubdivisionThreshold", "FormFactorTolerance", "VisibilitySamples",
                                "IndirectVisibilitySamples", "LinkTolerance", "MinElementSize",
-                               "MaxRefinementRounds", "PointRadius", "PointLevels", "GatherRays",
+                               "MaxRefinementRounds", "Clustering", "PointRadius", "PointLevels", "GatherRays",
                                "VariationThreshold", "SolidAngleThreshold", "IrradianceBasis",
                                "RadiosityBasis", "TransferTolerance", "MaxBisections",
                                "MaxMemory", "DiscontinuityMeshing", "MaxDiscontinuitiesPerLeaf", "Controller",
