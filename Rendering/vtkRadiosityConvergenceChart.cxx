@@ -12,6 +12,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPen.h"
 #include "vtkPlot.h"
+#include "vtkPlotPoints.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -50,6 +51,9 @@ const int PaletteSize = static_cast<int>(sizeof(Palette) / sizeof(Palette[0]));
 const int PenStyles[] = { vtkPen::SOLID_LINE, vtkPen::DASH_LINE, vtkPen::DOT_LINE,
   vtkPen::DASH_DOT_LINE, vtkPen::DASH_DOT_DOT_LINE };
 const int PenStylesSize = static_cast<int>(sizeof(PenStyles) / sizeof(PenStyles[0]));
+const int Markers[] = { vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
+  vtkPlotPoints::CROSS };
+const int MarkersSize = static_cast<int>(sizeof(Markers) / sizeof(Markers[0]));
 }
 
 //------------------------------------------------------------------------------
@@ -225,6 +229,15 @@ int vtkRadiosityConvergenceChart::BuildPlots()
       plot->SetColor(rgb[0], rgb[1], rgb[2], 255);
       plot->SetWidth(2.0f);
       plot->GetPen()->SetLineType(PenStyles[s % PenStylesSize]);
+      // Past the five line styles the series repeat one: markers tell them apart.
+      if (s >= static_cast<size_t>(PenStylesSize))
+      {
+        if (auto* points = vtkPlotPoints::SafeDownCast(plot))
+        {
+          points->SetMarkerStyle(Markers[(s / PenStylesSize - 1) % MarkersSize]);
+          points->SetMarkerSize(6.0f);
+        }
+      }
       ++lines;
     }
   }

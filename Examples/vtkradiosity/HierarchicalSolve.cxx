@@ -189,7 +189,8 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
         { "leaves_triangulation_failed", mesh.LeavesTriangulationFailed },
         { "point_samples", mesh.PointSamples }, { "points", mesh.Points.size() },
         { "triangles", mesh.Triangles.size() }, { "interpolants", mesh.Interpolants.size() },
-        { "seconds", mesh.Seconds } };
+        { "seconds", mesh.Seconds }, { "discontinuities_s", mesh.DiscontinuitySeconds },
+        { "point_samples_s", mesh.SampleSeconds } };
     }
     else
     {

@@ -503,6 +503,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     {
       out.LeavesConformed = ConformBoundaries(s, leaves, work);
     }
+    out.DiscontinuitySeconds = clock.Seconds();
     if (!report("meshing", 0.3))
     {
       return out;
@@ -611,6 +612,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     }
 
     // Phase 3: accurate point irradiance, shared samples grouped by owner leaf.
+    const double samplesStart = clock.Seconds();
     std::vector<std::vector<std::uint32_t>> owned(leaves.size());
     for (std::uint32_t k = 0; k < sharedOwner.size(); ++k)
     {
@@ -673,6 +675,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       }
     });
     out.PointSamples = sharedPoints.size();
+    out.SampleSeconds = clock.Seconds() - samplesStart;
     if (!report("interpolants", 0.9))
     {
       return out;

@@ -66,6 +66,9 @@ struct DiscontinuityMesh
   std::size_t LeavesTriangulationFailed = 0;
   std::size_t PointSamples = 0;      ///< accurate point irradiance evaluations
   double Seconds = 0.0;
+  /// Of Seconds: finding the discontinuities and triangulating the leaves
+  /// (with the conforming step), and the accurate point irradiance.
+  double DiscontinuitySeconds = 0.0, SampleSeconds = 0.0;
 };
 
 /// Builds the hybrid quadtree-mesh with its interpolants.
