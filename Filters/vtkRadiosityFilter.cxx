@@ -478,7 +478,7 @@ int vtkRadiosityFilter::ExecuteRequest(
   {
     this->Warn(std::to_string(this->Statistics.LinksWithBlockersCut) +
       " links had more candidate blockers than the 64 kept per link: their visibility comes from "
-      "the blockers the rays between the nodes meet (approximate there)");
+      "the fraction of 48 rays between the nodes that pass (sampled there, not exact)");
   }
   const bool aborted = this->Statistics.Stop == radiosity::StopReason::Aborted;
   if (aborted)

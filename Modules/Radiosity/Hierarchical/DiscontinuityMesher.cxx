@@ -33,6 +33,9 @@ struct ChainSource
   RGB Radiosity;
   std::vector<TriangleCorners> Blockers; ///< empty for unoccluded links
   const HierarchicalLink* Link;
+  /// A link whose blockers were cut: its sampled visible fraction scales the
+  /// unoccluded form factor (HierarchicalLink::BlockersCut).
+  double Visible = 1.0;
 };
 
 std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf)
@@ -51,8 +54,8 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
       {
         continue;
       }
-      ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), {}, &l };
-      if (l.Kind == HierarchicalLink::Partial)
+      ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), {}, &l, l.VisibleFraction };
+      if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut)
       {
         const Shaft shaft(receiver, c.Polygon);
         for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
@@ -88,7 +91,7 @@ RGB ChainIrradiance(const std::vector<ChainSource>& chain, const Vec3& x, const 
     const double f = c.Blockers.empty()
       ? PointToPolygonFormFactor(x, n, c.Polygon.data(), 3)
       : VisibleFormFactor(x, n, c.Polygon, c.Blockers.data(), c.Blockers.size());
-    e += f * c.Radiosity;
+    e += (c.Visible * f) * c.Radiosity;
   }
   return e;
 }

@@ -124,6 +124,10 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
               }
               this->Rays->CollectOccluders(from, to, 16, hit);
               this->Rays->CollectOccluders(f, t, 32, hit);
+              unsigned char passes[48];
+              this->Rays->TestSegments(from, to, 16, passes);
+              this->Rays->TestSegments(f, t, 32, passes + 16);
+              link.VisibleFraction = static_cast<float>(std::count(passes, passes + 48, 1)) / 48.0f;
               std::sort(hit.begin(), hit.end());
               hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
               hit.erase(std::remove_if(hit.begin(), hit.end(),
@@ -156,7 +160,7 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
           auto accumulate = [&](double s, double t) {
             const double w[3] = { 1.0 - s - t, s, t };
             const Vec3 x = At(p, w);
-            f += link.Kind == HierarchicalLink::Partial
+            f += link.Kind == HierarchicalLink::Partial && !link.BlockersCut
               ? VisibleFormFactor(x, n, q, blockerCorners.data(), blockerCorners.size())
               : PointToPolygonFormFactor(x, n, q.data(), 3);
             ++count;
@@ -173,7 +177,7 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
             }
           }
           f /= count;
-          link.Factor = f;
+          link.Factor = link.BlockersCut ? link.VisibleFraction * f : f;
         }
       });
     share.CombineItems(
