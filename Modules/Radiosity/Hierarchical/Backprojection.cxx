@@ -142,10 +142,11 @@ bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::
   }
   return true;
 }
-} // namespace
-
-double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
-  const TriangleCorners* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
+// The backprojection for blockers of up to four corners; corners(b, out)
+// writes blocker b's corners to out and returns how many.
+template <typename Corners>
+double VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+  std::size_t blockerCount, const Corners& corners, bool* exact, std::size_t fragmentsLimit)
 {
   if (exact)
   {
@@ -198,16 +199,22 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
 
   for (std::size_t b = 0; b < blockerCount && !visible.empty(); ++b)
   {
-    const TriangleCorners& tri = blockers[b];
-    Vec3 poly[5], clipped[5];
-    int n = 3;
-    const double l0 = glm::dot(tri[0], m), l1 = glm::dot(tri[1], m), l2 = glm::dot(tri[2], m);
+    // Up to four corners, two more after each of the two clips.
+    Vec3 corner[4], poly[8], clipped[8];
+    const int size = corners(b, corner);
+    double lowest = 1e300, highest = -1e300;
+    for (int i = 0; i < size; ++i)
+    {
+      const double l = glm::dot(corner[i], m);
+      lowest = std::min(lowest, l);
+      highest = std::max(highest, l);
+    }
     const double lo = planeOffset + slack, hi = xLevel - slack;
-    if (std::max({ l0, l1, l2 }) <= lo || std::min({ l0, l1, l2 }) >= hi)
+    if (highest <= lo || lowest >= hi)
     {
       continue; // wholly behind the source or behind the point
     }
-    n = ClipPlane(tri.data(), 3, m, lo, clipped);
+    int n = ClipPlane(corner, size, m, lo, clipped);
     n = ClipPlane(clipped, n, -m, -hi, poly);
     if (n < 3)
     {
@@ -275,5 +282,109 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
     }
   }
   return std::max(0.0, factor);
+}
+} // namespace
+
+double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+  const TriangleCorners* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
+{
+  return VisibleFormFactorOf(x, n, source, blockerCount,
+    [blockers](std::size_t b, Vec3* out) {
+      std::copy(blockers[b].begin(), blockers[b].end(), out);
+      return 3;
+    },
+    exact, fragmentsLimit);
+}
+
+double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+  const BlockerPolygon* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
+{
+  return VisibleFormFactorOf(x, n, source, blockerCount,
+    [blockers](std::size_t b, Vec3* out) {
+      std::copy(blockers[b].Corners.begin(), blockers[b].Corners.begin() + blockers[b].Size, out);
+      return blockers[b].Size;
+    },
+    exact, fragmentsLimit);
+}
+
+std::vector<BlockerPolygon> MergeCoplanarPairs(
+  const std::vector<TriangleCorners>& corners, const std::vector<std::array<std::uint32_t, 3>>& vertexIds)
+{
+  const std::size_t count = corners.size();
+  std::vector<Vec3> normal(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Vec3 c = glm::cross(corners[i][1] - corners[i][0], corners[i][2] - corners[i][0]);
+    const double length = glm::length(c);
+    normal[i] = length > 0 ? c / length : Vec3(0.0);
+  }
+  // Edges by their two point indices: blocker lists are short (at most
+  // MaxBlockersPerLink), so a sorted list does.
+  struct Edge
+  {
+    std::uint64_t Key;
+    std::uint32_t Triangle;
+    int Side; ///< the edge from corner Side to corner Side + 1
+  };
+  std::vector<Edge> edges;
+  edges.reserve(3 * count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = vertexIds[i][k], b = vertexIds[i][(k + 1) % 3];
+      edges.push_back({ (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b),
+        static_cast<std::uint32_t>(i), k });
+    }
+  }
+  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.Key < b.Key; });
+  std::vector<char> used(count, 0);
+  std::vector<BlockerPolygon> out;
+  out.reserve(count);
+  for (std::size_t e = 0; e + 1 < edges.size(); ++e)
+  {
+    const Edge& p = edges[e];
+    const Edge& q = edges[e + 1];
+    if (p.Key != q.Key || p.Triangle == q.Triangle || used[p.Triangle] || used[q.Triangle] ||
+      !(glm::dot(normal[p.Triangle], normal[q.Triangle]) > 1.0 - 1e-9))
+    {
+      continue;
+    }
+    // Around the quad: p's corners a -> b -> c in p's winding, with q's
+    // third corner d spliced in between a and b (across the shared edge):
+    // a -> d -> b -> c keeps p's winding, so every turn of a convex quad is
+    // along p's normal.
+    const TriangleCorners& tp = corners[p.Triangle];
+    const Vec3& a = tp[p.Side];
+    const Vec3& b = tp[(p.Side + 1) % 3];
+    const Vec3& c = tp[(p.Side + 2) % 3];
+    const Vec3& d = corners[q.Triangle][(q.Side + 2) % 3];
+    const Vec3 quad[4] = { a, d, b, c };
+    bool convex = true;
+    for (int k = 0; k < 4 && convex; ++k)
+    {
+      const Vec3 turn = glm::cross(quad[(k + 1) % 4] - quad[k], quad[(k + 2) % 4] - quad[(k + 1) % 4]);
+      convex = glm::dot(turn, normal[p.Triangle]) > 0.0;
+    }
+    if (!convex)
+    {
+      continue;
+    }
+    used[p.Triangle] = used[q.Triangle] = 1;
+    BlockerPolygon merged;
+    std::copy(quad, quad + 4, merged.Corners.begin());
+    merged.Size = 4;
+    out.push_back(merged);
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (!used[i])
+    {
+      BlockerPolygon single;
+      std::copy(corners[i].begin(), corners[i].end(), single.Corners.begin());
+      out.push_back(single);
+    }
+  }
+  return out;
 }
 } // namespace radiosity

@@ -17,6 +17,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace radiosity
 {
@@ -33,6 +35,29 @@ using TriangleCorners = std::array<Vec3, 3>;
 double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
   const TriangleCorners* blockers, std::size_t blockerCount, bool* exact = nullptr,
   std::size_t fragmentsLimit = 4096);
+
+/// A planar convex blocker of three or four corners (in order around it).
+struct BlockerPolygon
+{
+  std::array<Vec3, 4> Corners;
+  int Size = 3;
+};
+
+/// The same through convex polygons: two coplanar triangles of a quad cast
+/// one shadow, so the visible part is clipped once, not twice along their
+/// shared diagonal (MergeCoplanarPairs).
+double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+  const BlockerPolygon* blockers, std::size_t blockerCount, bool* exact = nullptr,
+  std::size_t fragmentsLimit = 4096);
+
+/**
+ * Blocker triangles (`corners`, with `vertexIds` their shared point indices)
+ * as convex polygons: each pair that shares an edge, lies in one plane
+ * (normals within 1e-9) and forms a convex quad becomes one quad; the rest
+ * stay triangles. The union, and so the shadow, is the same.
+ */
+std::vector<BlockerPolygon> MergeCoplanarPairs(
+  const std::vector<TriangleCorners>& corners, const std::vector<std::array<std::uint32_t, 3>>& vertexIds);
 } // namespace radiosity
 
 #endif

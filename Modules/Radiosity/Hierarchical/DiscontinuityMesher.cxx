@@ -31,7 +31,7 @@ struct ChainSource
 {
   TriangleCorners Polygon;
   RGB Radiosity;
-  std::vector<TriangleCorners> Blockers; ///< empty for unoccluded links
+  std::vector<BlockerPolygon> Blockers; ///< empty for unoccluded links; coplanar pairs merged
   const HierarchicalLink* Link;
   /// A link whose blockers were cut: its sampled visible fraction scales the
   /// unoccluded form factor (HierarchicalLink::BlockersCut).
@@ -58,15 +58,19 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
       if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut)
       {
         const Shaft shaft(receiver, c.Polygon);
+        std::vector<TriangleCorners> corners;
+        std::vector<std::array<std::uint32_t, 3>> ids;
         for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
         {
           const std::uint32_t b = s.Blockers(l)[k];
-          const TriangleCorners corners = { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) };
-          if (!shaft.Excludes(corners))
+          const TriangleCorners triangle = { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) };
+          if (!shaft.Excludes(triangle))
           {
-            c.Blockers.push_back(corners);
+            corners.push_back(triangle);
+            ids.push_back(scene.Triangles[b].V);
           }
         }
+        c.Blockers = MergeCoplanarPairs(corners, ids);
       }
       chain.push_back(std::move(c));
     }

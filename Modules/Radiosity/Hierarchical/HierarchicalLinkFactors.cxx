@@ -48,6 +48,7 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
     tbb::parallel_for(tbb::blocked_range<std::size_t>(begin + mine.first, begin + mine.second, 16),
       [&](const tbb::blocked_range<std::size_t>& range) {
         std::vector<TriangleCorners> blockerCorners;
+        std::vector<std::array<std::uint32_t, 3>> blockerIds;
         for (std::size_t i = range.begin(); i != range.end(); ++i)
         {
           Result& res = results[i];
@@ -143,10 +144,16 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
           }
           link.Kind = res.Blockers.empty() ? HierarchicalLink::Visible : HierarchicalLink::Partial;
           blockerCorners.clear();
+          blockerIds.clear();
           for (std::uint32_t b : res.Blockers)
           {
             blockerCorners.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
+            blockerIds.push_back(scene.Triangles[b].V);
           }
+          // Coplanar pairs (the two triangles of a quad) as one blocker.
+          const std::vector<BlockerPolygon> blockers = link.BlockersCut
+            ? std::vector<BlockerPolygon>()
+            : MergeCoplanarPairs(blockerCorners, blockerIds);
           // Receiver-area mean of the point form factor: the centroids of the
           // uniform midpoint subdivision, finer where the source is close (the
           // kernel varies fastest there, and the sums over a closed room must
@@ -161,7 +168,7 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
             const double w[3] = { 1.0 - s - t, s, t };
             const Vec3 x = At(p, w);
             f += link.Kind == HierarchicalLink::Partial && !link.BlockersCut
-              ? VisibleFormFactor(x, n, q, blockerCorners.data(), blockerCorners.size())
+              ? VisibleFormFactor(x, n, q, blockers.data(), blockers.size())
               : PointToPolygonFormFactor(x, n, q.data(), 3);
             ++count;
           };
