@@ -5,6 +5,7 @@
 
 #include "Radiosity/Common/SystemInfo.h"
 
+#include <filesystem>
 #include <iostream>
 #include <ostream>
 #include <string>
@@ -16,7 +17,9 @@ struct BenchArguments
   bool Quick = false;
   std::string BunnyJs;
 
-  /// False (after printing the usage) when the output directory is missing.
+  /// False (after printing why) when the output directory is not given or
+  /// cannot be made: a bench that runs for minutes must not find out at the
+  /// end that its table has nowhere to go.
   bool Parse(int argc, char* argv[])
   {
     if (argc < 2)
@@ -25,6 +28,14 @@ struct BenchArguments
       return false;
     }
     this->Directory = argv[1];
+    std::error_code error;
+    std::filesystem::create_directories(this->Directory, error);
+    if (error || !std::filesystem::is_directory(this->Directory))
+    {
+      std::cerr << argv[0] << ": cannot make the output directory " << this->Directory << ": "
+                << error.message() << "\n";
+      return false;
+    }
     for (int i = 2; i < argc; ++i)
     {
       const std::string a = argv[i];
