@@ -405,6 +405,27 @@ std::size_t ClusterLinks::RefineAgain(double epsilon, std::vector<Pair>& out, co
   return changed;
 }
 
+std::size_t ClusterLinks::LinkDeferred(double epsilon, std::vector<Pair>& out, const ElementPair& elements)
+{
+  std::vector<Pair> deferred;
+  deferred.swap(this->Deferred);
+  std::size_t linked = 0;
+  for (const Pair& p : deferred)
+  {
+    if (MaxComponent(this->RadiosityOf(p.Source)) > 0)
+    {
+      this->Refine(p.Receiver, p.Source, epsilon, out, elements);
+      ++linked;
+    }
+    else
+    {
+      this->Deferred.push_back(p);
+    }
+  }
+  this->Index();
+  return linked;
+}
+
 void ClusterLinks::Index()
 {
   std::stable_sort(this->ToElements.begin(), this->ToElements.end(),

@@ -110,6 +110,11 @@ public:
   /// source had no radiosity; returns how many changed (a pair still dark
   /// stays deferred and does not count).
   std::size_t RefineAgain(double epsilon, std::vector<Pair>& out, const ElementPair& elements);
+  /// Only the deferred pairs whose source has radiosity now, refined and
+  /// linked (the others stay deferred); returns how many. Light that reaches
+  /// a surface only through such a pair is lost without it, whatever the
+  /// number of refinement rounds.
+  std::size_t LinkDeferred(double epsilon, std::vector<Pair>& out, const ElementPair& elements);
   /// Computes the pending links' transfers and adds those that carry any;
   /// false when `keepGoing` (asked between blocks) said stop.
   bool Compute(const std::vector<Pair>& pending, const std::function<bool()>& keepGoing);

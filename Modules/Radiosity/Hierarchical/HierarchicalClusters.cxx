@@ -105,6 +105,21 @@ std::size_t HierarchicalRadiosity::RefineClusterLinks(std::vector<PendingLink>& 
   return changed;
 }
 
+std::size_t HierarchicalRadiosity::LinkDeferredClusters(std::vector<PendingLink>& out)
+{
+  if (!this->ClusterSolve)
+  {
+    return 0;
+  }
+  ClusterLinks& clusters = *this->ClusterSolve;
+  clusters.PullRadiosity();
+  std::vector<ClusterLinks::Pair> pending;
+  const std::size_t linked = clusters.LinkDeferred(
+    this->Epsilon, pending, [&](std::uint32_t p, std::uint32_t q) { this->Refine(p, q, out); });
+  clusters.Compute(pending, []() { return true; });
+  return linked;
+}
+
 void HierarchicalRadiosity::NormalizeClusters()
 {
   if (!this->ClusterSolve)

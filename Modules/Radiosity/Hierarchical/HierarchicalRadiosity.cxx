@@ -505,7 +505,10 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
       if (relative <= this->Settings.Tolerance && !extrapolated)
       {
         pending.clear();
-        if (round < this->Settings.MaxRefinementRounds && this->RefineLinks(pending) > 0)
+        // Past the refinement rounds, the cluster pairs still deferred for a
+        // dark source are linked once their source has light.
+        if (round < this->Settings.MaxRefinementRounds ? this->RefineLinks(pending) > 0
+                                                       : this->LinkDeferredClusters(pending) > 0)
         {
           ++round;
           if (!report("linking", iteration, relative))

@@ -18,13 +18,19 @@ using namespace radiosity;
 
 namespace
 {
+// The 1,280-triangle sphere (rho 0.8) without refinement rounds, max error of
+// the peak: measured 3.6e-3 (as with the default four rounds); 0.75 while the
+// deferred pairs were never linked.
+constexpr double DarkPairsBound = 1e-2;
+
 struct SphereRun
 {
   SolverStatistics Stats;
   double Max = 0.0, Rms = 0.0;
 };
 
-SphereRun SolveSphere(int levels, double rho, HierarchicalClustering clustering, double scale = 1.0)
+SphereRun SolveSphere(int levels, double rho, HierarchicalClustering clustering, double scale = 1.0,
+  int refinementRounds = 4)
 {
   Scene sphere = MakeSphereInterior(1.0, levels, rho, RGB(1.0, 2.0, 3.0));
   std::vector<Probe> probes = CentroidProbes(sphere, 500);
@@ -42,6 +48,7 @@ SphereRun SolveSphere(int levels, double rho, HierarchicalClustering clustering,
   HierarchicalOptions options;
   options.Tolerance = 1e-4;
   options.Clustering = clustering;
+  options.MaxRefinementRounds = refinementRounds;
   options.ErrorProbes = probes;
   options.ErrorReference = ref.Irradiance; // irradiance does not depend on the scale
   HierarchicalRadiosity solver(sphere, options);
@@ -69,6 +76,16 @@ TEST(ClusteredHierarchical, SphereOf20kTriangles)
   EXPECT_GT(a.Stats.ClusterLinks, a.Stats.Links / 2);
   const SphereRun b = SolveSphere(5, 0.99, HierarchicalClustering::Auto);
   EXPECT_LT(b.Max, 0.01);
+}
+
+TEST(ClusteredHierarchical, DarkPairsAreLinkedWithoutRefinementRounds)
+{
+  // A cluster pair whose source has no radiosity yet is deferred (linking
+  // it would split the receiver for nothing). Without refinement rounds
+  // those pairs were never linked, and the light of every surface that was
+  // dark at the first solve stayed where it was.
+  const SphereRun none = SolveSphere(3, 0.8, HierarchicalClustering::On, 1.0, 0);
+  EXPECT_LT(none.Max, DarkPairsBound);
 }
 
 TEST(ClusteredHierarchical, LinksGrowWithTheSolutionNotTheInputSquared)
