@@ -90,7 +90,7 @@ bool HierarchicalRadiosity::InitialClusterLinks(
   return clusters.LinkRoots(this->Epsilon, pending, elements, keepGoing) && clusters.Compute(pending, keepGoing);
 }
 
-std::size_t HierarchicalRadiosity::RefineClusterLinks(std::vector<PendingLink>& out)
+std::size_t HierarchicalRadiosity::RefineClusterLinks(std::vector<PendingLink>& out, bool deferredOnly)
 {
   if (!this->ClusterSolve)
   {
@@ -99,25 +99,11 @@ std::size_t HierarchicalRadiosity::RefineClusterLinks(std::vector<PendingLink>& 
   ClusterLinks& clusters = *this->ClusterSolve;
   clusters.PullRadiosity();
   std::vector<ClusterLinks::Pair> pending;
-  const std::size_t changed = clusters.RefineAgain(
-    this->Epsilon, pending, [&](std::uint32_t p, std::uint32_t q) { this->Refine(p, q, out); });
+  const auto elements = [&](std::uint32_t p, std::uint32_t q) { this->Refine(p, q, out); };
+  const std::size_t changed = deferredOnly ? clusters.LinkDeferred(this->Epsilon, pending, elements)
+                                           : clusters.RefineAgain(this->Epsilon, pending, elements);
   clusters.Compute(pending, []() { return true; });
   return changed;
-}
-
-std::size_t HierarchicalRadiosity::LinkDeferredClusters(std::vector<PendingLink>& out)
-{
-  if (!this->ClusterSolve)
-  {
-    return 0;
-  }
-  ClusterLinks& clusters = *this->ClusterSolve;
-  clusters.PullRadiosity();
-  std::vector<ClusterLinks::Pair> pending;
-  const std::size_t linked = clusters.LinkDeferred(
-    this->Epsilon, pending, [&](std::uint32_t p, std::uint32_t q) { this->Refine(p, q, out); });
-  clusters.Compute(pending, []() { return true; });
-  return linked;
 }
 
 void HierarchicalRadiosity::NormalizeClusters()

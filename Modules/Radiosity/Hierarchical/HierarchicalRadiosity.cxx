@@ -508,7 +508,7 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
         // Past the refinement rounds, the cluster pairs still deferred for a
         // dark source are linked once their source has light.
         if (round < this->Settings.MaxRefinementRounds ? this->RefineLinks(pending) > 0
-                                                       : this->LinkDeferredClusters(pending) > 0)
+                                                       : this->RefineClusterLinks(pending, true) > 0)
         {
           ++round;
           if (!report("linking", iteration, relative))

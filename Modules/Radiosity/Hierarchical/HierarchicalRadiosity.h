@@ -195,10 +195,10 @@ private:
   /// ClusterLinks::Normalize with each triangle's polygon links' sum.
   void NormalizeClusters();
   std::size_t RefineLinks(std::vector<PendingLink>& out);
-  std::size_t RefineClusterLinks(std::vector<PendingLink>& out);
-  /// Clustered, after the refinement rounds: links the deferred pairs whose
-  /// source has radiosity now (ClusterLinks::LinkDeferred); how many.
-  std::size_t LinkDeferredClusters(std::vector<PendingLink>& out);
+  /// Clustered: RefineAgain, or with `deferredOnly` (after the refinement
+  /// rounds) only the deferred pairs whose source has radiosity now
+  /// (ClusterLinks::LinkDeferred); how many changed.
+  std::size_t RefineClusterLinks(std::vector<PendingLink>& out, bool deferredOnly = false);
   static double BytesPerNode();
   /// false when `keepGoing` (asked between blocks of links, on this thread) said stop.
   bool ComputeLinks(const std::vector<PendingLink>& pending, SolverStatistics& stats,
