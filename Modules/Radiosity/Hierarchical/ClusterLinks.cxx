@@ -387,25 +387,16 @@ std::size_t ClusterLinks::RefineAgain(double epsilon, std::vector<Pair>& out, co
   this->ToClusters.erase(std::remove_if(this->ToClusters.begin(), this->ToClusters.end(),
                            [&](const VectorLink& l) { return tooLarge(l.Receiver, l.Source); }),
     this->ToClusters.end());
-  std::size_t changed = again.size();
-  for (const Pair& p : this->Deferred)
-  {
-    if (MaxComponent(this->RadiosityOf(p.Source)) > 0)
-    {
-      ++changed;
-    }
-  }
-  again.insert(again.end(), this->Deferred.begin(), this->Deferred.end());
-  this->Deferred.clear();
   for (const Pair& p : again)
   {
     this->Refine(p.Receiver, p.Source, epsilon, out, elements);
   }
+  const std::size_t changed = again.size() + this->RefineLitDeferred(epsilon, out, elements);
   this->Index();
   return changed;
 }
 
-std::size_t ClusterLinks::LinkDeferred(double epsilon, std::vector<Pair>& out, const ElementPair& elements)
+std::size_t ClusterLinks::RefineLitDeferred(double epsilon, std::vector<Pair>& out, const ElementPair& elements)
 {
   std::vector<Pair> deferred;
   deferred.swap(this->Deferred);
@@ -419,9 +410,15 @@ std::size_t ClusterLinks::LinkDeferred(double epsilon, std::vector<Pair>& out, c
     }
     else
     {
-      this->Deferred.push_back(p);
+      this->Deferred.push_back(p); // still dark: Refine would defer it again
     }
   }
+  return linked;
+}
+
+std::size_t ClusterLinks::LinkDeferred(double epsilon, std::vector<Pair>& out, const ElementPair& elements)
+{
+  const std::size_t linked = this->RefineLitDeferred(epsilon, out, elements);
   this->Index();
   return linked;
 }

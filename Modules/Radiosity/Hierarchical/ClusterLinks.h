@@ -204,6 +204,9 @@ private:
   std::vector<std::uint32_t> ClusterOffsets; ///< per internal cluster, its first vector link
   /// Pairs whose source had no radiosity yet: refined by the next RefineAgain.
   std::vector<Pair> Deferred;
+  /// The deferred pairs whose source has radiosity now, refined (the rest
+  /// stay deferred); how many. The caller indexes the links.
+  std::size_t RefineLitDeferred(double epsilon, std::vector<Pair>& out, const ElementPair& elements);
   std::vector<unsigned char> Closed;  ///< per triangle: every ray of its hemisphere hit a surface
 };
 } // namespace radiosity

@@ -143,17 +143,17 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
             }
           }
           link.Kind = res.Blockers.empty() ? HierarchicalLink::Visible : HierarchicalLink::Partial;
+          // The blockers to backproject through (none for a cut link, whose
+          // rays' passing fraction stands for them), the two coplanar
+          // triangles of a quad as one.
           blockerCorners.clear();
           blockerIds.clear();
-          for (std::uint32_t b : res.Blockers)
+          for (std::uint32_t b : link.BlockersCut ? std::vector<std::uint32_t>() : res.Blockers)
           {
             blockerCorners.push_back({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) });
             blockerIds.push_back(scene.Triangles[b].V);
           }
-          // Coplanar pairs (the two triangles of a quad) as one blocker.
-          const std::vector<BlockerPolygon> blockers = link.BlockersCut
-            ? std::vector<BlockerPolygon>()
-            : MergeCoplanarPairs(blockerCorners, blockerIds);
+          const std::vector<BlockerPolygon> blockers = MergeCoplanarPairs(blockerCorners, blockerIds);
           // Receiver-area mean of the point form factor: the centroids of the
           // uniform midpoint subdivision, finer where the source is close (the
           // kernel varies fastest there, and the sums over a closed room must
