@@ -21,6 +21,7 @@
 #include "vtkVersion.h"
 
 #include "Radiosity/FaceCluster/FaceClusterMethod.h"
+#include "Radiosity/Common/MethodChoice.h"
 #include "Radiosity/Hierarchical/HierarchicalMethod.h"
 #include "Radiosity/Meshless/MeshlessMethod.h"
 #include "Radiosity/Progressive/ProgressiveMethod.h"
@@ -148,7 +149,7 @@ void vtkRadiosityFilter::FillErrorReference(Options& options) const
 std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
   const std::shared_ptr<const radiosity::Scene>& scene) const
 {
-  switch (this->Method)
+  switch (this->ResolvedMethod)
   {
     case Hierarchical:
     {
@@ -159,8 +160,12 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.RelativeLinkTolerance = this->LinkTolerance;
       options.MinElementSize = this->MinElementSize;
       options.MaxRefinementRounds = this->MaxRefinementRounds;
+      // Method Auto chose clustered hierarchical radiosity (MethodChoice.h):
+      // ClusteringAuto then clusters at any size; Off still turns it off.
+      const bool clusterAlways = this->Method == Auto;
       options.Clustering = this->Clustering == ClusteringOn ? radiosity::HierarchicalClustering::On
         : this->Clustering == ClusteringOff                 ? radiosity::HierarchicalClustering::Off
+        : clusterAlways                                     ? radiosity::HierarchicalClustering::On
                                                             : radiosity::HierarchicalClustering::Auto;
       radiosity::DiscontinuityMeshOptions meshing;
       meshing.Discontinuities = this->DiscontinuityMeshing;
@@ -168,6 +173,7 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       meshing.MinWeight = this->MinDiscontinuityWeight;
       meshing.Conforming = this->ConformingBoundaries;
       meshing.Threads = this->NumberOfThreads;
+      meshing.MaxSeconds = this->MaxTime; // the search for discontinuities gets the solve's limit again
       return std::make_shared<radiosity::HierarchicalMethod>(scene, options, meshing);
     }
     case Meshless:
@@ -202,7 +208,6 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       this->HierarchySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return std::make_shared<radiosity::FaceClusterMethod>(scene, settings, std::move(hierarchy));
     }
-    case Auto:
     case Progressive:
     default:
     {
@@ -220,6 +225,23 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
       return std::make_shared<radiosity::ProgressiveMethod>(scene, options);
     }
+  }
+}
+
+void vtkRadiosityFilter::ResolveMethod(const radiosity::Scene& scene)
+{
+  this->MethodChoiceWhy.clear();
+  this->ResolvedMethod = this->Method;
+  if (this->Method == Auto)
+  {
+    // The whole scene (on MPI ranks the gathered one): every rank chooses the same.
+    const radiosity::MethodChoice choice = radiosity::ChooseMethod(scene);
+    static_assert(Progressive == 1 + static_cast<int>(radiosity::SolutionMethod::Progressive) &&
+        FaceCluster == 1 + static_cast<int>(radiosity::SolutionMethod::FaceCluster),
+      "vtkRadiosityFilter::Methods follow radiosity::SolutionMethod");
+    this->ResolvedMethod = 1 + static_cast<int>(choice.Method);
+    this->MethodChoiceWhy = choice.Why;
+    vtkDebugMacro(<< "Method Auto: " << GetMethodName(this->ResolvedMethod) << ": " << choice.Why);
   }
 }
 
@@ -388,6 +410,7 @@ int vtkRadiosityFilter::ExecuteRequest(
   }
   auto sharedScene = std::make_shared<const radiosity::Scene>(std::move(scene));
   this->LastScene = sharedScene;
+  this->ResolveMethod(*sharedScene);
 
   auto last = Clock::now();
   // The solvers' fractions are estimates from the residual, which can dip;
@@ -503,6 +526,12 @@ int vtkRadiosityFilter::ExecuteRequest(
     relighting->SetName("Relighting");
     relighting->InsertNextValue(this->RelightingStatus);
     output->GetFieldData()->AddArray(relighting);
+    // The method solved with, and for Auto why (ParaView's Information panel shows it).
+    vtkNew<vtkStringArray> method;
+    method->SetName("MethodChoice");
+    method->InsertNextValue(std::string(GetMethodName(this->ResolvedMethod)) +
+      (this->MethodChoiceWhy.empty() ? std::string(": asked for by name") : ": " + this->MethodChoiceWhy));
+    output->GetFieldData()->AddArray(method);
   }
   for (radiosity::ProductArray a :
     surface ? this->Solver->SurfacePointArrays() : std::vector<radiosity::ProductArray>())
@@ -581,6 +610,8 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Method: " << GetMethodName(this->Method) << "\n";
+  os << indent << "ResolvedMethod: " << GetMethodName(this->ResolvedMethod) << "\n";
+  os << indent << "MethodChoice: " << (this->MethodChoiceWhy.empty() ? "(none)" : this->MethodChoiceWhy) << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MaxIterations: " << this->MaxIterations << "\n";
   os << indent << "MaxTime: " << this->MaxTime << "\n";

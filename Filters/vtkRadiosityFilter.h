@@ -10,7 +10,11 @@
  * Methods: Progressive (progressive refinement radiosity with adaptive
  * quadtrees, Coombe et al. 2004 on the CPU); Hierarchical (hierarchical
  * radiosity with BF refinement and the blockers of every partially visible
- * link, the solver of Hardt & Teller); Auto picks progressive.
+ * link, the solver of Hardt & Teller); Meshless (Lehtinen et al. 2007);
+ * FaceCluster (Gobbetti et al. 2003). Auto, the default, picks one per scene
+ * from the measured rules of radiosity::ChooseMethod (MethodChoice.h): face
+ * cluster for a glossy scene, hierarchical up to 2048 triangles, meshless
+ * above; GetResolvedMethod and GetMethodChoice say which and why.
  *
  * Port 1 is the method's own product as polydata (field data `ProductKind`
  * names it): for Hierarchical the discontinuity mesh with its quadratic
@@ -112,7 +116,8 @@ public:
   };
 
   ///@{
-  /// The solution method. Default Auto (progressive).
+  /// The solution method. Default Auto: chosen per scene at each solve
+  /// (radiosity::ChooseMethod).
   vtkSetClampMacro(Method, int, Auto, FaceCluster);
   vtkGetMacro(Method, int);
   void SetMethodToAuto() { this->SetMethod(Auto); }
@@ -139,6 +144,8 @@ public:
 
   ///@{
   /// Stop after this many seconds of solving; 0 means no limit. Default 0.
+  /// Hierarchical: the search for discontinuities gets as long again (the
+  /// leaves left past it are meshed without theirs, with a warning).
   vtkSetClampMacro(MaxTime, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaxTime, double);
   ///@}
@@ -312,6 +319,15 @@ public:
   const std::vector<std::string>& GetWarnings() const { return this->Warnings; }
   /// Statistics of the last solve (history, counts, times).
   const radiosity::SolverStatistics& GetStatistics() const { return this->Statistics; }
+  /**
+   * The method the last request solved with: Method itself, or for Auto the
+   * one chosen for the scene (Progressive .. FaceCluster); Auto before any
+   * request. GetMethodChoice: why Auto chose it (one sentence naming the
+   * scene's figure and the rule), empty when Method is not Auto. Port 0's
+   * field data `MethodChoice` holds "METHOD: why" (or ": asked for by name").
+   */
+  int GetResolvedMethod() const { return this->ResolvedMethod; }
+  const std::string& GetMethodChoice() const { return this->MethodChoiceWhy; }
   /// The last scene as the solver saw it and what was dropped from it.
   const radiosity::Scene& GetScene() const { return *this->LastScene; }
   const radiosity::SceneCleanupReport& GetCleanupReport() const { return this->Cleanup; }
@@ -639,6 +655,8 @@ private:
   void WarnDropped();
   /// The one branch per method: its solver, built from the scene and the
   /// properties it reads.
+  /// ResolvedMethod and MethodChoiceWhy for `scene` (Auto: ChooseMethod).
+  void ResolveMethod(const radiosity::Scene& scene);
   std::shared_ptr<radiosity::RadiositySolver> MakeSolver(
     const std::shared_ptr<const radiosity::Scene>& scene) const;
   template <typename Options>
@@ -651,6 +669,8 @@ private:
   radiosity::LightSet GatherLights() const;
 
   std::string LastError;
+  int ResolvedMethod = Auto;
+  std::string MethodChoiceWhy;
   std::vector<std::string> Warnings;
   radiosity::SolverStatistics Statistics;
   /// Shared with the hierarchical solution, which references it.

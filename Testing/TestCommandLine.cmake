@@ -45,7 +45,7 @@ set(EDGE0_RMS 0.047)             # the paper's leaves
 set(EDGE0_RMS_BOUND 0.1)
 set(EDGE_GAIN 20)                # no halving / 4 halvings: measured 55 (a lower bound, as above)
 
-expect_exit(0 "${PROGRAM}" solve "${DATA}/room.obj" --tolerance 1e-2
+expect_exit(0 "${PROGRAM}" solve "${DATA}/room.obj" --method progressive --tolerance 1e-2
   --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/values.csv"
   --output "${WORK}/room.vtp" --image "${WORK}/room.png" --exr "${WORK}/room.exr"
   --report "${WORK}/report.json" --size 128 --reference pathtraced --reference-samples 16384)
@@ -102,7 +102,7 @@ endif ()
 # The written solution is itself a valid scene (its cell arrays carry the
 # materials): solving it again gives the room's light again, against the
 # path tracer on the original room.obj (the materials survived).
-expect_exit(0 "${PROGRAM}" solve "${WORK}/room.vtp" --tolerance 1e-2 --output "${WORK}/again.vtp"
+expect_exit(0 "${PROGRAM}" solve "${WORK}/room.vtp" --method progressive --tolerance 1e-2 --output "${WORK}/again.vtp"
   --probes "${DATA}/room_probes.csv" --probe-output "${WORK}/again_values.csv"
   --reference pathtraced --reference-samples 16384 --report "${WORK}/again.json")
 if (NOT EXISTS "${WORK}/again.vtp")
@@ -132,7 +132,7 @@ endif ()
 
 # Error against run time: the exact penumbra scene against its analytic
 # reference (backprojection of the convex blocker: exact).
-expect_exit(0 "${PROGRAM}" solve shadow --probes "${DATA}/shadow_probes.csv"
+expect_exit(0 "${PROGRAM}" solve shadow --method progressive --probes "${DATA}/shadow_probes.csv"
   --reference analytic --probe-output "${WORK}/shadow_values.csv" --report "${WORK}/shadow.json"
   --history "${WORK}/shadow_history.csv")
 file(READ "${WORK}/shadow.json" shadow)
@@ -172,7 +172,7 @@ foreach (d 0.05 0.3 1.0)
 endforeach ()
 file(WRITE "${WORK}/contact_reference.csv" "${contactReference}")
 foreach (reference analytic "${WORK}/contact_reference.csv")
-  expect_exit(0 "${PROGRAM}" solve contact --probes "${WORK}/contact_probes.csv"
+  expect_exit(0 "${PROGRAM}" solve contact --method progressive --probes "${WORK}/contact_probes.csv"
     --reference "${reference}" --probe-output "${WORK}/contact_values.csv" --report "${WORK}/contact.json")
   file(READ "${WORK}/contact.json" contact)
   string(JSON rms GET "${contact}" error probe_output_rms_relative_error)
@@ -185,7 +185,7 @@ expect_within("contact: RMS error against the analytic reference (measured ${CON
 expect_within("contact: RMS error against the closed form in a file (against analytic: ${analyticRms})"
   "${fileRms}" "${analyticRms} - 1e-9" "${analyticRms} + 1e-9")
 # The path-traced reference: at the probes, and per pixel of the --exr view.
-expect_exit(0 "${PROGRAM}" solve shadow --probes "${DATA}/shadow_probes.csv"
+expect_exit(0 "${PROGRAM}" solve shadow --method progressive --probes "${DATA}/shadow_probes.csv"
   --reference pathtraced --reference-samples 4096 --exr "${WORK}/shadow.exr"
   --reference-exr "${WORK}/shadow_reference.exr" --size 32 --report "${WORK}/shadow_pt.json")
 file(READ "${WORK}/shadow_pt.json" pt)

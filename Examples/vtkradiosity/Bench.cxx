@@ -14,6 +14,9 @@
 #include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 #include "Radiosity/Progressive/ProgressiveRadiosity.h"
+#include "Radiosity/Common/MethodChoice.h"
+#include "Radiosity/FaceCluster/FaceClusterMethod.h"
+#include "Radiosity/Meshless/MeshlessRadiosity.h"
 #include "Radiosity/Scenes/SceneGenerators.h"
 #include "Radiosity/Scenes/StandardScenes.h"
 #include "Radiosity/Common/SystemInfo.h"
@@ -58,13 +61,14 @@ struct HierarchicalPoint
 };
 
 HierarchicalPoint RunHierarchical(const Scene& scene, const std::vector<Probe>& probes,
-  const std::vector<RGB>& reference, double linkTolerance, bool clustered, double maxSeconds)
+  const std::vector<RGB>& reference, double linkTolerance, HierarchicalClustering clustering,
+  double maxSeconds)
 {
   HierarchicalPoint point;
   point.LinkTolerance = linkTolerance;
   HierarchicalOptions options;
   options.RelativeLinkTolerance = linkTolerance;
-  options.Clustering = clustered ? HierarchicalClustering::On : HierarchicalClustering::Off;
+  options.Clustering = clustering;
   options.ErrorProbes = probes;
   options.ErrorReference = reference;
   options.MaxTimeSeconds = maxSeconds;
@@ -113,6 +117,99 @@ void AddCurvePoint(vtkTable* table, double time, double rms, double worst)
   vtkDoubleArray::SafeDownCast(table->GetColumn(2))->InsertNextValue(worst);
 }
 
+/// One finished run of a scene: what the auto verdict compares.
+struct Run
+{
+  std::string Method, Setting;
+  double Seconds = 0.0;
+  ErrorFigures Error;
+};
+
+/// Meshless radiosity (Lehtinen et al. 2007) with `levels` point levels, the
+/// other options the defaults; time is construction (point placement) and solve.
+Run RunMeshless(const Scene& scene, const std::vector<Probe>& probes,
+  const std::vector<RGB>& reference, int levels, SolverStatistics& stats, std::size_t& samples)
+{
+  MeshlessOptions options;
+  if (levels > 0)
+  {
+    options.Placement.Levels = levels;
+  }
+  options.ErrorProbes = probes;
+  options.ErrorReference = reference;
+  options.MaxTimeSeconds = 120.0;
+  const auto start = std::chrono::steady_clock::now();
+  MeshlessRadiosity solver(scene, options);
+  stats = solver.Solve();
+  Run run;
+  run.Method = "meshless";
+  run.Setting = levels > 0 ? "levels " + std::to_string(levels) : "default";
+  run.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const ConvergenceRow& last = stats.History.Rows.back();
+  run.Error.Rms = last.RmsError;
+  run.Error.Max = last.MaxRelError;
+  samples = solver.Statistics().SamplesGenerated;
+  return run;
+}
+
+/// What `--method auto` runs on `scene` (ChooseMethod) at the defaults of the
+/// filter and the command line: clustered hierarchical radiosity at link
+/// tolerance 0.05 with its discontinuity mesh (probes from the interpolants),
+/// meshless radiosity, or face cluster radiosity.
+Run RunAuto(const Scene& scene, const std::vector<Probe>& probes, const std::vector<RGB>& reference,
+  MethodChoice& choice)
+{
+  choice = ChooseMethod(scene);
+  Run run;
+  run.Method = "auto";
+  run.Setting = SolutionMethodName(choice.Method);
+  if (choice.Method == SolutionMethod::Hierarchical)
+  {
+    const HierarchicalPoint h = RunHierarchical(scene, probes, reference, 0.05,
+      choice.Clustered ? HierarchicalClustering::On : HierarchicalClustering::Auto, 120.0);
+    run.Seconds = h.SolveSeconds + h.MeshSeconds;
+    run.Error = h.Mesh;
+  }
+  else if (choice.Method == SolutionMethod::Meshless)
+  {
+    SolverStatistics stats;
+    std::size_t samples = 0;
+    const Run meshless = RunMeshless(scene, probes, reference, 0, stats, samples);
+    run.Seconds = meshless.Seconds;
+    run.Error = meshless.Error;
+  }
+  else
+  {
+    // The methods of the filter, for the rest (face cluster: a glossy scene).
+    FaceClusterSettings settings;
+    const auto start = std::chrono::steady_clock::now();
+    auto shared = std::make_shared<const Scene>(scene);
+    FaceClusterMethod method(shared, settings, FaceClusterHierarchy::Shared(shared, settings.Clustering));
+    method.Solve(ProgressCallback());
+    const std::vector<RGB> values = method.EvaluateProbes(probes);
+    run.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run.Error = RelativeErrors(values, reference);
+  }
+  return run;
+}
+
+/// Errors below this are exact up to rounding: compared as equal.
+constexpr double ExactError = 1e-10;
+
+/// The lowest RMS error among `runs` that took at most `seconds` (null when none did).
+const Run* BestWithin(const std::vector<Run>& runs, double seconds)
+{
+  const Run* best = nullptr;
+  for (const Run& r : runs)
+  {
+    if (r.Seconds <= seconds && std::isfinite(r.Error.Rms) && (!best || r.Error.Rms < best->Error.Rms))
+    {
+      best = &r;
+    }
+  }
+  return best;
+}
+
 }
 
 int RunBench(const std::string& outputDir, bool quick)
@@ -130,6 +227,15 @@ int RunBench(const std::string& outputDir, bool quick)
   // Hardt & Teller hierarchical radiosity: a sweep over the relative link tolerance.
   const std::vector<double> linkTolerances = quick ? std::vector<double>{ 0.2 }
                                                    : std::vector<double>{ 0.2, 0.1, 0.05, 0.025 };
+  std::ostringstream autoCsv, autoMd;
+  autoCsv << "scene,chosen,rule,seconds,rms_error,best_method,best_setting,best_seconds,best_rms_error,"
+             "ratio\n";
+  autoMd << "## auto against the best at equal time\n\n"
+            "`--method auto` (ChooseMethod, Modules/Radiosity/Common/MethodChoice.h) at the defaults "
+            "against the lowest RMS error any run above reached in at most its time; errors below "
+            << ExactError << " count as exact (equal). The target: at most 1.5x.\n\n"
+            "| scene | triangles | chosen | time (s) | RMS error | best within that time | its time (s) | "
+            "its RMS error | ratio |\n|---|---|---|---|---|---|---|---|---|\n";
   std::ostringstream md;
   md << "# Error against run time\n\nMachine: " << CpuModel() << ", "
      << std::thread::hardware_concurrency() << " hardware threads. Mode: "
@@ -145,7 +251,9 @@ int RunBench(const std::string& outputDir, bool quick)
         "from the quadratic interpolants, and its time is solve plus meshing. "
         "`hierarchical-clustered` is the same solver with its links started from the face cluster "
         "roots (Smits-Arvo-Greenberg clustering, `--clustering on`) instead of every facing pair "
-        "of input triangles.\n\n";
+        "of input triangles. `meshless` is Lehtinen et al.'s meshless radiosity at the defaults but "
+        "for its number of point levels (default 5); its time is point placement and solve. `auto` "
+        "is what `--method auto` runs, at the defaults (the last table).\n\n";
   #ifdef RADIOSITY_BUNNY_JS
   const std::string bunnyJs = RADIOSITY_BUNNY_JS;
 #else
@@ -169,6 +277,7 @@ int RunBench(const std::string& outputDir, bool quick)
        << " probes, " << scene.Triangles.size() << " triangles)\n\n"
        << "| method | setting | solve (s) | stop | iterations | elements | rays | RMS error | "
           "max error |\n|---|---|---|---|---|---|---|---|---|\n";
+    std::vector<Run> runs; // every run but auto's, for its verdict
     vtkNew<vtkTable> curve;
     vtkNew<vtkTable> during; // the default setting's error at every iteration
     {
@@ -229,6 +338,8 @@ int RunBench(const std::string& outputDir, bool quick)
       std::cout << "bench: " << standard.Name << " " << setting.Name << ": "
                 << ToString(stats.Stop) << "\n";
       time->InsertNextValue(std::max(stats.SolveSeconds + preprocess, 1e-6));
+      runs.push_back({ "progressive", setting.Name, stats.SolveSeconds + preprocess,
+        ErrorFigures{ last.RmsError, last.MaxRelError } });
       rms->InsertNextValue(last.RmsError);
       worst->InsertNextValue(last.MaxRelError);
     }
@@ -240,7 +351,7 @@ int RunBench(const std::string& outputDir, bool quick)
     vtkSmartPointer<vtkTable> leafCurve[2] = { CurveTable(), CurveTable() };
     vtkSmartPointer<vtkTable> meshCurve[2] = { CurveTable(), CurveTable() };
     bool ran[2] = { !standard.FullOnly && (!quick || standard.HierarchicalInQuick),
-      !standard.FullOnly };
+      standard.ClusteredInFull };
     for (int clustered = 0; clustered < 2; ++clustered)
     {
       const char* name = clustered ? "hierarchical-clustered" : "hierarchical";
@@ -258,7 +369,8 @@ int RunBench(const std::string& outputDir, bool quick)
       for (double linkTolerance : linkTolerances)
       {
         const HierarchicalPoint h =
-          RunHierarchical(scene, probes, reference.Irradiance, linkTolerance, clustered != 0, 120.0);
+          RunHierarchical(scene, probes, reference.Irradiance, linkTolerance,
+            clustered ? HierarchicalClustering::On : HierarchicalClustering::Off, 120.0);
         const SolverStatistics& stats = h.Stats;
         const double relative =
           stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0;
@@ -289,6 +401,9 @@ int RunBench(const std::string& outputDir, bool quick)
             stats.Iterations, stats.Links, stats.PartialLinks, h.Leaves, triangles, e.Rms, e.Max);
           md << line;
           AddCurvePoint(meshed ? meshCurve[clustered] : leafCurve[clustered], total, e.Rms, e.Max);
+          char settingName[32];
+          std::snprintf(settingName, sizeof settingName, "link %g", linkTolerance);
+          runs.push_back({ variant, settingName, total, e });
         }
         std::cout << "bench: " << standard.Name << " " << name << " link " << linkTolerance << ": "
                   << ToString(stats.Stop) << ", " << h.SolveSeconds << " s + meshing "
@@ -296,6 +411,66 @@ int RunBench(const std::string& outputDir, bool quick)
       }
       md << "\n";
     }
+    // Meshless radiosity over its number of point levels (default 5).
+    vtkSmartPointer<vtkTable> meshlessCurve = CurveTable();
+    md << "| method | levels | time (s) | stop | bounces | samples | rays | RMS error | max error |\n"
+          "|---|---|---|---|---|---|---|---|---|\n";
+    for (int levels : quick ? std::vector<int>{ 3 } : std::vector<int>{ 3, 4, 5 })
+    {
+      SolverStatistics stats;
+      std::size_t samples = 0;
+      const Run m = RunMeshless(scene, probes, reference.Irradiance, levels, stats, samples);
+      char line[512];
+      std::snprintf(line, sizeof line,
+        "meshless,%s,-,-,%.6f,%.6f,%.0f,%zu,%zu,%lld,%s,-,%.6e,%.6e,,,,,,,,,\n", m.Setting.c_str(),
+        stats.PreprocessSeconds, m.Seconds, PeakMemoryBytes(), samples, stats.RaysCast,
+        stats.Iterations, ToString(stats.Stop), m.Error.Rms, m.Error.Max);
+      csv << line;
+      std::snprintf(line, sizeof line, "| meshless | %d | %.3f | %s | %lld | %zu | %zu | %.2e | %.2e |\n",
+        levels, m.Seconds, ToString(stats.Stop), stats.Iterations, samples, stats.RaysCast, m.Error.Rms,
+        m.Error.Max);
+      md << line;
+      AddCurvePoint(meshlessCurve, m.Seconds, m.Error.Rms, m.Error.Max);
+      runs.push_back(m);
+      std::cout << "bench: " << standard.Name << " meshless " << levels << " levels: " << ToString(stats.Stop)
+                << ", " << m.Seconds << " s\n";
+    }
+    md << "\n";
+
+    // --method auto: the method ChooseMethod picks, at the defaults, against
+    // the lowest error any other run above reached in at most its time.
+    MethodChoice choice;
+    const Run chosen = RunAuto(scene, probes, reference.Irradiance, choice);
+    const Run* best = BestWithin(runs, chosen.Seconds);
+    const double ratio = best ? std::max(chosen.Error.Rms, ExactError) / std::max(best->Error.Rms, ExactError)
+                              : 1.0;
+    {
+      char line[512];
+      std::snprintf(line, sizeof line,
+        "auto,%s,-,-,-,%.6f,%.0f,-,-,-,converged,-,%.6e,%.6e,,,,,,,,,\n", chosen.Setting.c_str(),
+        chosen.Seconds, PeakMemoryBytes(), chosen.Error.Rms, chosen.Error.Max);
+      csv << line;
+      std::snprintf(line, sizeof line, "%s,%s,%s,%.6f,%.6e,%s,%s,%.6f,%.6e,%.4f\n",
+        standard.Name.c_str(), chosen.Setting.c_str(), choice.Rule.c_str(), chosen.Seconds, chosen.Error.Rms,
+        best ? best->Method.c_str() : "-", best ? best->Setting.c_str() : "-", best ? best->Seconds : 0.0,
+        best ? best->Error.Rms : 0.0, ratio);
+      autoCsv << line;
+      std::snprintf(line, sizeof line, "| %s | %d | %s | %.3f | %.2e | ", standard.Name.c_str(),
+        static_cast<int>(scene.Triangles.size()), chosen.Setting.c_str(), chosen.Seconds, chosen.Error.Rms);
+      autoMd << line;
+      if (best)
+      {
+        std::snprintf(line, sizeof line, "%s, %s | %.3f | %.2e | %.2f |\n", best->Method.c_str(),
+          best->Setting.c_str(), best->Seconds, best->Error.Rms, ratio);
+      }
+      else
+      {
+        std::snprintf(line, sizeof line, "no other run that fast | - | - | - |\n");
+      }
+      autoMd << line;
+    }
+    std::cout << "bench: " << standard.Name << " auto (" << chosen.Setting << "): " << chosen.Seconds
+              << " s, RMS " << chosen.Error.Rms << ", " << ratio << "x the best at equal time\n";
     if (!WriteFileAtomically(outputDir + "/" + standard.Name + ".csv", csv.str(), error))
     {
       std::cerr << "bench: " << error << "\n";
@@ -316,6 +491,10 @@ int RunBench(const std::string& outputDir, bool quick)
         chart->AddInputData(meshCurve[clustered], (name + " + discontinuity mesh, interpolants").c_str());
       }
     }
+    chart->AddInputData(meshlessCurve, "meshless, per number of levels");
+    vtkSmartPointer<vtkTable> autoPoint = CurveTable();
+    AddCurvePoint(autoPoint, chosen.Seconds, chosen.Error.Rms, chosen.Error.Max);
+    chart->AddInputData(autoPoint, ("auto (" + chosen.Setting + ")").c_str());
     chart->RemoveAllColumns();
     chart->AddColumn("rms_error", "RMS error / peak irradiance");
     chart->AddColumn("max_rel_error", "max error / peak irradiance");
@@ -328,7 +507,7 @@ int RunBench(const std::string& outputDir, bool quick)
       slowest = std::max(slowest, time->GetValue(i));
     }
     for (vtkTable* table : { static_cast<vtkTable*>(during), leafCurve[0].Get(), meshCurve[0].Get(),
-           leafCurve[1].Get(), meshCurve[1].Get() })
+           leafCurve[1].Get(), meshCurve[1].Get(), meshlessCurve.Get(), autoPoint.Get() })
     {
       vtkDataArray* runTime = vtkDataArray::SafeDownCast(table->GetColumn(0));
       for (vtkIdType i = 0; i < runTime->GetNumberOfTuples(); ++i)
@@ -348,6 +527,12 @@ int RunBench(const std::string& outputDir, bool quick)
       return 1;
     }
     std::cout << "bench: " << standard.Name << " done\n";
+  }
+  md << autoMd.str() << "\n";
+  if (!WriteFileAtomically(outputDir + "/auto.csv", autoCsv.str(), error))
+  {
+    std::cerr << "bench: " << error << "\n";
+    return 1;
   }
   if (!WriteFileAtomically(outputDir + "/README.md", md.str(), error))
   {

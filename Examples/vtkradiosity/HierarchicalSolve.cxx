@@ -48,12 +48,7 @@
 
 namespace solve
 {
-/// --method hierarchical: Hardt & Teller's hierarchical radiosity with
-/// discontinuity meshing (SPEC), through vtkRadiosityFilter: port 0 the
-/// constant leaves, port 1 the discontinuity mesh.
-int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
-  std::vector<RGB>& reference, std::string& referenceKind, const LightSet& lights,
-  SolveTarget& target, RunPhases& phases)
+void ConfigureHierarchical(const SolveArguments& args, vtkRadiosityFilter* filter)
 {
   if (!(args.LinkTolerance > 0.0))
   {
@@ -72,9 +67,6 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   {
     throw BadInput("--clustering " + args.Clustering + ": expected auto, on or off");
   }
-  // The VTK pipeline: the radiosity filter (hierarchical) solves and meshes.
-  vtkRadiosityFilter* filter = target.Filter();
-  target.SetMethod(vtkRadiosityFilter::Hierarchical);
   filter->SetLinkTolerance(args.LinkTolerance);
   filter->SetMinElementSize(args.MinElementSize);
   filter->SetMaxRefinementRounds(args.MaxRefinementRounds);
@@ -82,8 +74,16 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   filter->SetDiscontinuityMeshing(!args.NoDiscontinuityMeshing);
   filter->SetMaxDiscontinuitiesPerLeaf(args.DiscontinuitiesPerLeaf);
   filter->SetMinDiscontinuityWeight(args.MinDiscontinuityWeight);
-  cli::ProgressBar bar;
-  RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar, phases);
+}
+
+/// Hardt & Teller's hierarchical radiosity with discontinuity meshing
+/// (SPEC), through vtkRadiosityFilter: port 0 the constant leaves, port 1
+/// the discontinuity mesh.
+int FinishHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
+  const std::vector<RGB>& reference, const std::string& referenceKind, SolveTarget& target,
+  cli::ProgressBar& bar, RunPhases& phases)
+{
+  vtkRadiosityFilter* filter = target.Filter();
   const std::vector<std::string>& warnings = filter->GetWarnings();
   const SceneCleanupReport& cleanup = filter->GetCleanupReport();
   const Scene& scene = filter->GetScene();
@@ -150,6 +150,7 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
   {
     nlohmann::json report;
     report["method"] = "hierarchical";
+    report["method_choice"] = MethodChoiceReport(args.Method, filter);
     report["parameters"] = { { "tolerance", options.Tolerance },
       { "max_iterations", options.MaxIterations }, { "max_time_s", options.MaxTimeSeconds },
       { "threads", options.Threads }, { "link_tolerance", options.RelativeLinkTolerance },
@@ -187,6 +188,8 @@ int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& p
       report["discontinuity_mesh"] = { { "leaves_meshed", mesh.LeavesMeshed },
         { "segments_found", mesh.SegmentsFound }, { "segments_kept", mesh.SegmentsKept },
         { "leaves_triangulation_failed", mesh.LeavesTriangulationFailed },
+        { "leaves_past_time_limit", mesh.LeavesPastTimeLimit },
+        { "leaves_sampled_past_time_limit", mesh.LeavesSampledPastTimeLimit },
         { "point_samples", mesh.PointSamples }, { "points", mesh.Points.size() },
         { "triangles", mesh.Triangles.size() }, { "interpolants", mesh.Interpolants.size() },
         { "seconds", mesh.Seconds }, { "discontinuities_s", mesh.DiscontinuitySeconds },

@@ -527,4 +527,12 @@ void AddProbeOutputErrors(nlohmann::json& e, const ErrorFigures& all)
   e["probe_output_probes_not_finite"] = all.NotFinite;
   e["peak_reference_irradiance"] = Finite(all.Peak);
 }
+
+nlohmann::json MethodChoiceReport(const std::string& requested, const vtkRadiosityFilter* filter)
+{
+  const std::string& why = filter->GetMethodChoice();
+  return { { "requested", requested },
+    { "chosen", vtkRadiosityFilter::GetMethodName(filter->GetResolvedMethod()) },
+    { "why", why.empty() ? nlohmann::json() : nlohmann::json(why) } };
+}
 } // namespace solve

@@ -183,11 +183,19 @@ nlohmann::json ErrorHead(const std::string& referenceKind, std::size_t probes, s
 /// and per-probe relative RMS and maximum, probes counted and not finite.
 void AddProbeOutputErrors(nlohmann::json& e, const ErrorFigures& all);
 
-/// `solve --method hierarchical` (called by the solve command once the
-/// probes, the reference and the scene are read and checked).
-int RunHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
-  std::vector<RGB>& reference, std::string& referenceKind, const LightSet& lights,
-  SolveTarget& target, RunPhases& phases);
+/// The hierarchical options of `args` (--link-tolerance, --clustering,
+/// discontinuity meshing) on `filter`, for --method hierarchical and auto;
+/// a bad one is BadInput, before anything is solved.
+void ConfigureHierarchical(const SolveArguments& args, vtkRadiosityFilter* filter);
+/// The rest of `solve` once the filter solved with the hierarchical method
+/// (--method hierarchical, or auto's choice): outputs, probes, report.
+int FinishHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>& probes,
+  const std::vector<RGB>& reference, const std::string& referenceKind, SolveTarget& target,
+  cli::ProgressBar& bar, RunPhases& phases);
+/// The report's "method_choice": the method asked for (--method), the one
+/// solved with and, for auto, why (vtkRadiosityFilter::GetMethodChoice;
+/// null otherwise).
+nlohmann::json MethodChoiceReport(const std::string& requested, const vtkRadiosityFilter* filter);
 } // namespace solve
 
 #endif

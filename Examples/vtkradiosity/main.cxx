@@ -72,8 +72,8 @@ int RunSolve(const SolveArguments& args)
       ": not available in this version (available: progressive, hierarchical, meshless, "
       "facecluster, auto)");
   }
-  const bool meshless = args.Method == "meshless";
-  const bool faceCluster = args.Method == "facecluster";
+  bool meshless = args.Method == "meshless"; // or auto's choice, once solved
+  bool faceCluster = args.Method == "facecluster";
   auto basis = [](const std::string& option, const std::string& name) {
     for (int b = vtkRadiosityFilter::ConstantBasis; b <= vtkRadiosityFilter::CubicBasis; ++b)
     {
@@ -196,15 +196,17 @@ int RunSolve(const SolveArguments& args)
     phases.End("reference_s");
   }
 
-  if (args.Method == "hierarchical")
-  {
-    return RunHierarchicalSolve(args, probes, reference, referenceKind, lights, target, phases);
-  }
-
   vtkRadiosityFilter* filter = target.Filter();
-  target.SetMethod(meshless ? vtkRadiosityFilter::Meshless
-      : faceCluster        ? vtkRadiosityFilter::FaceCluster
-                           : vtkRadiosityFilter::Progressive);
+  const bool autoMethod = args.Method == "auto";
+  if (autoMethod || args.Method == "hierarchical")
+  {
+    ConfigureHierarchical(args, filter); // checked before anything is solved
+  }
+  target.SetMethod(autoMethod                   ? vtkRadiosityFilter::Auto
+      : args.Method == "hierarchical" ? vtkRadiosityFilter::Hierarchical
+      : meshless                      ? vtkRadiosityFilter::Meshless
+      : faceCluster                   ? vtkRadiosityFilter::FaceCluster
+                                      : vtkRadiosityFilter::Progressive);
   filter->SetIrradianceBasis(irradianceBasis);
   filter->SetRadiosityBasis(radiosityBasis);
   filter->SetTransferTolerance(args.TransferTolerance);
@@ -216,16 +218,30 @@ int RunSolve(const SolveArguments& args)
   filter->SetOvershooting(!args.NoOvershooting);
   filter->SetInitialElementSize(args.ElementSize);
   filter->SetShooterElementSize(args.ShooterSize);
-  if (!target.IsImported()) // the pass draws what its filter outputs: all of it
+  if (!target.IsImported() && !autoMethod && args.Method != "hierarchical")
   {
     // Only what the options ask for: the surface for --output, --image and
     // --exr (its view frames the surface; the probes evaluate their own),
-    // the meshless field for its splats in --image.
+    // the meshless field for its splats in --image. (Hierarchical, and auto
+    // until it has chosen, keep both: port 1 is the discontinuity mesh.)
+    // The pass draws what its filter outputs: all of it.
     filter->SetSurfaceOutput(!args.Output.empty() || !args.Image.empty() || !args.Exr.empty());
     filter->SetProductOutput(meshless && !args.Image.empty());
   }
   cli::ProgressBar bar;
   RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar, phases);
+  const nlohmann::json methodChoice = MethodChoiceReport(args.Method, filter);
+  if (autoMethod)
+  {
+    std::cerr << "method auto: " << vtkRadiosityFilter::GetMethodName(filter->GetResolvedMethod()) << " ("
+              << filter->GetMethodChoice() << ")\n";
+  }
+  if (filter->GetResolvedMethod() == vtkRadiosityFilter::Hierarchical)
+  {
+    return FinishHierarchicalSolve(args, probes, reference, referenceKind, target, bar, phases);
+  }
+  meshless = filter->GetResolvedMethod() == vtkRadiosityFilter::Meshless;
+  faceCluster = filter->GetResolvedMethod() == vtkRadiosityFilter::FaceCluster;
   const SolverStatistics& stats = filter->GetStatistics();
   bar.Finish(std::string("stopped: ") + ToString(stats.Stop));
 
@@ -261,6 +277,7 @@ int RunSolve(const SolveArguments& args)
     const Scene& scene = filter->GetScene();
     nlohmann::json report;
     report["method"] = meshless ? "meshless" : faceCluster ? "facecluster" : "progressive";
+    report["method_choice"] = methodChoice;
     report["parameters"] = { { "tolerance", filter->GetTolerance() },
       { "max_iterations", filter->GetMaxIterations() }, { "max_time_s", filter->GetMaxTime() },
       { "threads", filter->GetNumberOfThreads() }, { "overshooting", filter->GetOvershooting() },
@@ -488,6 +505,9 @@ int main(int argc, char* argv[])
       Check(cli::MakeDirectories(outputDir, error), error);
       SolveArguments d;
       d.Scene = "cornell";
+      // The demo shows progressive refinement converging (unshot power,
+      // overshooting, energy balance: README), not auto's choice.
+      d.Method = "progressive";
       d.Output = outputDir + "/cornell.vtp";
       d.Image = outputDir + "/cornell.png";
       d.Exr = outputDir + "/cornell.exr";

@@ -281,7 +281,7 @@ bool vtkRadiosityPass::UpdateSolution(vtkRenderer* renderer)
       vtkPolyData* surface = this->Filter->GetOutput(0);
       vtkPolyData* product = this->Filter->GetOutput(1);
       vtkSmartPointer<vtkPolyData> materials;
-      if (this->Filter->GetMethod() == vtkRadiosityFilter::FaceCluster)
+      if (this->Filter->GetResolvedMethod() == vtkRadiosityFilter::FaceCluster)
       {
         materials = vtkRadiositySceneConverter::FromScene(this->Filter->GetScene());
       }
@@ -436,6 +436,7 @@ void vtkRadiosityPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Method: " << vtkRadiosityFilter::GetMethodName(this->Filter->GetMethod()) << "\n";
+  os << indent << "ResolvedMethod: " << vtkRadiosityFilter::GetMethodName(this->Filter->GetResolvedMethod()) << "\n";
   os << indent << "MaxReflectance: " << this->MaxReflectance << "\n";
   os << indent << "TwoSided: " << (this->TwoSided ? "On" : "Off") << "\n";
   os << indent << "SolveOnRender: " << (this->SolveOnRender ? "On" : "Off") << "\n";

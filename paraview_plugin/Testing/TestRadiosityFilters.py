@@ -1,6 +1,7 @@
 """pvbatch test of the Radiosity plugin's other filters, each on the Cornell
 box: the face cluster hierarchy's ClusterId levels, the discontinuity mesh's
-quadratic interpolants, the meshless field and its Shepard probe, and a
+quadratic interpolants, the meshless field and its Shepard probe, what
+Method Auto chose and why, and a
 screenshot of the solution (Surface coloured by Radiosity) against its
 baseline.
 
@@ -83,8 +84,22 @@ probe = ShepardFieldProbe(Input=box, Field=field)
 data = servermanager.Fetch(probe)
 check(finite_positive(data.GetPointData().GetArray("Irradiance")), "Shepard probe irradiance")
 
+# Method Auto, the default: the matte 32-triangle box is solved by clustered
+# hierarchical radiosity, and the output's field data says so and why.
+chosen = Radiosity(Input=box)
+check(chosen.Method == "Auto", "the default Method is %s" % chosen.Method)
+data = servermanager.Fetch(chosen, idx=0)
+choice = data.GetFieldData().GetAbstractArray("MethodChoice")
+check(choice is not None and choice.GetValue(0).startswith("hierarchical: 32 triangles, at most 2048"),
+      "MethodChoice: %s" % (choice.GetValue(0) if choice else None))
+product = servermanager.Fetch(chosen, idx=1)
+check(product.GetCellData().GetArray("QuadraticInterpolant") is not None,
+      "auto's hierarchical product has no QuadraticInterpolant")
+print("auto: %s" % choice.GetValue(0))
+
 # The progressive solution as ParaView shows it, against the baseline.
 solve = Radiosity(Input=box)
+solve.Method = "Progressive"
 view = CreateRenderView()
 view.ViewSize = [400, 400]
 view.OrientationAxesVisibility = 0

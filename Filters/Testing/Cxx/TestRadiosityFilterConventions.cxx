@@ -184,7 +184,7 @@ int TestRadiosityFilterConventions(int, char*[])
   ok &= Check(!chart->GetLogTime(), "LogTimeOff");
 
   // 3. PrintSelf.
-  ok &= PrintsAll(radiosity, { "Method", "Tolerance", "MaxIterations", "MaxTime",
+  ok &= PrintsAll(radiosity, { "Method", "ResolvedMethod", "MethodChoice", "Tolerance", "MaxIterations", "MaxTime",
                                "NumberOfThreads", "Overshooting", "ShooterElementSize",
                                "InitialElementSize", "MaxSubdivisionLevels",
                                "SubdivisionThreshold", "FormFactorTolerance", "VisibilitySamples",

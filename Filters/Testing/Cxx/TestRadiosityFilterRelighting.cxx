@@ -172,6 +172,7 @@ int TestRadiosityFilterRelighting(int, char*[])
   ok &= Check(radiosity->GetRelightingStatus() == "off", "off");
   vtkNew<vtkRadiosityFilter> progressive;
   progressive->SetInputData(scene);
+  progressive->SetMethodToProgressive();
   progressive->RelightingOn();
   progressive->SetMaxIterations(50);
   progressive->Update();

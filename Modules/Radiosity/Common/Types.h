@@ -33,6 +33,15 @@ inline double Mean(const RGB& c)
   return (c.x + c.y + c.z) / 3.0;
 }
 
+/// `c` with its negative components set to 0 (a NaN stays NaN): irradiance
+/// handed out from a representation that can undershoot zero where the
+/// light is cut off (a multilevel Shepard field's residual levels, an
+/// extrapolated iteration, sums of signed contour integrals in an umbra).
+inline RGB NonNegative(const RGB& c)
+{
+  return RGB(c.r < 0.0 ? 0.0 : c.r, c.g < 0.0 ? 0.0 : c.g, c.b < 0.0 ? 0.0 : c.b);
+}
+
 inline double SumComponents(const RGB& c)
 {
   return c.r + c.g + c.b;

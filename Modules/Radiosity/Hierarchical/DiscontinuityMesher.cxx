@@ -11,6 +11,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <atomic>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,9 +38,13 @@ struct ChainSource
   /// A link whose blockers were cut: its sampled visible fraction scales the
   /// unoccluded form factor (HierarchicalLink::BlockersCut).
   double Visible = 1.0;
+  /// Past the mesher's time limit a partial link brings its receiver-area
+  /// mean (HierarchicalLink::Factor: the solve's own value) to every point,
+  /// instead of the exact backprojection through its blockers.
+  bool Constant = false;
 };
 
-std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf)
+std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf, bool constantPartial = false)
 {
   const ElementMesh& mesh = s.Mesh();
   const Scene& scene = s.GetScene();
@@ -55,7 +61,11 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
         continue;
       }
       ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), {}, &l, l.VisibleFraction };
-      if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut)
+      if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut && constantPartial)
+      {
+        c.Constant = true;
+      }
+      else if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut)
       {
         const Shaft shaft(receiver, c.Polygon);
         std::vector<TriangleCorners> corners;
@@ -92,6 +102,11 @@ RGB ChainIrradiance(const std::vector<ChainSource>& chain, const Vec3& x, const 
   RGB e(0.0);
   for (const ChainSource& c : chain)
   {
+    if (c.Constant)
+    {
+      e += c.Link->Factor * c.Radiosity;
+      continue;
+    }
     const double f = c.Blockers.empty()
       ? PointToPolygonFormFactor(x, n, c.Polygon.data(), 3)
       : VisibleFormFactor(x, n, c.Polygon, c.Blockers.data(), c.Blockers.size());
@@ -464,11 +479,19 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       {
         return out;
       }
-      tbb::parallel_for(begin, std::min(leaves.size(), begin + Block), [&](std::size_t i) {
+      const std::size_t end = std::min(leaves.size(), begin + Block);
+      // Half the time limit for the search, the rest for the samples.
+      const bool search =
+        options.Discontinuities && !(options.MaxSeconds > 0.0 && clock.Seconds() >= 0.5 * options.MaxSeconds);
+      if (options.Discontinuities && !search)
+      {
+        out.LeavesPastTimeLimit += end - begin;
+      }
+      tbb::parallel_for(begin, end, [&](std::size_t i) {
         const std::uint32_t leaf = leaves[i];
         const TriangleCorners corners = s.Corners(leaf);
         std::vector<std::array<Vec3, 2>> segments;
-        if (options.Discontinuities)
+        if (search)
         {
           if (hardShadows)
           {
@@ -626,12 +649,15 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       owned[sharedOwner[k]].push_back(k);
     }
     std::vector<RGB> sharedValues(sharedPoints.size());
+    std::atomic<std::size_t> pastLimit{ 0 };
     tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
       if (owned[i].empty() && work[i].LocalPoints.empty() && !(lights && lights->HasPunctualLights()))
       {
         return;
       }
-      const std::vector<ChainSource> chain = GatherChain(s, leaves[i]);
+      const bool accurate = !(options.MaxSeconds > 0.0 && clock.Seconds() >= options.MaxSeconds);
+      pastLimit += accurate ? 0 : 1;
+      const std::vector<ChainSource> chain = GatherChain(s, leaves[i], !accurate);
       const Vec3& n = mesh[leaves[i]].Normal;
       const Vec3& c = mesh[leaves[i]].Centroid;
       // Clustered: what the cluster links bring, a constant per input triangle.
@@ -639,16 +665,17 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       for (std::uint32_t k : owned[i])
       {
         const Vec3 x = Inside(sharedPoints[k], c);
-        sharedValues[k] = clustered + ChainIrradiance(chain, x, n) +
-          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n) : RGB(0.0));
+        // In an umbra the signed contour integrals cancel to a rounding, which may be below 0.
+        sharedValues[k] = NonNegative(clustered + ChainIrradiance(chain, x, n) +
+          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n) : RGB(0.0)));
       }
       LeafWork& w = work[i];
       w.LocalValues.resize(w.LocalPoints.size());
       for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
       {
         const Vec3 x = Inside(w.LocalPoints[k], c);
-        w.LocalValues[k] = clustered + ChainIrradiance(chain, x, n) +
-          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n) : RGB(0.0));
+        w.LocalValues[k] = NonNegative(clustered + ChainIrradiance(chain, x, n) +
+          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n) : RGB(0.0)));
       }
       if (lights && lights->HasPunctualLights())
       {
@@ -682,6 +709,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       }
     });
     out.PointSamples = sharedPoints.size();
+    out.LeavesSampledPastTimeLimit = pastLimit;
     out.SampleSeconds = clock.Seconds() - samplesStart;
     if (!report("interpolants", 0.9))
     {
@@ -764,11 +792,12 @@ std::vector<RGB> EvaluateInterpolants(const DiscontinuityMesh& mesh, const std::
         u >= -1e-6 && v >= -1e-6 && w >= -1e-6)
       {
         best = dist;
-        values[i] = mesh.Interpolants[t].Evaluate(v, w);
+        // A quadratic through non-negative samples can dip below 0 between them.
+        values[i] = NonNegative(mesh.Interpolants[t].Evaluate(v, w));
         if (split)
         {
-          values[i] -= mesh.PunctualInterpolants[t].Evaluate(v, w);
-          values[i] += exactPunctual->Punctual(probe.Position, mesh.Normals[t]);
+          values[i] = NonNegative(values[i] - mesh.PunctualInterpolants[t].Evaluate(v, w)) +
+            exactPunctual->Punctual(probe.Position, mesh.Normals[t]);
         }
       }
     }

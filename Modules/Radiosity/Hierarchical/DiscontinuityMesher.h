@@ -41,6 +41,14 @@ struct DiscontinuityMeshOptions
   /// no T-junction and its rasterisation no crack. Off: the paper's hybrid
   /// mesh as it is, a leaf without discontinuities being one triangle.
   bool Conforming = true;
+  /// Seconds the meshing may take (0: no limit), so that a scene whose
+  /// leaves see hundreds of blockers is still meshed in bounded time. Past
+  /// half of it the leaves left are meshed without their discontinuities,
+  /// one interpolant each (DiscontinuityMesh::LeavesPastTimeLimit); past
+  /// all of it the leaves left take their partially visible links' mean
+  /// (the solve's value) instead of the exact backprojection at each sample
+  /// (LeavesSampledPastTimeLimit). Either is reported as a warning.
+  double MaxSeconds = 0.0;
 };
 
 struct DiscontinuityMesh
@@ -64,6 +72,10 @@ struct DiscontinuityMesh
   /// Leaves whose constraints the triangulation refused: meshed as the leaf
   /// alone (PlanarTriangulation::ConstraintsDropped), reported as a warning.
   std::size_t LeavesTriangulationFailed = 0;
+  /// Leaves not searched for discontinuities: half of MaxSeconds had passed.
+  std::size_t LeavesPastTimeLimit = 0;
+  /// Leaves sampled with their partial links' means: MaxSeconds had passed.
+  std::size_t LeavesSampledPastTimeLimit = 0;
   std::size_t PointSamples = 0;      ///< accurate point irradiance evaluations
   double Seconds = 0.0;
   /// Of Seconds: finding the discontinuities and triangulating the leaves

@@ -81,6 +81,14 @@ SolverProduct HierarchicalMethod::Product(const ProgressCallback& progress) cons
     return none;
   }
   SolverProduct product = DiscontinuityMeshProduct(this->Mesh, *this->SceneRef);
+  if (this->Mesh.LeavesPastTimeLimit > 0 || this->Mesh.LeavesSampledPastTimeLimit > 0)
+  {
+    product.Warnings.push_back("discontinuity meshing reached its time limit (" +
+      std::to_string(this->Meshing.MaxSeconds) + " s): " + std::to_string(this->Mesh.LeavesPastTimeLimit) +
+      " leaves were meshed without their discontinuities (one interpolant each), " +
+      std::to_string(this->Mesh.LeavesSampledPastTimeLimit) +
+      " sampled with their partially visible links' means (not through the blockers)");
+  }
   if (this->Mesh.LeavesTriangulationFailed > 0)
   {
     product.Warnings.push_back(std::to_string(this->Mesh.LeavesTriangulationFailed) +
@@ -119,7 +127,7 @@ SolverProduct DiscontinuityMeshProduct(const DiscontinuityMesh& mesh, const Scen
       }
     }
     const Material& m = scene.Materials[mesh.SourceTriangle[t]];
-    const RGB h = q.Mean();
+    const RGB h = NonNegative(q.Mean()); // samples >= 0; the mean from the coefficients a rounding off
     irradiance.SetRGB(t, h);
     radiosity.SetRGB(t, m.Emission + m.Reflectance * h);
     reflectance.SetRGB(t, m.Reflectance);

@@ -380,9 +380,11 @@ void HierarchicalRadiosity::StoreLeafIrradiance()
   ElementMesh& mesh = *this->Elements;
   for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
   {
+    // Aitken's extrapolated tail can leave an unlit leaf a rounding below 0.
+    const RGB h = NonNegative(this->NodeIrradiance[e]);
     ElementSamples& s = mesh[e].Irradiance;
-    s.Corner = { this->NodeIrradiance[e], this->NodeIrradiance[e], this->NodeIrradiance[e] };
-    s.Centre = this->NodeIrradiance[e];
+    s.Corner = { h, h, h };
+    s.Centre = h;
   }
 }
 

@@ -329,9 +329,17 @@ void PointHierarchy::Search(int level, std::uint32_t group, const Vec3& c, doubl
   matches.clear();
   const double q[3] = { c.x, c.y, c.z };
   const double far = index.MaxRadius + reach;
+  // Unsorted: the search radius is the level's largest support, so a scene
+  // of many objects (one group each) or one wide point returns many times
+  // the matches kept, and sorting them all was 45% of a gather on a
+  // 115-object engine. Only the kept ones are sorted, nearest first (ties by
+  // index, so that the order does not depend on the sort).
   nanoflann::SearchParams params;
-  params.sorted = sorted;
+  params.sorted = false;
   index.KdTree->radiusSearch(q, far * far, matches, params);
+  const std::size_t first = out.size();
+  thread_local std::vector<std::pair<double, std::uint32_t>> kept;
+  kept.clear();
   for (const auto& m : matches)
   {
     const std::size_t j = index.Points.Global(m.first);
@@ -339,8 +347,17 @@ void PointHierarchy::Search(int level, std::uint32_t group, const Vec3& c, doubl
     const double r = p.Radius + reach;
     if (p.Group == group && m.second < r * r)
     {
-      out.push_back(static_cast<std::uint32_t>(j));
+      kept.emplace_back(m.second, static_cast<std::uint32_t>(j));
     }
+  }
+  if (sorted)
+  {
+    std::sort(kept.begin(), kept.end());
+  }
+  out.resize(first + kept.size());
+  for (std::size_t k = 0; k < kept.size(); ++k)
+  {
+    out[first + k] = kept[k].second;
   }
 }
 } // namespace radiosity

@@ -39,6 +39,7 @@
 #include <functional>
 #include "Radiosity/Common/WorkShare.h"
 
+#include <chrono>
 #include <memory>
 #include <vector>
 
@@ -205,6 +206,10 @@ private:
   SolutionMesh SampledSurface(const TileSampler& value, const std::vector<char>* keep = nullptr) const;
   std::vector<std::uint32_t> Emitters;
   std::vector<unsigned char> Touched; ///< per point: gathered to at least once
+  /// MaxTimeSeconds from the start of Solve, while it runs: Refine stops
+  /// refining a bounce at it (its finer levels keep the coarser fit).
+  bool HasDeadline = false;
+  std::chrono::steady_clock::time_point Deadline{};
   /// The lights' and the sky's direct irradiance at the points DirectAt
   /// computed (LightKnown), for their own fit without a second quadrature.
   mutable std::vector<RGB> LightValue;

@@ -82,8 +82,10 @@ std::vector<StandardScene> StandardScenes(const std::string& bunnyJs)
   };
   if (!bunnyJs.empty())
   {
+    scenes.push_back({ "bunny-4k", [bunnyJs] { return MakeBunnyRoom(ReadNpmBunny(bunnyJs), 0); },
+      CentroidSample, true, false });
     scenes.push_back({ "bunny-235k", [bunnyJs] { return MakeBunnyRoom(ReadNpmBunny(bunnyJs), 3); },
-      CentroidSample, true });
+      CentroidSample, true, false, false });
   }
   return scenes;
 }

@@ -149,3 +149,41 @@ TEST(MeshlessRadiosity, SurfaceOfKeptTrianglesIsTheWholeSurfacesThere)
   EXPECT_GT(kept, 0u);
   EXPECT_GT(zero, 0u); // elements of neither a kept triangle nor its neighbours
 }
+
+TEST(MeshlessRadiosity, TimeLimitStopsRefiningInsideABounce)
+{
+  // A limit already past when the solve starts: the direct light and the
+  // first bounce keep their coarsest level only (always whole), every finer
+  // wave is left at that fit, and the solve stops after the bounce with the
+  // time limit. A whole bounce of a large scene had taken 30 s past a 5 s limit.
+  const Scene box = MakeCornellBox();
+  MeshlessOptions options;
+  options.MaxTimeSeconds = 1e-9;
+  MeshlessRadiosity limited(box, options);
+  const SolverStatistics stats = limited.Solve();
+  const MeshlessStatistics& t = limited.Statistics();
+  EXPECT_EQ(stats.Stop, StopReason::TimeLimit);
+  EXPECT_EQ(stats.Iterations, 1);
+  EXPECT_EQ(t.GatherOperations, 2 * t.CoarsestSamples) << t.CoarsestSamples << " coarsest samples";
+  MeshlessOptions oneBounce; // the same bounces, every level refined
+  oneBounce.MaxBounces = 1;
+  MeshlessRadiosity whole(box, oneBounce);
+  whole.Solve();
+  EXPECT_GT(whole.Statistics().GatherOperations, 4 * t.GatherOperations);
+  // The coarse answer is an answer: finite, non-negative, and near the
+  // refined solve of as many bounces on average.
+  const std::vector<Probe> probes = Centroids(box, 1);
+  const std::vector<RGB> coarse = limited.Evaluate(probes), fine = whole.Evaluate(probes);
+  double sumCoarse = 0.0, sumFine = 0.0;
+  for (std::size_t i = 0; i < probes.size(); ++i)
+  {
+    ASSERT_TRUE(std::isfinite(Luminance(coarse[i])) && MaxComponent(-coarse[i]) <= 0.0) << "probe " << i;
+    sumCoarse += Luminance(coarse[i]);
+    sumFine += Luminance(fine[i]);
+  }
+  std::cout << "Cornell box past the time limit: " << t.GatherOperations << " gathers (whole: "
+            << whole.Statistics().GatherOperations << "), mean probe irradiance " << sumCoarse / sumFine
+            << " of the whole solve's\n";
+  // Measured: 368 gathers against 6,016, mean 0.908 of the refined solve's.
+  EXPECT_NEAR(sumCoarse / sumFine, 1.0, 0.15);
+}
