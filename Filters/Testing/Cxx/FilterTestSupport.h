@@ -2,18 +2,44 @@
 #ifndef FilterTestSupport_h
 #define FilterTestSupport_h
 
+#include "vtkDataArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkRadiosityView.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
 
 namespace FilterTestSupport
 {
+/// The largest difference of two outputs' point `Irradiance`, over the
+/// second's peak (1e300 when either lacks it or their sizes differ).
+inline double RelativeDifference(vtkPolyData* a, vtkPolyData* b)
+{
+  vtkDataArray* x = a->GetPointData()->GetArray("Irradiance");
+  vtkDataArray* y = b->GetPointData()->GetArray("Irradiance");
+  if (!x || !y || x->GetNumberOfTuples() != y->GetNumberOfTuples() || x->GetNumberOfTuples() == 0)
+  {
+    return 1e300;
+  }
+  double peak = 0.0, worst = 0.0;
+  for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      peak = std::max(peak, std::fabs(y->GetComponent(i, c)));
+      worst = std::max(worst, std::fabs(x->GetComponent(i, c) - y->GetComponent(i, c)));
+    }
+  }
+  return peak > 0 ? worst / peak : 1e300;
+}
+
 // `ok`, reporting `what` on stderr when it is false: a test runs every
 // check and fails at the end if any failed.
 inline bool Check(bool ok, const std::string& what)

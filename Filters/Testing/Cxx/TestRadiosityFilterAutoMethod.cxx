@@ -31,6 +31,7 @@
 #include <string>
 
 using FilterTestSupport::Check;
+using FilterTestSupport::RelativeDifference;
 
 namespace
 {
@@ -38,27 +39,6 @@ std::string ProductKind(vtkRadiosityFilter* filter)
 {
   auto kind = vtkStringArray::SafeDownCast(filter->GetOutput(1)->GetFieldData()->GetAbstractArray("ProductKind"));
   return kind && kind->GetNumberOfValues() > 0 ? kind->GetValue(0) : std::string("(none)");
-}
-
-/// The largest difference of two outputs' point `Irradiance`, over the second's peak.
-double RelativeDifference(vtkPolyData* a, vtkPolyData* b)
-{
-  vtkDataArray* x = a->GetPointData()->GetArray("Irradiance");
-  vtkDataArray* y = b->GetPointData()->GetArray("Irradiance");
-  if (!x || !y || x->GetNumberOfTuples() != y->GetNumberOfTuples() || x->GetNumberOfTuples() == 0)
-  {
-    return 1e300;
-  }
-  double peak = 0.0, worst = 0.0;
-  for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      peak = std::max(peak, std::fabs(y->GetComponent(i, c)));
-      worst = std::max(worst, std::fabs(x->GetComponent(i, c) - y->GetComponent(i, c)));
-    }
-  }
-  return peak > 0 ? worst / peak : 1e300;
 }
 
 /// `input` solved with Auto and with `named`: the method chosen, the product

@@ -24,33 +24,13 @@
 #include <string>
 
 using FilterTestSupport::Check;
+using FilterTestSupport::RelativeDifference;
 
 namespace
 {
 bool StartsWith(const std::string& text, const std::string& prefix)
 {
   return text.compare(0, prefix.size(), prefix) == 0;
-}
-
-/// The largest difference of the outputs' point `Irradiance`, over the second's peak.
-double RelativeDifference(vtkPolyData* a, vtkPolyData* b)
-{
-  vtkDataArray* x = a->GetPointData()->GetArray("Irradiance");
-  vtkDataArray* y = b->GetPointData()->GetArray("Irradiance");
-  if (!x || !y || x->GetNumberOfTuples() != y->GetNumberOfTuples() || x->GetNumberOfTuples() == 0)
-  {
-    return 1e300;
-  }
-  double peak = 0.0, worst = 0.0;
-  for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      peak = std::max(peak, std::fabs(y->GetComponent(i, c)));
-      worst = std::max(worst, std::fabs(x->GetComponent(i, c) - y->GetComponent(i, c)));
-    }
-  }
-  return peak > 0 ? worst / peak : 1e300;
 }
 
 /// A fresh meshless solve of `input` with `light` (may be null), for comparison.
