@@ -12,6 +12,8 @@
 // - a composite mapper's blocks: a hidden block left out, a block colour
 //   replacing the property's;
 // - a wireframe actor and a headlight are not gathered;
+// - Method Auto (the default) solves this glossy scene by face cluster
+//   radiosity and draws it with the vector irradiance mapper;
 // - textures: a classic texture (as vtkOBJImporter sets map_Kd), two texels
 //   red and blue, clamped, bilinear, over a quad's texture coordinates
 //   [0, 1]^2: its triangles' mean red worked out by hand (red falls
@@ -22,6 +24,8 @@
 //   (128, 64, 255) -> (0.2158605, 0.0512695, 1 clamped to 0.95), and
 //   (255, 128, 0) x EmissiveFactor 1 x LightScale pi, to 1e-6.
 #include "vtkActor.h"
+#include "vtkRadiosityPassDisplay.h"
+#include "vtkVectorIrradianceMapper.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataDisplayAttributes.h"
@@ -356,5 +360,23 @@ int TestRadiosityPassMaterials(int, char*[])
   ok &= Check(printed.str().find("NumberOfSolves: 1") != std::string::npos &&
       printed.str().find("Solvable: wireframe") != std::string::npos,
     "PrintSelf");
+
+  // Method Auto, the pass's default: actor 0 is glossy, so face cluster
+  // radiosity (radiosity::ChooseMethod), drawn by the vector irradiance
+  // mapper that shows the glossy part.
+  vtkNew<vtkRadiosityPass> chosen;
+  chosen->GetFilter()->SetNumberOfThreads(2);
+  ok &= Check(chosen->GetMethod() == vtkRadiosityFilter::Auto, "the pass's default method is Auto");
+  ok &= Check(chosen->UpdateSolution(renderer), "Auto: UpdateSolution failed");
+  ok &= Check(chosen->GetFilter()->GetResolvedMethod() == vtkRadiosityFilter::FaceCluster &&
+      chosen->GetFilter()->GetMethodChoice().find("glossy") != std::string::npos,
+    std::string("Auto chose ") + vtkRadiosityFilter::GetMethodName(chosen->GetFilter()->GetResolvedMethod()) +
+      " (" + chosen->GetFilter()->GetMethodChoice() + ")");
+  vtkActor* drawn = chosen->GetDisplay()->GetActor();
+  ok &= Check(drawn && vtkVectorIrradianceMapper::SafeDownCast(drawn->GetMapper()),
+    "Auto's face cluster solution is not drawn by the vector irradiance mapper");
+  std::ostringstream chosenPrinted;
+  chosen->Print(chosenPrinted);
+  ok &= Check(chosenPrinted.str().find("ResolvedMethod: facecluster") != std::string::npos, "PrintSelf: ResolvedMethod");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
