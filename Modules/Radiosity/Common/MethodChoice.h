@@ -17,10 +17,10 @@
 //     within 1.5x of the lowest error any method reaches in the same time.
 //  3. More: meshless radiosity (Lehtinen et al. 2007), whose cost follows
 //     the lighting, not the tessellation. On the bunny room of 3,868
-//     triangles it reaches RMS 3.5e-2 in 12.6 s, where clustered hierarchical
-//     radiosity reaches 4.5e-2 (constant leaves, 8.7 s; 12.8 s meshed) and
-//     progressive refinement 5.3e-2 in 25 s; on the 235k-triangle room 2.8e-2
-//     in 11.6 s against progressive's 7.1e-2 after 60 s (clustered
+//     triangles it reaches RMS 3.5e-2 in 8.6 s, where clustered hierarchical
+//     radiosity reaches 4.5e-2 (constant leaves, 9.5 s; 14.0 s meshed) and
+//     progressive refinement 5.3e-2 in 27.5 s; on the 235k-triangle room
+//     2.8e-2 in 8.0 s against progressive's 7.1e-2 after 60 s (clustered
 //     hierarchical radiosity takes minutes there).
 #ifndef Radiosity_MethodChoice_h
 #define Radiosity_MethodChoice_h
