@@ -526,7 +526,7 @@ int vtkRadiosityFilter::ExecuteRequest(
     relighting->SetName("Relighting");
     relighting->InsertNextValue(this->RelightingStatus);
     output->GetFieldData()->AddArray(relighting);
-    // The method solved with, and for Auto why (ParaView's Information panel shows it).
+    // The method solved with, and for Auto why (ParaView shows it among the field data, in the spreadsheet view).
     vtkNew<vtkStringArray> method;
     method->SetName("MethodChoice");
     method->InsertNextValue(std::string(GetMethodName(this->ResolvedMethod)) +
