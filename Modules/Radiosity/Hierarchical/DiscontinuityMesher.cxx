@@ -3,6 +3,7 @@
 #include "Radiosity/Hierarchical/ConstrainedTriangulation.h"
 #include "Radiosity/Hierarchical/CriticalSurfaces.h"
 #include "Radiosity/Hierarchical/HardShadowEdges.h"
+#include "Radiosity/Hierarchical/LinkChain.h"
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/MeshProbeTracker.h"
 #include "Radiosity/Hierarchical/Shaft.h"
@@ -11,9 +12,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include <atomic>
-
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -28,66 +28,6 @@ std::uint64_t EdgeKey(std::uint32_t a, std::uint32_t b)
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
 }
 
-/// One source that irradiates a leaf: a link of the leaf or of an ancestor.
-struct ChainSource
-{
-  TriangleCorners Polygon;
-  RGB Radiosity;
-  std::vector<BlockerPolygon> Blockers; ///< empty for unoccluded links; coplanar pairs merged
-  const HierarchicalLink* Link;
-  /// A link whose blockers were cut: its sampled visible fraction scales the
-  /// unoccluded form factor (HierarchicalLink::BlockersCut).
-  double Visible = 1.0;
-  /// Past the mesher's time limit a partial link brings its receiver-area
-  /// mean (HierarchicalLink::Factor: the solve's own value) to every point,
-  /// instead of the exact backprojection through its blockers.
-  bool Constant = false;
-};
-
-std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32_t leaf, bool constantPartial = false)
-{
-  const ElementMesh& mesh = s.Mesh();
-  const Scene& scene = s.GetScene();
-  const TriangleCorners receiver = s.Corners(leaf);
-  std::vector<ChainSource> chain;
-  for (std::int32_t a = static_cast<std::int32_t>(leaf); a >= 0;
-       a = mesh[static_cast<std::uint32_t>(a)].Parent)
-  {
-    for (std::uint32_t i : s.LinksOf(static_cast<std::uint32_t>(a)))
-    {
-      const HierarchicalLink& l = s.Links()[i];
-      if (l.Kind == HierarchicalLink::Hidden || !(MaxComponent(s.Radiosity(l.Source)) > 0))
-      {
-        continue;
-      }
-      ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), {}, &l, l.VisibleFraction };
-      if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut && constantPartial)
-      {
-        c.Constant = true;
-      }
-      else if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut)
-      {
-        const Shaft shaft(receiver, c.Polygon);
-        std::vector<TriangleCorners> corners;
-        std::vector<std::array<std::uint32_t, 3>> ids;
-        for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
-        {
-          const std::uint32_t b = s.Blockers(l)[k];
-          const TriangleCorners triangle = { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) };
-          if (!shaft.Excludes(triangle))
-          {
-            corners.push_back(triangle);
-            ids.push_back(scene.Triangles[b].V);
-          }
-        }
-        c.Blockers = MergeCoplanarPairs(corners, ids);
-      }
-      chain.push_back(std::move(c));
-    }
-  }
-  return chain;
-}
-
 /// On a leaf's boundary a sample can lie in a neighbour's plane (a contact
 /// edge, the shared edge of a tessellated sphere), where the form factor of
 /// that neighbour jumps to 0; the interpolant needs the limit from inside the
@@ -97,23 +37,6 @@ Vec3 Inside(const Vec3& x, const Vec3& centroid)
   return x + 1e-7 * (centroid - x);
 }
 
-RGB ChainIrradiance(const std::vector<ChainSource>& chain, const Vec3& x, const Vec3& n)
-{
-  RGB e(0.0);
-  for (const ChainSource& c : chain)
-  {
-    if (c.Constant)
-    {
-      e += c.Link->Factor * c.Radiosity;
-      continue;
-    }
-    const double f = c.Blockers.empty()
-      ? PointToPolygonFormFactor(x, n, c.Polygon.data(), 3)
-      : VisibleFormFactor(x, n, c.Polygon, c.Blockers.data(), c.Blockers.size());
-    e += (c.Visible * f) * c.Radiosity;
-  }
-  return e;
-}
 
 /// Which edges of the input are silhouettes: an edge shared with a coplanar
 /// triangle of the same emission (the diagonal of a quad) bounds nothing.
