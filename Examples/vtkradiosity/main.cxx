@@ -230,7 +230,6 @@ int RunSolve(const SolveArguments& args)
   }
   cli::ProgressBar bar;
   RunRadiosityFilter(target, args, probes, reference, referenceKind, lights, bar, phases);
-  const nlohmann::json methodChoice = MethodChoiceReport(args.Method, filter);
   if (autoMethod)
   {
     std::cerr << "method auto: " << vtkRadiosityFilter::GetMethodName(filter->GetResolvedMethod()) << " ("
@@ -277,7 +276,7 @@ int RunSolve(const SolveArguments& args)
     const Scene& scene = filter->GetScene();
     nlohmann::json report;
     report["method"] = meshless ? "meshless" : faceCluster ? "facecluster" : "progressive";
-    report["method_choice"] = methodChoice;
+    report["method_choice"] = MethodChoiceReport(args.Method, filter);
     report["parameters"] = { { "tolerance", filter->GetTolerance() },
       { "max_iterations", filter->GetMaxIterations() }, { "max_time_s", filter->GetMaxTime() },
       { "threads", filter->GetNumberOfThreads() }, { "overshooting", filter->GetOvershooting() },
