@@ -174,19 +174,21 @@ std::int32_t FaceClusterRadiosity::NewElement(
 
 bool FaceClusterRadiosity::CanSubdivide(const FaceClusterElement& e) const
 {
-  return !e.Data.IsLeaf() || (e.IsTriangle() && e.Bisections < this->Settings.MaxBisections && e.Data.Area > 0.0f);
-}
-
-bool FaceClusterRadiosity::CanSubdivideForLight(const FaceClusterElement& e) const
-{
-  const int most = std::max(this->Settings.MaxBisections, this->Settings.MaxLightBisections);
+  // The lights' direct light (the first iteration) may halve receivers as
+  // far as MaxLightBisections. Not the emitting triangles': halving for
+  // their first shot alone left the closed room of reflectance 0.5 at 0.8%
+  // of the exact (7.7e-4 without), its later bounces accepted on the whole
+  // triangles while the first was fitted on the parts.
+  const int most = this->Lights && this->Iteration == 0
+    ? std::max(this->Settings.MaxBisections, this->Settings.MaxLightBisections)
+    : this->Settings.MaxBisections;
   return !e.Data.IsLeaf() || (e.IsTriangle() && e.Bisections < most && e.Data.Area > 0.0f);
 }
 
 void FaceClusterRadiosity::Subdivide(std::int32_t e)
 {
   if (!this->Nodes[e].IsLeaf() ||
-    !(this->CanSubdivide(this->Nodes[e]) || (this->Lights && this->Iteration == 0 && this->CanSubdivideForLight(this->Nodes[e]))))
+    !this->CanSubdivide(this->Nodes[e]))
   {
     return;
   }
@@ -297,11 +299,13 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
   // The thread limit applies to this solve alone (a task arena of its own).
   return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
     const Scene& scene = this->GetScene();
-    double emitted = 0.0, brightest = 0.0;
+    double emitted = 0.0, brightest = 0.0, reflected = 0.0, area = 0.0;
     for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
     {
       emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
       brightest = std::max(brightest, Mean(scene.Materials[t].Emission));
+      reflected += Mean(scene.Materials[t].Reflectance) * scene.Area(t);
+      area += scene.Area(t);
     }
     this->Lights.reset();
     if (!scene.Lighting.Empty())
@@ -322,6 +326,12 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       return stats;
     }
     this->Epsilon = this->Settings.TransferTolerance * emitted;
+    // Below the input triangles: an accepted transfer's fit error comes
+    // back at every bounce, 1 / (1 - rho) times in all (a closed room of
+    // reflectance 0.99: 100 times), so the tolerance is scaled by 1 - rho,
+    // rho the scene's area-weighted mean reflectance.
+    const double meanReflectance = area > 0.0 ? std::clamp(reflected / area, 0.0, 1.0) : 0.0;
+    this->PartEpsilon = this->Settings.SubdivisionTolerance * emitted * (1.0 - meanReflectance);
     for (std::uint32_t root : this->Clusters->Roots())
     {
       this->Top.push_back(this->NewElement(root, -1));

@@ -49,12 +49,23 @@ struct FaceClusterSettings
   double MaxTimeSeconds = 0.0; ///< 0: no limit
   int Threads = 0;
   /// How many times an input triangle may be halved (longest-edge
-  /// bisection) below the face cluster hierarchy's leaves when a transfer
-  /// between two leaves is still too inaccurate; 0 keeps the paper's
-  /// leaves (the default: the paper's method, whose cost does not grow with
-  /// the input). A coarse input (a contact edge, slivers) otherwise keeps
-  /// one expansion per triangle whatever the light.
+  /// bisection) below the face cluster hierarchy's leaves where its basis
+  /// cannot follow the light it receives (SubdivisionTolerance); 0 keeps
+  /// the paper's leaves, whose cost does not grow with the input. A coarse
+  /// input (the Cornell box's 32 triangles, a contact edge, a penumbra on a
+  /// large floor) otherwise keeps one expansion per triangle whatever the
+  /// light: 11.8% of the peak on the Cornell box, 22% on the exact
+  /// penumbra (bench/results/facecluster.md).
   int MaxBisections = 0;
+  /// Transfer error (W) accepted below the input triangles, relative to the
+  /// scene's emitted power and scaled by 1 - rho (rho the scene's mean
+  /// reflectance: an accepted error comes back at every bounce): a
+  /// receiver is halved where its fit error exceeds it, and a halved
+  /// emitter sends from its parts where its radiosity's spread over them
+  /// would. Coarser than TransferTolerance, which refines the clusters:
+  /// at 1e-5 the Cornell box took 8 s for 1.5% of the peak, at this value
+  /// 3.5 s for 1.7%.
+  double SubdivisionTolerance = 2.5e-4;
   /// Bytes the hierarchy and the elements may use; 0: 75% of physical
   /// memory. Checked before the hierarchy is built and as elements are made.
   double MemoryBudgetBytes = 0.0;
@@ -168,6 +179,7 @@ private:
   FaceClusterStatistics Stats;
   int Iteration = 0;
   double Epsilon = 0.0;
+  double PartEpsilon = 0.0; ///< SubdivisionTolerance in W
   double Budget = 0.0;        ///< bytes (MemoryBudgetBytes resolved)
   double BytesPerElement = 0.0; ///< an element with its basis coefficients
 
@@ -183,9 +195,10 @@ private:
   /// An element of `cluster`, or with `corners`, of a part of that
   /// triangle (cluster) below the input.
   std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent, const Vec3* corners = nullptr);
+  /// Whether e may be subdivided: a cluster always; a triangle or a part
+  /// of one up to MaxBisections halvings, MaxLightBisections for the
+  /// lights' direct light (the first iteration of a scene with lights).
   bool CanSubdivide(const FaceClusterElement& e) const;
-  /// CanSubdivide, with MaxLightBisections for the lights' refinement.
-  bool CanSubdivideForLight(const FaceClusterElement& e) const;
   void Subdivide(std::int32_t e);
   bool HasUnshot(const FaceClusterElement& e) const;
   /// The largest coefficient of e's unshot radiosity (any channel).

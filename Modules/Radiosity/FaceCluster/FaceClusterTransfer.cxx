@@ -140,6 +140,30 @@ double VisibleFraction(
   }
   return total > 0.0 ? visible / total : 1.0;
 }
+// The blockers of each source triangle (`corners`, three per triangle) as
+// seen from receiver triangle `receiver` (its own corners, or its input
+// triangle's), at most MaxExactBlockers each; false when there are more
+// (the sampled fraction is used then).
+bool ExactFractionBlockers(const TransferEnd& receiver, const TransferEnd& emitter,
+  const std::vector<Vec3>& corners, const FaceClusterVisibility& visibility,
+  std::vector<std::vector<TriangleCorners>>& blockers)
+{
+  constexpr std::size_t MaxExactBlockers = 64;
+  const Scene& scene = visibility.Hierarchy().GetScene();
+  const TriangleCorners r = receiver.Corners
+    ? TriangleCorners{ receiver.Corners[0], receiver.Corners[1], receiver.Corners[2] }
+    : TriangleCorners{ scene.Vertex(receiver.Id, 0), scene.Vertex(receiver.Id, 1), scene.Vertex(receiver.Id, 2) };
+  blockers.assign(corners.size() / 3, {});
+  for (std::size_t t = 0; t < blockers.size(); ++t)
+  {
+    const TriangleCorners source{ corners[3 * t], corners[3 * t + 1], corners[3 * t + 2] };
+    if (!visibility.ShaftBlockers(r, source, receiver.Id, emitter.Id, MaxExactBlockers, blockers[t]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
 }
 
 Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter,
@@ -278,11 +302,33 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
         corners.insert(corners.end(), { scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) });
       }
     }
+    // A receiver that is one triangle (or a part of one) and few blockers:
+    // the fraction exactly, by backprojection (Hardt & Teller, section 5:
+    // the source minus the blockers' shadows, Lambert's formula over the
+    // visible fragments; Backprojection.h), per source triangle.
+    std::vector<std::vector<TriangleCorners>> blockers;
+    const bool exactFraction = rule.VisibilityThreshold <= 0.0 &&
+      (receiver.Corners || ri.IsLeaf()) && ExactFractionBlockers(receiver, emitter, corners, visibility, blockers);
     tbb::parallel_for(std::size_t(0), np + nc, [&](std::size_t p) {
       const Vec3& x = p < np ? rr.Points[p] : rr.Controls[p - np];
       const Vec3& normal = p < np ? rr.Normals[p] : rr.ControlNormals[p - np];
-      const double v = VisibleFraction(x, normal, corners.data(), corners.size() / 3,
-        [&](const Vec3& y) { return visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing); });
+      double v = 0.0;
+      if (exactFraction)
+      {
+        double visible = 0.0, total = 0.0;
+        for (std::size_t t = 0; t < blockers.size(); ++t)
+        {
+          const TriangleCorners source{ corners[3 * t], corners[3 * t + 1], corners[3 * t + 2] };
+          total += VisibleFormFactor(x, normal, source, static_cast<const TriangleCorners*>(nullptr), 0);
+          visible += VisibleFormFactor(x, normal, source, blockers[t].data(), blockers[t].size());
+        }
+        v = total > 0.0 ? std::clamp(visible / total, 0.0, 1.0) : 1.0;
+      }
+      else
+      {
+        v = VisibleFraction(x, normal, corners.data(), corners.size() / 3,
+          [&](const Vec3& y) { return visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing); });
+      }
       atNode[p * nb] = v * exactAt[p];
     });
   }

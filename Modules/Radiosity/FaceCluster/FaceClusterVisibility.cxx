@@ -1,5 +1,7 @@
 #include "Radiosity/FaceCluster/FaceClusterVisibility.h"
 
+#include "Radiosity/Hierarchical/Shaft.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -21,6 +23,23 @@ struct Range
     return first < this->End && first + count > this->First;
   }
 };
+
+// The triangle ranges of the receiver's and the emitter's own clusters,
+// which do not occlude between them; how many.
+int OwnRanges(const FaceClusterHierarchy& h, std::uint32_t receiver, std::uint32_t emitter, Range* skip)
+{
+  int skips = 0;
+  for (std::uint32_t id : { receiver, emitter })
+  {
+    if (id != FaceCluster::None)
+    {
+      const FaceCluster* c = h.InternalCluster(id);
+      const std::uint32_t first = c ? c->First : h.TrianglePosition(id);
+      skip[skips++] = { first, first + (c ? c->Count : 1u) };
+    }
+  }
+  return skips;
+}
 }
 
 bool LineHitsTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, const Vec3& d, double& t)
@@ -108,16 +127,7 @@ double FaceClusterVisibility::Transmittance(const Vec3& x, const Vec3& y, std::u
   const double t0 = 1e-7, t1 = 1.0 - 1e-7;
   const Vec3 direction = d / length;
   Range skip[2];
-  int skips = 0;
-  for (std::uint32_t id : { receiver, emitter })
-  {
-    if (id != FaceCluster::None)
-    {
-      const FaceCluster* c = h.InternalCluster(id);
-      const std::uint32_t first = c ? c->First : h.TrianglePosition(id);
-      skip[skips++] = { first, first + (c ? c->Count : 1u) };
-    }
-  }
+  const int skips = OwnRanges(h, receiver, emitter, skip);
   double transmittance = 1.0;
   thread_local std::vector<std::uint32_t> stack;
   stack.assign(h.Roots().begin(), h.Roots().end());
@@ -178,5 +188,87 @@ double FaceClusterVisibility::Transmittance(const Vec3& x, const Vec3& y, std::u
     stack.push_back(c->Child[1]);
   }
   return transmittance;
+}
+
+bool FaceClusterVisibility::ShaftBlockers(const TriangleCorners& receiver, const TriangleCorners& source,
+  std::uint32_t receiverId, std::uint32_t emitterId, std::size_t limit,
+  std::vector<TriangleCorners>& out) const
+{
+  const FaceClusterHierarchy& h = this->Source;
+  const Scene& scene = h.GetScene();
+  const Shaft shaft(receiver, source);
+  Range skip[2];
+  const int skips = OwnRanges(h, receiverId, emitterId, skip);
+  const Vec3 nr = glm::cross(receiver[1] - receiver[0], receiver[2] - receiver[0]);
+  const Vec3 ns = glm::cross(source[1] - source[0], source[2] - source[0]);
+  double scale = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    scale = std::max({ scale, glm::length(receiver[k] - receiver[0]), glm::length(source[k] - receiver[0]) });
+  }
+  // A vertex in front of a plane by more than this (relative to the shaft's
+  // size: a blocker touching the receiver's plane along an edge hides
+  // nothing in front of it).
+  const double tolerance = 1e-9 * scale;
+  const double lr = glm::length(nr), ls = glm::length(ns);
+  if (!(lr > 0.0) || !(ls > 0.0))
+  {
+    return true;
+  }
+  thread_local std::vector<std::uint32_t> stack;
+  stack.assign(h.Roots().begin(), h.Roots().end());
+  while (!stack.empty())
+  {
+    const std::uint32_t id = stack.back();
+    stack.pop_back();
+    const FaceCluster* c = h.InternalCluster(id);
+    const std::uint32_t first = c ? c->First : h.TrianglePosition(id);
+    const std::uint32_t count = c ? c->Count : 1u;
+    bool inside = false;
+    for (int k = 0; k < skips; ++k)
+    {
+      inside = inside || skip[k].Contains(first, count);
+    }
+    if (inside)
+    {
+      continue;
+    }
+    if (c)
+    {
+      Vec3 corners[8];
+      for (int k = 0; k < 8; ++k)
+      {
+        corners[k] = Vec3(c->Centre);
+        for (int j = 0; j < 3; ++j)
+        {
+          // A little slack: flat boxes have zero thickness.
+          const double half = double(c->HalfSize[j]) * (1.0 + 1e-6) + tolerance;
+          corners[k] += ((k >> j) & 1 ? half : -half) * Vec3(c->Axis[j]);
+        }
+      }
+      if (!shaft.Excludes(corners, 8))
+      {
+        stack.push_back(c->Child[0]);
+        stack.push_back(c->Child[1]);
+      }
+      continue;
+    }
+    const TriangleCorners t{ scene.Vertex(id, 0), scene.Vertex(id, 1), scene.Vertex(id, 2) };
+    bool frontR = false, frontS = false;
+    for (const Vec3& v : t)
+    {
+      frontR = frontR || glm::dot(v - receiver[0], nr) > tolerance * lr;
+      frontS = frontS || glm::dot(v - source[0], ns) > tolerance * ls;
+    }
+    if (frontR && frontS && !shaft.Excludes(t))
+    {
+      if (out.size() >= limit)
+      {
+        return false;
+      }
+      out.push_back(t);
+    }
+  }
+  return true;
 }
 } // namespace radiosity

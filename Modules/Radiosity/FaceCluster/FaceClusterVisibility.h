@@ -14,6 +14,9 @@
 #define Radiosity_FaceClusterVisibility_h
 
 #include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
+#include "Radiosity/Hierarchical/Backprojection.h"
+
+#include <vector>
 
 namespace radiosity
 {
@@ -30,6 +33,18 @@ public:
    */
   double Transmittance(const Vec3& x, const Vec3& y, std::uint32_t receiver, std::uint32_t emitter,
     double shadowThreshold) const;
+
+  /**
+   * The triangles that may hide part of triangle `source` from a point of
+   * triangle `receiver`: shaft culling (Haines & Wallace 1991) down the
+   * hierarchy, each cluster's box tested against the shaft's planes, and a
+   * triangle kept when it meets the shaft with a vertex in front of both
+   * ends. The triangles of clusters `receiver` and `emitter` are skipped, as
+   * Transmittance skips them. False, with `out` incomplete, past `limit`.
+   */
+  bool ShaftBlockers(const TriangleCorners& receiver, const TriangleCorners& source,
+    std::uint32_t receiverId, std::uint32_t emitterId, std::size_t limit,
+    std::vector<TriangleCorners>& out) const;
 
   const FaceClusterHierarchy& Hierarchy() const { return this->Source; }
 

@@ -66,13 +66,20 @@ public:
     }
   }
 
-  bool Excludes(const TriangleCorners& b) const
+  bool Excludes(const TriangleCorners& b) const { return this->Excludes(b.data(), 3); }
+
+  /// Whether every one of the `count` points lies outside one face plane
+  /// (then nothing they span, a triangle or a box, meets the shaft).
+  bool Excludes(const Vec3* points, int count) const
   {
     for (int f = 0; f < this->Count; ++f)
     {
-      if (glm::dot(b[0], this->Normal[f]) > this->Offset[f] &&
-        glm::dot(b[1], this->Normal[f]) > this->Offset[f] &&
-        glm::dot(b[2], this->Normal[f]) > this->Offset[f])
+      bool outside = true;
+      for (int k = 0; k < count && outside; ++k)
+      {
+        outside = glm::dot(points[k], this->Normal[f]) > this->Offset[f];
+      }
+      if (outside)
       {
         return true;
       }

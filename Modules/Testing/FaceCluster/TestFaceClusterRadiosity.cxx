@@ -156,10 +156,12 @@ TEST(FaceClusterRadiosity, PenumbraFromTheEmittersVisibleFraction)
 {
   // The exact-penumbra scene of the benchmarks (a square lamp, a blocker, a
   // black floor: direct light only) with the receivers halved up to 4
-  // times: an emitter hidden in part takes its visible fraction from ~64
-  // stratified points (FaceClusterTransfer.cxx), not its 9 rule nodes.
-  // Measured: 3.8% of the peak at worst, 1.1% RMS (9.7% and 3.6% with the
-  // rule nodes); bound 5% and 1.5%.
+  // times: an emitter hidden in part from a receiver triangle takes its
+  // visible fraction exactly, by backprojecting the blockers in the shaft
+  // between them (FaceClusterTransfer.cxx, ExactFractionBlockers), not from
+  // its 9 rule nodes. Measured: 1.85% of the peak at worst, 0.56% RMS
+  // (9.7% and 3.6% with the rule nodes, 3.8% and 1.1% from ~64 stratified
+  // points); bound 2.5% and 0.8%.
   for (const StandardScene& standard : StandardScenes())
   {
     if (standard.Name != "shadow")
@@ -177,11 +179,55 @@ TEST(FaceClusterRadiosity, PenumbraFromTheEmittersVisibleFraction)
     solver.Solve();
     const auto errors = RelativeErrors(solver.Evaluate(probes), reference.Irradiance);
     std::cout << "penumbra: worst " << errors.Max << " RMS " << errors.Rms << " of the peak\n";
-    EXPECT_LT(errors.Max, 0.05);
-    EXPECT_LT(errors.Rms, 0.015);
+    EXPECT_LT(errors.Max, 0.025);
+    EXPECT_LT(errors.Rms, 0.008);
     return;
   }
   FAIL() << "no shadow scene among the standard scenes";
+}
+
+TEST(FaceClusterRadiosity, CoarseInputHalvedWithinTwoPercentAtEveryScale)
+{
+  // The coarse standard scenes (the Cornell box's 32 triangles against the
+  // path tracer; the exact penumbra and the contact edge against their
+  // closed forms) with receivers halved up to 5 times where their basis
+  // cannot follow the light (SubdivisionTolerance) and halved emitters
+  // sending from their parts, at 1e-3 m, 1 m and 1e3 m (the same emission:
+  // the same irradiance). Without halving: 11.8%, 21.8% and 5.9% of the
+  // peak. Measured (worst over the probes, every scale): Cornell 1.76%,
+  // penumbra 1.82%, contact 0.12%; bound 2% (the issue's), 0.3% for the
+  // contact. The three scales agree to 1e-5 of the peak at worst.
+  for (const StandardScene& standard : StandardScenes())
+  {
+    if (standard.Name != "cornell" && standard.Name != "shadow" && standard.Name != "contact")
+    {
+      continue;
+    }
+    const Scene unit = standard.Make();
+    const std::vector<Probe> unitProbes = standard.Probes ? standard.Probes(unit) : CentroidSample(unit);
+    const AnalyticReference reference = StandardReference(unit, unitProbes, 16384);
+    for (double scale : { 1e-3, 1.0, 1e3 })
+    {
+      Scene scene = unit;
+      std::vector<Probe> probes = unitProbes;
+      for (Vec3& p : scene.Points)
+      {
+        p *= scale;
+      }
+      for (Probe& p : probes)
+      {
+        p.Position *= scale;
+      }
+      FaceClusterSettings settings;
+      settings.MaxBisections = 5;
+      FaceClusterRadiosity solver(scene, settings);
+      EXPECT_EQ(solver.Solve().Stop, StopReason::Converged);
+      const auto errors = RelativeErrors(solver.Evaluate(probes), reference.Irradiance);
+      std::cout << standard.Name << " at " << scale << " m: " << solver.Statistics().LeafElements
+                << " leaves, worst " << errors.Max << " RMS " << errors.Rms << " of the peak\n";
+      EXPECT_LT(errors.Max, standard.Name == "contact" ? 0.003 : 0.02) << standard.Name << " at " << scale;
+    }
+  }
 }
 
 TEST(FaceClusterRadiosity, ConstantBasesArePlainFaceClusterRadiosity)
