@@ -57,6 +57,10 @@ bool vtkRadiosityFilter::RelightWith(std::shared_ptr<radiosity::RadiositySolver>
     std::ostringstream status;
     status << "relit: direct light " << m.RelightDirectSeconds << " s, transfer " << m.RelightIndirectSeconds
            << " s, " << m.RelightBounces << " bounces";
+    if (m.RelightRowsAdded > 0)
+    {
+      status << ", " << m.RelightRowsAdded << " receivers added to the transfer";
+    }
     this->RelightingStatus = status.str();
   }
   return true;

@@ -96,6 +96,11 @@ struct MeshlessStatistics
   double RelightDirectSeconds = 0.0;   ///< the new direct light, fitted
   double RelightIndirectSeconds = 0.0; ///< the transfer applied
   int RelightBounces = 0;
+  /// Receivers the last relight wanted that the transfer lacked, gathered
+  /// for it and kept (MeshlessTransfer::Indirect), and their time (part of
+  /// RelightIndirectSeconds).
+  std::size_t RelightRowsAdded = 0;
+  double RelightRowsAddedSeconds = 0.0;
 };
 
 class MeshlessRadiosity

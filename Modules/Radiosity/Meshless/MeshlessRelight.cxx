@@ -166,6 +166,16 @@ SolverStatistics MeshlessRadiosity::Relight(const Scene& lit, const ProgressCall
     }
     this->Stats.RelightIndirectSeconds = clock.Seconds() - this->Stats.RelightDirectSeconds;
     this->Stats.RelightBounces = series.Bounces;
+    this->Stats.RelightRowsAdded = series.RowsAdded;
+    this->Stats.RelightRowsAddedSeconds = series.RowsAddedSeconds;
+    if (series.RowsAdded > 0)
+    {
+      // The transfer grew: its figures as they are now.
+      this->Stats.TransferReceivers = this->Transfer->Receivers();
+      this->Stats.TransferEntries = this->Transfer->Entries();
+      this->Stats.TransferBytes = this->Transfer->MemoryBytes() + this->Lists->MemoryBytes() +
+        this->SkyMask.size() * sizeof(std::uint64_t);
+    }
     // The history: the direct light, then each bounce's magnitude.
     for (std::size_t k = 0; k < series.Magnitudes.size(); ++k)
     {

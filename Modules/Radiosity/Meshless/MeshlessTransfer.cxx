@@ -1,6 +1,7 @@
 #include "Radiosity/Meshless/MeshlessTransfer.h"
 
 #include "Radiosity/Common/MemoryBudget.h"
+#include "Radiosity/Common/Stopwatch.h"
 #include "Radiosity/Meshless/BounceSeries.h"
 #include "Radiosity/Meshless/MeshlessGather.h"
 #include "Radiosity/Meshless/MeshlessNeighbourhoods.h"
@@ -22,53 +23,17 @@ constexpr std::size_t RowsPerBlock = 2048;
 MeshlessTransfer::MeshlessTransfer(const Scene& scene, const PointHierarchy& points, const Visibility& rays,
   const MeshlessNeighbourhoods& lists, const MeshlessOptions& options, std::vector<std::uint32_t> receivers, const std::function<bool()>& keepGoing,
   double memoryBudgetBytes)
-  : Points(points)
+  : SourceScene(scene)
+  , Rays(rays)
+  , Lists(lists)
+  , Options(options)
+  , MemoryBudgetBytes(memoryBudgetBytes)
+  , Points(points)
   , Rows(std::move(receivers))
 {
   std::sort(this->Rows.begin(), this->Rows.end());
   this->Rows.erase(std::unique(this->Rows.begin(), this->Rows.end()), this->Rows.end());
   const auto& all = points.Points();
-  const int levels = points.NumberOfLevels();
-  this->LevelStart.assign(static_cast<std::size_t>(levels) + 1, this->Rows.size());
-  for (std::size_t r = this->Rows.size(); r-- > 0;)
-  {
-    this->LevelStart[all[this->Rows[r]].Level] = r;
-  }
-  for (int level = levels - 1; level >= 0; --level)
-  {
-    this->LevelStart[level] = std::min(this->LevelStart[level], this->LevelStart[level + 1]);
-  }
-  this->CoarseRows = levels > 0 ? this->LevelStart[1] : 0;
-  // Where each point sits in Rows (the fit's columns), or none.
-  std::vector<std::uint32_t> rowOf(all.size(), UINT32_MAX);
-  for (std::size_t r = 0; r < this->Rows.size(); ++r)
-  {
-    rowOf[this->Rows[r]] = static_cast<std::uint32_t>(r);
-  }
-
-  // The receiver oracle's neighbourhoods (MeshlessNeighbourhoods) in rows:
-  // a function that is not a row is never computed in a relit bounce.
-  {
-    const auto inRows = [&](auto list, std::vector<std::size_t>& start, std::vector<std::uint32_t>& items) {
-      for (std::uint32_t k : list)
-      {
-        if (rowOf[k] != UINT32_MAX)
-        {
-          items.push_back(rowOf[k]);
-        }
-      }
-      start.push_back(items.size());
-    };
-    this->NeighbourStart.assign(1, 0);
-    this->ChildStart.assign(1, 0);
-    this->AncestorStart.assign(1, 0);
-    for (std::uint32_t j : this->Rows)
-    {
-      inRows(lists.Neighbours(j), this->NeighbourStart, this->Neighbours);
-      inRows(lists.Children(j), this->ChildStart, this->Children);
-      inRows(lists.Ancestors(j), this->AncestorStart, this->Ancestors);
-    }
-  }
 
   // One reflectance per object: the weights need no colour.
   std::vector<RGB> objectReflectance;
@@ -104,11 +69,8 @@ MeshlessTransfer::MeshlessTransfer(const Scene& scene, const PointHierarchy& poi
   {
     std::vector<std::uint32_t> Senders;
     std::vector<float> Weights;
-    std::vector<std::uint32_t> FitColumns;
-    std::vector<float> FitWeights;
   };
   this->RowStart.assign(1, 0);
-  this->FitStart.assign(1, 0);
   std::vector<Row> block;
   for (std::size_t begin = 0; begin < this->Rows.size(); begin += RowsPerBlock)
   {
@@ -120,64 +82,168 @@ MeshlessTransfer::MeshlessTransfer(const Scene& scene, const PointHierarchy& poi
     block.assign(end - begin, Row());
     tbb::parallel_for(begin, end, [&](std::size_t r) {
       Row& row = block[r - begin];
-      const std::uint32_t j = this->Rows[r];
-      thread_local std::vector<std::pair<std::uint32_t, RGB>> raw;
-      raw.clear();
-      GatherWeights(scene, points, basis, rays, options, j,
-        [&](std::uint32_t k, double w, const RGB& reflectance) {
-          raw.emplace_back(k, uniform ? RGB(w) : w * reflectance);
-        });
-      std::sort(raw.begin(), raw.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-      for (std::size_t i = 0; i < raw.size();)
-      {
-        RGB sum(0.0);
-        const std::uint32_t k = raw[i].first;
-        for (; i < raw.size() && raw[i].first == k; ++i)
-        {
-          sum += raw[i].second;
-        }
-        row.Senders.push_back(k);
-        if (uniform)
-        {
-          row.Weights.push_back(static_cast<float>(sum.x));
-        }
-        else
-        {
-          row.Weights.insert(row.Weights.end(),
-            { static_cast<float>(sum.x), static_cast<float>(sum.y), static_cast<float>(sum.z) });
-        }
-      }
-      // Eq. 10: the coarser receivers' basis values at this receiver's point.
-      for (const auto& [k, w] : lists.Fit(j))
-      {
-        if (rowOf[k] != UINT32_MAX)
-        {
-          row.FitColumns.push_back(rowOf[k]);
-          row.FitWeights.push_back(static_cast<float>(w));
-        }
-      }
+      this->GatherRow(this->Rows[r], basis, row.Senders, row.Weights);
     });
     for (Row& row : block)
     {
       this->Senders.insert(this->Senders.end(), row.Senders.begin(), row.Senders.end());
       this->Weights.insert(this->Weights.end(), row.Weights.begin(), row.Weights.end());
       this->RowStart.push_back(this->Senders.size());
-      this->FitColumns.insert(this->FitColumns.end(), row.FitColumns.begin(), row.FitColumns.end());
-      this->FitWeights.insert(this->FitWeights.end(), row.FitWeights.begin(), row.FitWeights.end());
-      this->FitStart.push_back(this->FitColumns.size());
     }
-    if (memoryBudgetBytes > 0 && static_cast<double>(this->MemoryBytes()) > memoryBudgetBytes)
+    this->CheckMemory(end, this->Rows.size());
+  }
+  this->IndexRows();
+}
+
+void MeshlessTransfer::GatherRow(std::uint32_t j, const ShepardField& basis, std::vector<std::uint32_t>& senders,
+  std::vector<float>& weights) const
+{
+  const bool uniform = this->WeightComponents == 1;
+  thread_local std::vector<std::pair<std::uint32_t, RGB>> raw;
+  raw.clear();
+  GatherWeights(this->SourceScene, this->Points, basis, this->Rays, this->Options, j,
+    [&](std::uint32_t k, double w, const RGB& reflectance) {
+      raw.emplace_back(k, uniform ? RGB(w) : w * reflectance);
+    });
+  std::sort(raw.begin(), raw.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t i = 0; i < raw.size();)
+  {
+    RGB sum(0.0);
+    const std::uint32_t k = raw[i].first;
+    for (; i < raw.size() && raw[i].first == k; ++i)
     {
-      throw SceneError("meshless relighting: the transfer's rows need more than the memory budget (" +
-        FormatCount(static_cast<double>(this->MemoryBytes())) + " bytes after " + std::to_string(end) + " of " +
-        std::to_string(this->Rows.size()) + " receivers); raise the budget (MaxMemory) or --point-radius");
+      sum += raw[i].second;
     }
+    senders.push_back(k);
+    if (uniform)
+    {
+      weights.push_back(static_cast<float>(sum.x));
+    }
+    else
+    {
+      weights.insert(weights.end(), { static_cast<float>(sum.x), static_cast<float>(sum.y), static_cast<float>(sum.z) });
+    }
+  }
+}
+
+void MeshlessTransfer::IndexRows()
+{
+  const auto& all = this->Points.Points();
+  const int levels = this->Points.NumberOfLevels();
+  this->LevelStart.assign(static_cast<std::size_t>(levels) + 1, this->Rows.size());
+  for (std::size_t r = this->Rows.size(); r-- > 0;)
+  {
+    this->LevelStart[all[this->Rows[r]].Level] = r;
+  }
+  for (int level = levels - 1; level >= 0; --level)
+  {
+    this->LevelStart[level] = std::min(this->LevelStart[level], this->LevelStart[level + 1]);
+  }
+  this->CoarseRows = levels > 0 ? this->LevelStart[1] : 0;
+  // Where each point sits in Rows (the fit's columns), or none.
+  this->RowOf.assign(all.size(), UINT32_MAX);
+  for (std::size_t r = 0; r < this->Rows.size(); ++r)
+  {
+    this->RowOf[this->Rows[r]] = static_cast<std::uint32_t>(r);
+  }
+  // The receiver oracle's neighbourhoods (MeshlessNeighbourhoods) in rows,
+  // and eq. 10's fit: the coarser receivers' basis values at each row's point.
+  const auto inRows = [&](auto list, std::vector<std::size_t>& start, std::vector<std::uint32_t>& items) {
+    for (std::uint32_t k : list)
+    {
+      if (this->RowOf[k] != UINT32_MAX)
+      {
+        items.push_back(this->RowOf[k]);
+      }
+    }
+    start.push_back(items.size());
+  };
+  for (auto* v : { &this->NeighbourStart, &this->ChildStart, &this->AncestorStart, &this->FitStart })
+  {
+    v->assign(1, 0);
+  }
+  for (auto* v : { &this->Neighbours, &this->Children, &this->Ancestors, &this->FitColumns })
+  {
+    v->clear();
+  }
+  this->FitWeights.clear();
+  for (std::uint32_t j : this->Rows)
+  {
+    inRows(this->Lists.Neighbours(j), this->NeighbourStart, this->Neighbours);
+    inRows(this->Lists.Children(j), this->ChildStart, this->Children);
+    inRows(this->Lists.Ancestors(j), this->AncestorStart, this->Ancestors);
+    for (const auto& [k, w] : this->Lists.Fit(j))
+    {
+      if (this->RowOf[k] != UINT32_MAX)
+      {
+        this->FitColumns.push_back(this->RowOf[k]);
+        this->FitWeights.push_back(static_cast<float>(w));
+      }
+    }
+    this->FitStart.push_back(this->FitColumns.size());
+  }
+}
+
+void MeshlessTransfer::AddRows(std::vector<std::uint32_t> extra)
+{
+  std::sort(extra.begin(), extra.end());
+  extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
+  // Their gathers, as the precomputation's.
+  const ShepardField basis(this->Points);
+  std::vector<std::vector<std::uint32_t>> senders(extra.size());
+  std::vector<std::vector<float>> weights(extra.size());
+  tbb::parallel_for(std::size_t(0), extra.size(),
+    [&](std::size_t i) { this->GatherRow(extra[i], basis, senders[i], weights[i]); });
+  // Merged in point order with the rows there are.
+  const int wc = this->WeightComponents;
+  std::vector<std::uint32_t> rows, mergedSenders;
+  std::vector<float> mergedWeights;
+  std::vector<std::size_t> rowStart(1, 0);
+  rows.reserve(this->Rows.size() + extra.size());
+  mergedSenders.reserve(this->Senders.size());
+  mergedWeights.reserve(this->Weights.size());
+  std::size_t old = 0, add = 0;
+  while (old < this->Rows.size() || add < extra.size())
+  {
+    if (add == extra.size() || (old < this->Rows.size() && this->Rows[old] < extra[add]))
+    {
+      rows.push_back(this->Rows[old]);
+      mergedSenders.insert(mergedSenders.end(), this->Senders.begin() + this->RowStart[old],
+        this->Senders.begin() + this->RowStart[old + 1]);
+      mergedWeights.insert(mergedWeights.end(), this->Weights.begin() + wc * this->RowStart[old],
+        this->Weights.begin() + wc * this->RowStart[old + 1]);
+      ++old;
+    }
+    else
+    {
+      rows.push_back(extra[add]);
+      mergedSenders.insert(mergedSenders.end(), senders[add].begin(), senders[add].end());
+      mergedWeights.insert(mergedWeights.end(), weights[add].begin(), weights[add].end());
+      ++add;
+    }
+    rowStart.push_back(mergedSenders.size());
+  }
+  this->Rows = std::move(rows);
+  this->Senders = std::move(mergedSenders);
+  this->Weights = std::move(mergedWeights);
+  this->RowStart = std::move(rowStart);
+  this->IndexRows();
+  this->CheckMemory(this->Rows.size(), this->Rows.size());
+}
+
+void MeshlessTransfer::CheckMemory(std::size_t done, std::size_t of) const
+{
+  if (this->MemoryBudgetBytes > 0 && static_cast<double>(this->MemoryBytes()) > this->MemoryBudgetBytes)
+  {
+    throw SceneError("meshless relighting: the transfer's rows need more than the memory budget (" +
+      FormatCount(static_cast<double>(this->MemoryBytes())) + " bytes after " + std::to_string(done) + " of " +
+      std::to_string(of) + " receivers); raise the budget (MaxMemory) or --point-radius");
   }
 }
 
 std::size_t MeshlessTransfer::MemoryBytes() const
 {
-  return this->Rows.size() * sizeof(std::uint32_t) + this->RowStart.size() * sizeof(std::size_t) +
+  return (this->Rows.size() + this->RowOf.size()) * sizeof(std::uint32_t) + this->RowStart.size() * sizeof(std::size_t) +
     this->Senders.size() * sizeof(std::uint32_t) + this->Weights.size() * sizeof(float) +
     this->SenderReflectance.size() * sizeof(RGB) +
     this->FitStart.size() * sizeof(std::size_t) + this->FitColumns.size() * sizeof(std::uint32_t) +
@@ -187,7 +253,34 @@ std::size_t MeshlessTransfer::MemoryBytes() const
 }
 
 MeshlessTransfer::Series MeshlessTransfer::Indirect(
-  const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold) const
+  const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold)
+{
+  // The rows a lighting wants are known only once its series is summed
+  // (the oracle follows the values), and each added row may want its own
+  // children: summed again until every wanted receiver is a row (at most
+  // one pass per level).
+  const Stopwatch clock;
+  std::vector<std::uint32_t> missing;
+  Series out = this->Sum(direct, tolerance, maxBounces, threshold, missing);
+  std::size_t added = 0;
+  double addSeconds = 0.0;
+  for (int pass = 0; !missing.empty() && pass <= this->Points.NumberOfLevels(); ++pass)
+  {
+    const double before = clock.Seconds();
+    const std::size_t rows = this->Rows.size();
+    this->AddRows(std::move(missing));
+    added += this->Rows.size() - rows;
+    addSeconds += clock.Seconds() - before;
+    missing.clear();
+    out = this->Sum(direct, tolerance, maxBounces, threshold, missing);
+  }
+  out.RowsAdded = added;
+  out.RowsAddedSeconds = addSeconds;
+  return out;
+}
+
+MeshlessTransfer::Series MeshlessTransfer::Sum(const std::vector<RGB>& direct, double tolerance, int maxBounces,
+  double threshold, std::vector<std::uint32_t>& missing) const
 {
   Series out;
   const auto& all = this->Points.Points();
@@ -305,9 +398,27 @@ MeshlessTransfer::Series MeshlessTransfer::Indirect(
         into.insert(into.end(), items.begin() + start[r], items.begin() + start[r + 1]);
       };
     };
+    // A refined row's children that are not rows, with their coarser
+    // functions that are not either: wanted, and gathered by Indirect.
+    const auto children = [&](std::uint32_t r, std::vector<std::uint32_t>& into) {
+      listed(this->ChildStart, this->Children)(r, into);
+      for (std::uint32_t c : this->Lists.Children(this->Rows[r]))
+      {
+        if (this->RowOf[c] == UINT32_MAX)
+        {
+          missing.push_back(c);
+          for (std::uint32_t q : this->Lists.Ancestors(c))
+          {
+            if (this->RowOf[q] == UINT32_MAX)
+            {
+              missing.push_back(q);
+            }
+          }
+        }
+      }
+    };
     RunReceiverOracle(wave, threshold, value, alpha, computed, compute,
-      listed(this->NeighbourStart, this->Neighbours), listed(this->ChildStart, this->Children),
-      listed(this->AncestorStart, this->Ancestors));
+      listed(this->NeighbourStart, this->Neighbours), children, listed(this->AncestorStart, this->Ancestors));
     double magnitude = 0.0;
     for (std::size_t r = 0; r < this->CoarseRows; ++r)
     {

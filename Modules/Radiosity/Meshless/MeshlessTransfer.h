@@ -22,6 +22,11 @@
 // follows the links from the senders; precomputing the powers of T as
 // Kontkanen et al. do would fill the matrix in (a closed room's T^k couples
 // every pair) for no gain at the few bounces the tail needs.
+//
+// A new lighting can want receivers the solved one did not (a lamp moved
+// to where the solve found no detail): those rows are gathered when a
+// relight first asks for them and kept, and the series is summed again, so
+// a relight is always the answer a fresh solve of its lighting gives.
 #ifndef Radiosity_MeshlessTransfer_h
 #define Radiosity_MeshlessTransfer_h
 
@@ -36,6 +41,7 @@ namespace radiosity
 {
 class Visibility;
 class MeshlessNeighbourhoods;
+class ShepardField;
 
 class MeshlessTransfer
 {
@@ -58,6 +64,10 @@ public:
     /// Magnitude (sum over the coarsest receivers, largest channel) per bounce, the direct light's first.
     std::vector<double> Magnitudes;
     std::size_t RowsComputed = 0; ///< over every bounce
+    /// Receivers the lighting wanted that were not rows, gathered for it
+    /// (and kept for the relights after it).
+    std::size_t RowsAdded = 0;
+    double RowsAddedSeconds = 0.0;
   };
   /**
    * The indirect light of the direct field `direct` (coefficients, one per
@@ -67,16 +77,37 @@ public:
    * 6.3: the coarsest level, then the children of the rows whose variation
    * or coefficient exceeds `threshold`, irradiance units), so that the
    * lighting solved gives the solve back; a receiver the oracle wants that
-   * is not a row is left out.
+   * is not a row is gathered then (its row added, the series summed
+   * again). Throws SceneError when the added rows outgrow the memory budget.
    */
-  Series Indirect(const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold) const;
+  Series Indirect(const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold);
 
   std::size_t Receivers() const { return this->Rows.size(); }
   std::size_t Entries() const { return this->Senders.size() + this->FitColumns.size(); }
   std::size_t MemoryBytes() const;
 
 private:
+  /// One receiver's gather weights: senders sorted, WeightComponents each.
+  void GatherRow(std::uint32_t j, const ShepardField& basis, std::vector<std::uint32_t>& senders,
+    std::vector<float>& weights) const;
+  /// Everything indexed by row (levels, the oracle's lists and the fit of
+  /// eq. 10 in rows), from Rows and the neighbourhood lists.
+  void IndexRows();
+  /// Gathers the rows of `extra` (points that are not rows yet) and merges them in.
+  void AddRows(std::vector<std::uint32_t> extra);
+  /// The series over the rows as they are; `missing` gets the points the
+  /// oracle wanted that are not rows.
+  Series Sum(const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold,
+    std::vector<std::uint32_t>& missing) const;
+  void CheckMemory(std::size_t done, std::size_t of) const;
+
+  const Scene& SourceScene;
+  const Visibility& Rays;
+  const MeshlessNeighbourhoods& Lists;
+  MeshlessOptions Options;
+  double MemoryBudgetBytes = 0.0;
   const PointHierarchy& Points;
+  std::vector<std::uint32_t> RowOf; ///< per point, its row or UINT32_MAX
   std::vector<std::uint32_t> Rows;        ///< receivers, sorted by index (so by level)
   std::vector<std::size_t> LevelStart;    ///< into Rows, per level (+1)
   std::vector<std::size_t> RowStart;      ///< into Senders/Weights (+1)
