@@ -461,9 +461,9 @@ public:
 
   ///@{
   /// Face cluster: how many times an input triangle may be halved below the
-  /// hierarchy's leaves where a receiver's basis cannot follow the light
-  /// (a coarse input: a contact edge, slivers, a box of a few polygons);
-  /// 0 (the default) keeps the paper's leaves.
+  /// hierarchy's leaves where the light it receives is more than its basis
+  /// can follow (a coarse input: a contact edge, slivers, a box of a few
+  /// polygons). Default 5; 0 keeps the paper's leaves.
   vtkSetClampMacro(MaxBisections, int, 0, 16);
   vtkGetMacro(MaxBisections, int);
   ///@}
@@ -621,7 +621,7 @@ protected:
   int IrradianceBasis = LinearBasis;
   int RadiosityBasis = ConstantBasis;
   double TransferTolerance = 1e-5;
-  int MaxBisections = 0;
+  int MaxBisections = 5;
   double MaxMemory = 0.0;
   bool DiscontinuityMeshing = true;
   bool SurfaceOutput = true;

@@ -378,7 +378,7 @@ endforeach ()
 string(JSON value GET "${fc}" parameters transfer_tolerance)
 expect_within("facecluster default transfer_tolerance" "${value}" 0.99999e-5 1.00001e-5)
 string(JSON value GET "${fc}" parameters max_bisections)
-expect_within("facecluster default max_bisections" "${value}" 0 0)
+expect_within("facecluster default max_bisections" "${value}" 5 5)
 expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --irradiance-basis septic
   --output "${WORK}/bad.vtp")
 expect_exit(2 "${PROGRAM}" solve closed-room-0.99 --method facecluster --irradiance-basis linear

@@ -85,7 +85,7 @@ struct SolveArguments
   std::string IrradianceBasis = "linear";
   std::string RadiosityBasis = "constant";
   double TransferTolerance = 1e-5; ///< relative to the emitted power
-  int MaxBisections = 0;
+  int MaxBisections = 5;
 };
 
 double Since(Clock::time_point t);

@@ -425,7 +425,7 @@ int main(int argc, char* argv[])
     "facecluster: transfer error accepted, relative to the emitted power (default 1e-5)")
     ->check(CLI::Range(1e-12, 1.0));
   solveCommand->add_option("--max-bisections", solve.MaxBisections,
-    "facecluster: halvings of an input triangle allowed below the hierarchy's leaves (default 0)")
+    "facecluster: halvings of an input triangle allowed below the hierarchy's leaves (default 5; 0: the paper's leaves)")
     ->check(CLI::Range(0, 16));
   solveCommand->add_option("--link-tolerance", solve.LinkTolerance,
     "hierarchical: link refinement threshold on B F, relative to the scene's mean irradiance "

@@ -299,13 +299,11 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
   // The thread limit applies to this solve alone (a task arena of its own).
   return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
     const Scene& scene = this->GetScene();
-    double emitted = 0.0, brightest = 0.0, reflected = 0.0, area = 0.0;
+    double emitted = 0.0, brightest = 0.0;
     for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
     {
       emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
       brightest = std::max(brightest, Mean(scene.Materials[t].Emission));
-      reflected += Mean(scene.Materials[t].Reflectance) * scene.Area(t);
-      area += scene.Area(t);
     }
     this->Lights.reset();
     if (!scene.Lighting.Empty())
@@ -326,12 +324,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       return stats;
     }
     this->Epsilon = this->Settings.TransferTolerance * emitted;
-    // Below the input triangles: an accepted transfer's fit error comes
-    // back at every bounce, 1 / (1 - rho) times in all (a closed room of
-    // reflectance 0.99: 100 times), so the tolerance is scaled by 1 - rho,
-    // rho the scene's area-weighted mean reflectance.
-    const double meanReflectance = area > 0.0 ? std::clamp(reflected / area, 0.0, 1.0) : 0.0;
-    this->PartEpsilon = this->Settings.SubdivisionTolerance * emitted * (1.0 - meanReflectance);
+    this->PartEpsilon = this->Settings.SubdivisionTolerance * emitted;
     for (std::uint32_t root : this->Clusters->Roots())
     {
       this->Top.push_back(this->NewElement(root, -1));

@@ -18,8 +18,10 @@
 // Departures, as in DESIGN.md's note for this method: emission is the
 // elements' own (each element's first shot is its own cluster's mean
 // emission, not the parent's pushed average), pull weights are surface
-// areas (energy is conserved whatever the children's boxes), and a triangle
-// emitter's constant part uses the exact vector form factor.
+// areas (energy is conserved whatever the children's boxes), a triangle
+// emitter's constant part uses the exact vector form factor, and input
+// triangles are halved below the hierarchy where the light they receive in
+// all is more than their basis can follow (MaxBisections; README.md).
 #ifndef Radiosity_FaceClusterRadiosity_h
 #define Radiosity_FaceClusterRadiosity_h
 
@@ -50,22 +52,21 @@ struct FaceClusterSettings
   int Threads = 0;
   /// How many times an input triangle may be halved (longest-edge
   /// bisection) below the face cluster hierarchy's leaves where its basis
-  /// cannot follow the light it receives (SubdivisionTolerance); 0 keeps
-  /// the paper's leaves, whose cost does not grow with the input. A coarse
-  /// input (the Cornell box's 32 triangles, a contact edge, a penumbra on a
-  /// large floor) otherwise keeps one expansion per triangle whatever the
-  /// light: 11.8% of the peak on the Cornell box, 22% on the exact
-  /// penumbra (bench/results/facecluster.md).
-  int MaxBisections = 0;
+  /// cannot follow the light it receives in all (SubdivisionTolerance); 0
+  /// keeps the paper's leaves. A coarse input otherwise keeps one expansion
+  /// per triangle whatever the light: 11.8% of the peak on the Cornell
+  /// box's 32 triangles, 22% on the exact penumbra, 5.9% at the contact
+  /// edge; halved, 1.6%, 1.8% and 0.12% (bench/results/facecluster.md).
+  int MaxBisections = 5;
   /// Transfer error (W) accepted below the input triangles, relative to the
-  /// scene's emitted power and scaled by 1 - rho (rho the scene's mean
-  /// reflectance: an accepted error comes back at every bounce): a
-  /// receiver is halved where its fit error exceeds it, and a halved
-  /// emitter sends from its parts where its radiosity's spread over them
-  /// would. Coarser than TransferTolerance, which refines the clusters:
-  /// at 1e-5 the Cornell box took 8 s for 1.5% of the peak, at this value
-  /// 3.5 s for 1.7%.
-  double SubdivisionTolerance = 2.5e-4;
+  /// scene's emitted power: a leaf triangle is halved where the fits of the
+  /// light it received in an iteration depart from that light by more, in
+  /// all (FaceClusterRadiosity::BisectOnTotals), and a halved emitter
+  /// sends from its parts where the spread of its radiosity over them would
+  /// change a transfer by more. Coarser than TransferTolerance, which
+  /// refines the clusters: at 1e-5 the Cornell box took 15 s for 1.1% of
+  /// the peak, at this value 3.9 s for 1.6%.
+  double SubdivisionTolerance = 1e-4;
   /// Bytes the hierarchy and the elements may use; 0: 75% of physical
   /// memory. Checked before the hierarchy is built and as elements are made.
   double MemoryBudgetBytes = 0.0;
@@ -221,6 +222,15 @@ private:
   /// Accepts the pair's transfer into Accepted, or subdivides an end and
   /// appends the children's pairs to `next`.
   void Resolve(const PendingTransfer& pair, const Transfer& t, std::vector<PendingTransfer>& next);
+  /// After a round: each leaf triangle (or part) whose transfers' summed
+  /// fit departure exceeds SubdivisionTolerance is halved, its irradiance
+  /// of this iteration dropped and its transfers queued for its parts in
+  /// `pending` (also for one the lights halved since); true when any was.
+  bool BisectOnTotals(std::vector<PendingTransfer>& pending);
+  /// This iteration, per leaf triangle receiver that may be halved: its
+  /// accepted transfers' summed departures (Transfer::Residual) and their emitters.
+  std::vector<std::vector<double>> TotalResidual;
+  std::vector<std::vector<std::int32_t>> AcceptedFrom;
   /// 3.3.3: a non-convex element's children's mutual pairs.
   void CheckSelfTransfer(std::int32_t i, std::vector<PendingTransfer>& next);
   /// First iteration: the lights at the leaves not checked yet (fitted

@@ -345,6 +345,10 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
   }
   // 3.3.2, "the value interpolated using the element basis" against direct
   // integration, at the nodes and at the control points.
+  if (receiver.Corners || ri.IsLeaf())
+  {
+    out.Residual.assign(np + nc, 0.0);
+  }
   for (std::size_t p = 0; p < np + nc; ++p)
   {
     const double* phi = p < np ? &rr.Phi[p * rr.Functions] : &rr.ControlPhi[(p - np) * rr.Functions];
@@ -359,7 +363,12 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
         fitted += (phi[a] * radiosityB) * out.K[a * nb + b];
       }
     }
-    out.FitError = std::max(out.FitError, ri.Area * std::abs(glm::dot(normal, fitted - direct)));
+    const double departure = ri.Area * glm::dot(normal, fitted - direct);
+    out.FitError = std::max(out.FitError, std::abs(departure));
+    if (!out.Residual.empty())
+    {
+      out.Residual[p] = departure;
+    }
   }
   // The bounds on BFA over the emitter's nodes (3.3.2) where the direct
   // values are themselves estimates: occluded or sampled emitters, or a

@@ -68,6 +68,12 @@ struct Transfer
   /// The part of it at the receiver's control points: the receiver's basis
   /// cannot follow the irradiance there, so the receiver is the one to split.
   double FitError = 0.0;
+  /// For a receiver that is one triangle (or a part of one), per receiver
+  /// point (its nodes, then its control points): the fit's departure
+  /// A_i n . (fitted - direct) (W), signed. The fits are linear in the
+  /// light, so the departures of a receiver's transfers add up to that of
+  /// the light it receives in all.
+  std::vector<double> Residual;
 };
 
 /**

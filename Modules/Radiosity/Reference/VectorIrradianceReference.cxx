@@ -174,7 +174,9 @@ std::vector<RadiantTriangle> RadiantTrianglesOf(
       const double du = glm::dot(d, u), dv = glm::dot(d, v);
       const double b1 = det > 0.0 ? (vv * du - uv * dv) / det : 1.0 / 3.0;
       const double b2 = det > 0.0 ? (uu * dv - uv * du) / det : 1.0 / 3.0;
-      const RGB irradiance = InterpolateSamples(solution.Samples[e], 1.0 - b1 - b2, b1, b2);
+      // Irradiance is not negative: the quadratic through a halved
+      // triangle's samples can dip below zero between them.
+      const RGB irradiance = NonNegative(InterpolateSamples(solution.Samples[e], 1.0 - b1 - b2, b1, b2));
       const RGB b = material.Emission + material.Reflectance * irradiance;
       if (b[0] > 0.0 || b[1] > 0.0 || b[2] > 0.0)
       {

@@ -106,12 +106,11 @@ ConvergenceRow SolveAgainstOnce(Method method, const Scene& scene, const std::ve
   }
   if (method == Method::FaceCluster)
   {
+    // Default settings: the suite's scenes are coarse (a contact floor of
+    // 0.5 m triangles, slivers), and the receivers are halved below the
+    // input where their basis cannot follow the light (MaxBisections 5).
     FaceClusterSettings settings;
     settings.Tolerance = tolerance;
-    // The suite's scenes are coarse (a contact floor of 0.5 m triangles,
-    // slivers): the receivers are halved below the input where their basis
-    // cannot follow the light, as a user would ask for such input.
-    settings.MaxBisections = 4;
     FaceClusterRadiosity solver(scene, settings);
     return SolveAndProbe(solver, probes, ref, solution);
   }
