@@ -188,6 +188,9 @@ private:
   /// limited to the range it takes at the element's nodes.
   /// Leaf e's expansion at x; `limit` off: without the limiter.
   IrradianceVector Expansion(std::int32_t e, const Vec3& x, bool limit = true) const;
+  /// A halved triangle e's parts' expansions fitted by its own basis, at x
+  /// (the vertex output's value).
+  IrradianceVector WholeTriangleExpansion(std::int32_t e, const Vec3& x) const;
   /// The punctual lights' vector irradiance at leaf e's nodes fitted by its
   /// basis, as the first iteration fits them (TransportLight), at x.
   IrradianceVector PunctualExpansion(std::int32_t e, const Vec3& x) const;

@@ -214,6 +214,44 @@ RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec
   return Received(rest, n) + this->Lights->Punctual(x, n);
 }
 
+IrradianceVector FaceClusterRadiosity::WholeTriangleExpansion(std::int32_t e, const Vec3& x) const
+{
+  // The parts' expansions at the triangle's own nodes, fitted by its basis
+  // (the least-squares pull of 3.3.4, here of irradiance): the display
+  // interpolates the vertex vectors across the input triangle, so a vertex
+  // gets the triangle's best fit, not the value of the part in its corner
+  // (on the Cornell box's 32 triangles the corner parts lit the back wall
+  // by the side walls' colours: the lamp's light reaches the corners at
+  // grazing angles and its middle not at all in the vertex values).
+  const FaceClusterElement& whole = this->Nodes[e];
+  const int ne = this->IrradianceBasis.Size();
+  IrradianceVector coefficients[PolynomialBasis::MaximumSize]{};
+  for (std::size_t q = 0; q < whole.Rule.Size(); ++q)
+  {
+    const Vec3& y = whole.Rule.Points[q];
+    const IrradianceVector at = this->Expansion(this->PartAt(e, y), y);
+    for (int a = 0; a < ne; ++a)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        coefficients[a][c] += whole.Rule.Dual[q * whole.Rule.Functions + a] * at[c];
+      }
+    }
+  }
+  const glm::dvec2 uv = glm::clamp(BoxCoordinates(whole.Data, x), glm::dvec2(0.0), glm::dvec2(1.0));
+  double phi[PolynomialBasis::MaximumSize];
+  this->IrradianceBasis.Evaluate(uv.x, uv.y, phi);
+  IrradianceVector v{};
+  for (int a = 0; a < ne; ++a)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] += phi[a] * coefficients[a][c];
+    }
+  }
+  return v;
+}
+
 std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors() const
 {
   const Scene& scene = this->GetScene();
@@ -228,7 +266,9 @@ std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors
     {
       const std::uint32_t v = scene.Triangles[t].V[k];
       normal[v] += area;
-      const IrradianceVector e = this->Expansion(this->PartAt(element, scene.Points[v]), scene.Points[v]);
+      const IrradianceVector e = this->Nodes[element].IsLeaf()
+        ? this->Expansion(element, scene.Points[v])
+        : this->WholeTriangleExpansion(element, scene.Points[v]);
       for (int c = 0; c < 3; ++c)
       {
         for (int d = 0; d < 3; ++d)
