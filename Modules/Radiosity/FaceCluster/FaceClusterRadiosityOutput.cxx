@@ -266,8 +266,8 @@ std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors
     {
       const std::uint32_t v = scene.Triangles[t].V[k];
       normal[v] += area;
-      const IrradianceVector e = this->Nodes[element].IsLeaf()
-        ? this->Expansion(element, scene.Points[v])
+      const IrradianceVector e = element < 0 || this->Nodes[element].IsLeaf()
+        ? this->Expansion(element, scene.Points[v]) // zero without a solution (no light)
         : this->WholeTriangleExpansion(element, scene.Points[v]);
       for (int c = 0; c < 3; ++c)
       {

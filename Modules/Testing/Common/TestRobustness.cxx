@@ -80,6 +80,16 @@ TEST(Robustness, FaceClusterWithoutEmittersIsZero)
   EXPECT_EQ(solver.Solve().Stop, StopReason::NoEmitters);
   ExpectZero(solver.Surface(), "face cluster surface");
   ExpectZero(solver.Evaluate(TwoProbes()), "face cluster probes");
+  // The vertex vectors too (what --output writes for the display): no
+  // element to read, all zero (a halved-triangle branch once read
+  // element -1 here: the corpus's unlit glossy files crashed).
+  for (const auto& v : solver.VertexIrradianceVectors())
+  {
+    for (double x : v)
+    {
+      EXPECT_EQ(x, 0.0);
+    }
+  }
 }
 
 TEST(Robustness, HierarchicalAndProgressiveWithoutEmittersAreZero)
