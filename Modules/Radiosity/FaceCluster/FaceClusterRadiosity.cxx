@@ -1,4 +1,5 @@
 #include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/Common/Enclosure.h"
 #include "Radiosity/Common/MemoryBudget.h"
 
 #include "Radiosity/FaceCluster/FaceClusterGeometry.h"
@@ -292,6 +293,51 @@ std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(std::int32_t i,
   return out;
 }
 
+void FaceClusterRadiosity::BalanceEnergy(const RGB& shot)
+{
+  RGB scale(1.0);
+  for (int c = 0; c < 3; ++c)
+  {
+    if (shot[c] > 0.0 && this->ReceivedPower[c] > 0.0)
+    {
+      const double s = shot[c] / this->ReceivedPower[c];
+      scale[c] = s >= 0.9 && s <= 1.1 ? s : 1.0;
+    }
+  }
+  if (scale == RGB(1.0))
+  {
+    return;
+  }
+  this->Stats.EnergyScaleMin = std::min(this->Stats.EnergyScaleMin, std::min({ scale.r, scale.g, scale.b }));
+  this->Stats.EnergyScaleMax = std::max(this->Stats.EnergyScaleMax, MaxComponent(scale));
+  // Everything this iteration made is linear in the light received.
+  const double low = std::min({ scale.r, scale.g, scale.b }), high = MaxComponent(scale);
+  for (FaceClusterElement& e : this->Nodes)
+  {
+    for (RGB& b : e.Next)
+    {
+      b *= scale;
+    }
+    e.NextMin *= low;
+    e.NextMax *= high;
+    if (!e.IsLeaf())
+    {
+      continue;
+    }
+    for (std::size_t a = 0; a < e.Irradiance.size(); ++a)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        e.Irradiance[a][c] += (scale[c] - 1.0) * e.LastIncrement[a][c];
+        e.LastIncrement[a][c] *= scale[c];
+      }
+    }
+  }
+  this->NextPowerRGB *= scale;
+  this->ReceivedPower *= scale;
+  this->NextPower = Mean(this->NextPowerRGB);
+}
+
 SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
 {
   SolverStatistics stats;
@@ -318,6 +364,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     this->Nodes.clear();
     this->Top.clear();
     this->Iteration = 0;
+    this->NextPowerRGB = RGB(0.0);
     if (!(emitted > 0.0))
     {
       stats.Stop = StopReason::NoEmitters;
@@ -330,6 +377,15 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       this->Top.push_back(this->NewElement(root, -1));
     }
 
+    this->Stats.Enclosed = false;
+    this->Stats.EnergyScaleMin = this->Stats.EnergyScaleMax = 1.0;
+    if (this->Settings.BalanceEnclosedScenes)
+    {
+      const Stopwatch enclosure;
+      this->Stats.Enclosed = SceneIsEnclosed(scene);
+      this->Stats.EnclosureSeconds = enclosure.Seconds();
+    }
+
     // Per iteration, the power of the next shot (the decay rate of the
     // series); the stop is on the infinity norm of the unshot radiosity.
     std::vector<double> powers;
@@ -340,7 +396,12 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       {
         break;
       }
+      const RGB shot = this->NextPowerRGB; // what the leaves' unshot radiosity sends now
       this->Transport();
+      if (this->Stats.Enclosed && this->Iteration > 0)
+      {
+        this->BalanceEnergy(shot);
+      }
       double residual = 0.0;
       for (FaceClusterElement& e : this->Nodes)
       {

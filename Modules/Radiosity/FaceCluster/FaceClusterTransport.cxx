@@ -465,11 +465,13 @@ void FaceClusterRadiosity::Transport()
   this->TotalResidual.clear();
   this->AcceptedFrom.clear();
   this->Accepted.resize(this->Nodes.size() * ne, IrradianceVector{});
-  this->NextPower = 0.0;
+  this->NextPowerRGB = RGB(0.0);
+  this->ReceivedPower = RGB(0.0);
   for (std::int32_t i : this->Top)
   {
     this->PushPull(i, nullptr);
   }
+  this->NextPower = Mean(this->NextPowerRGB);
 }
 
 void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up)
@@ -537,6 +539,8 @@ void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up)
         const double rho = e.Data.ReflectanceMean[c];
         const double b = rho * std::max(glm::dot(rule.Normals[q], atNode), 0.0) / (1.0 - rho * self);
         reflected[c] = b;
+        this->ReceivedPower[c] += rule.Weights[q] * std::max(glm::dot(rule.Normals[q], atNode), 0.0);
+        this->NextPowerRGB[c] += (1.0 - self) * rule.Weights[q] * b; // the part that leaves it
         for (int a = 0; a < nb; ++a)
         {
           e.Next[a][c] += e.RadiosityDual[q * nb + a] * b;
@@ -551,7 +555,6 @@ void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up)
       }
       e.NextMin = std::min(e.NextMin, Mean(reflected));
       e.NextMax = std::max(e.NextMax, Mean(reflected));
-      this->NextPower += (1.0 - self) * rule.Weights[q] * Mean(reflected); // the part that leaves it
     }
     for (int a = 0; a < ne; ++a)
     {

@@ -4,6 +4,7 @@
 // where a triangle's hemisphere is closed (ClusterLinks.h has the method).
 #include "Radiosity/Hierarchical/ClusterLinks.h"
 
+#include "Radiosity/Common/Enclosure.h"
 #include "Radiosity/Common/Visibility.h"
 #include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
 #include "Radiosity/Hierarchical/HierarchicalNodeRules.h"
@@ -283,33 +284,13 @@ std::size_t ClusterLinks::Normalize(const std::vector<double>& polygonFactors, s
   const std::size_t n = this->Triangles;
   if (this->Closed.empty())
   {
-    // Rays over the cosine-weighted hemisphere (stratified in the cosine,
-    // golden-angle turns), each longer than the scene, against every triangle.
-    constexpr int Rays = 32;
     const Visibility all(scene, Visibility::AllTriangles(scene));
-    this->Closed.assign(n, 0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& range) {
-      Vec3 from[Rays], to[Rays];
-      unsigned char open[Rays];
-      for (std::size_t t = range.begin(); t != range.end(); ++t)
-      {
-        const Vec3 z = scene.Normal(t);
-        const Vec3 x = glm::normalize(std::fabs(z.x) < 0.9 ? glm::cross(z, Vec3(1, 0, 0)) : glm::cross(z, Vec3(0, 1, 0)));
-        const Vec3 y = glm::cross(z, x);
-        const Vec3 c = scene.Centroid(t);
-        for (int k = 0; k < Rays; ++k)
-        {
-          const double u = (k + 0.5) / Rays;
-          const double phi = 2.39996322972865332 * k + 0.618 * static_cast<double>(t % 97);
-          const double r = std::sqrt(u);
-          const Vec3 d = r * std::cos(phi) * x + r * std::sin(phi) * y + std::sqrt(1.0 - u) * z;
-          from[k] = c;
-          to[k] = c + 2.0 * this->Diagonal * d;
-        }
-        all.TestSegments(from, to, Rays, open);
-        this->Closed[t] = std::none_of(open, open + Rays, [](unsigned char v) { return v != 0; });
-      }
-    });
+    std::vector<std::uint32_t> every(n);
+    for (std::size_t t = 0; t < n; ++t)
+    {
+      every[t] = static_cast<std::uint32_t>(t);
+    }
+    this->Closed = EnclosedTriangles(scene, all, every, 2.0 * this->Diagonal);
   }
   // The cluster links' form factor sums: a gather of radiosity 1, then per
   // leaf what its chain receives.

@@ -56,7 +56,7 @@ AnalyticReference CentroidReference(const Scene& scene, std::vector<Probe>& prob
 
 TEST(FaceClusterRadiosity, ClosedRoomsWithinOnePercent)
 {
-  for (double rho : { 0.5, 0.9, 0.99 })
+  for (double rho : { 0.5, 0.9, 0.99, 0.999 })
   {
     const Scene scene = MakeClosedCube(1.0, 4, rho, 1.0);
     FaceClusterRadiosity solver(scene, FaceClusterSettings());
@@ -66,7 +66,10 @@ TEST(FaceClusterRadiosity, ClosedRoomsWithinOnePercent)
     std::cout << "closed room rho " << rho << ": " << stats.Iterations << " iterations, "
               << solver.Statistics().LeafElements << " leaves, " << solver.Statistics().Transfers
               << " transfers, worst " << worst << "\n";
-    EXPECT_LT(worst, 0.0023) << "rho " << rho; // measured 7.7e-4 (0.5), 2.0e-4 (0.9), 7.0e-4 (0.99)
+    // Measured 1.8e-4 (0.5), 2.4e-7 (0.9), 9.5e-7 (0.99), 1.3e-5 (0.999)
+    // with each bounce balanced (the room is enclosed); 7.7e-4, 2.0e-4,
+    // 7.0e-4 (0.999 not run) before.
+    EXPECT_LT(worst, 5e-4) << "rho " << rho;
     // The vertex output: n . E at every point (the faces have points of
     // their own), including the corners.
     const std::vector<std::array<double, 9>> vertices = solver.VertexIrradianceVectors();
@@ -83,7 +86,7 @@ TEST(FaceClusterRadiosity, ClosedRoomsWithinOnePercent)
       }
     }
     std::cout << "  vertex worst " << vertexWorst << "\n";
-    EXPECT_LT(vertexWorst, 0.0043) << "rho " << rho; // measured 1.4e-3 (0.5), 1.9e-4 (0.9), 7.2e-4 (0.99)
+    EXPECT_LT(vertexWorst, 2.5e-3) << "rho " << rho; // measured 1.3e-3 (0.5), 2.4e-7, 9.5e-7, 1.3e-5
   }
 }
 
@@ -152,6 +155,50 @@ TEST(FaceClusterRadiosity, StiffSphereConservesEnergy)
               << " of the peak, mean " << sum / exactSum << " of the exact\n";
     EXPECT_LT(worst, 3.5e-3) << "rho " << rho;
   }
+}
+
+TEST(FaceClusterRadiosity, EnclosedSphereBalancesEachBounce)
+{
+  // 1280 facets at reflectance 0.999: the transfers' own errors lost 3e-4
+  // of the light per bounce (scale 1.00031 to balance), which the
+  // thousand bounces made a mean of 0.765 of the exact (worst 24% of the
+  // peak) without the balance (BalanceEnclosedScenes). Measured with it: worst 2.5e-3 of the
+  // peak, mean 0.99987; bounds 3.5e-3 and 5e-4.
+  const Scene sphere = MakeSphereInterior(1.0, 3, 0.999, RGB(1.0));
+  std::vector<Probe> probes;
+  const AnalyticReference reference = CentroidReference(sphere, probes);
+  ASSERT_EQ(reference.Irradiance.size(), probes.size());
+  FaceClusterRadiosity solver(sphere, FaceClusterSettings());
+  const SolverStatistics stats = solver.Solve();
+  EXPECT_EQ(stats.Stop, StopReason::Converged);
+  EXPECT_TRUE(solver.Statistics().Enclosed);
+  EXPECT_GT(solver.Statistics().EnergyScaleMax, 1.0);
+  EXPECT_LT(solver.Statistics().EnergyScaleMax, 1.002);
+  const std::vector<RGB> values = solver.Evaluate(probes);
+  double peak = 0.0, worst = 0.0, sum = 0.0, exactSum = 0.0;
+  for (const RGB& e : reference.Irradiance)
+  {
+    peak = std::max(peak, e.r);
+  }
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    worst = std::max(worst, std::abs(values[i].r - reference.Irradiance[i].r) / peak);
+    sum += values[i].r;
+    exactSum += reference.Irradiance[i].r;
+  }
+  std::cout << "1280-facet sphere rho 0.999: worst " << worst << ", mean " << sum / exactSum << ", scale "
+            << solver.Statistics().EnergyScaleMin << " to " << solver.Statistics().EnergyScaleMax << "\n";
+  EXPECT_LT(worst, 3.5e-3);
+  EXPECT_LT(std::abs(sum / exactSum - 1.0), 5e-4);
+
+  // An open scene (the Cornell box) is left as its transfers make it.
+  FaceClusterSettings leaves;
+  leaves.MaxBisections = 0;
+  FaceClusterRadiosity open(MakeCornellBox(), leaves);
+  open.Solve();
+  EXPECT_FALSE(open.Statistics().Enclosed);
+  EXPECT_EQ(open.Statistics().EnergyScaleMin, 1.0);
+  EXPECT_EQ(open.Statistics().EnergyScaleMax, 1.0);
 }
 
 TEST(FaceClusterRadiosity, PenumbraFromTheEmittersVisibleFraction)
