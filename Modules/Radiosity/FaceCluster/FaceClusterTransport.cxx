@@ -391,9 +391,12 @@ bool FaceClusterRadiosity::BisectOnTotals(std::vector<PendingTransfer>& pending)
         this->AddShooter(k1, j, pending);
       }
       any = true;
+      // Kept otherwise: what the element accepts in a later round adds to
+      // this sum, and a redo drops all of its light this iteration, so all
+      // of it must be listed.
+      this->AcceptedFrom[e].clear();
+      this->TotalResidual[e].clear();
     }
-    this->AcceptedFrom[e].clear();
-    this->TotalResidual[e].clear();
   }
   return any;
 }
