@@ -110,7 +110,9 @@ private:
   std::vector<std::uint32_t> RowOf; ///< per point, its row or UINT32_MAX
   std::vector<std::uint32_t> Rows;        ///< receivers, sorted by index (so by level)
   std::vector<std::size_t> LevelStart;    ///< into Rows, per level (+1)
-  std::vector<std::size_t> RowStart;      ///< into Senders/Weights (+1)
+  /// Per row, its range in Senders (and Weights, times WeightComponents):
+  /// the precomputed rows in order, rows added later at the table's end.
+  std::vector<std::size_t> RowStart, RowEnd;
   std::vector<std::uint32_t> Senders;
   /// Per sender: the weight (one float) when every object has one
   /// reflectance, applied per point (SenderReflectance) at each bounce;
