@@ -59,6 +59,12 @@ struct MeshlessOptions
   int EmitterSamples = 16;                 ///< visibility rays per receiver and emitter triangle
   int SkySamples = 1024;                    ///< sky quadrature directions per point (DirectLighting)
   int MaxBounces = 1000;
+  /// Relighting: the time a relight may spend gathering the receivers its
+  /// lighting wants beyond the transfer's rows (MeshlessTransfer::Indirect);
+  /// those left are gathered by the next relights, and until then the
+  /// coarser rows' fit stands in for them. 0: no limit (a relight is then
+  /// a fresh solve's answer).
+  double RelightGatherSeconds = 0.0;
   double Tolerance = 1e-3;                 ///< stop when a bounce carries less than this of the direct light
   double MaxTimeSeconds = 0.0;             ///< 0: no limit
   int Threads = 0;                         ///< 0: all cores
@@ -101,6 +107,8 @@ struct MeshlessStatistics
   /// RelightIndirectSeconds).
   std::size_t RelightRowsAdded = 0;
   double RelightRowsAddedSeconds = 0.0;
+  /// Receivers the last relight wanted but left for later (RelightGatherSeconds).
+  std::size_t RelightRowsDeferred = 0;
 };
 
 class MeshlessRadiosity

@@ -158,7 +158,7 @@ SolverStatistics MeshlessRadiosity::Relight(const Scene& lit, const ProgressCall
     }
     const MeshlessTransfer::Series series =
       this->Transfer->Indirect(this->Direct->Coefficients(), this->Settings.Tolerance, this->Settings.MaxBounces,
-        this->Settings.VariationThreshold * this->Scale);
+        this->Settings.VariationThreshold * this->Scale, this->Settings.RelightGatherSeconds);
     std::vector<RGB>& b = this->Solution->Coefficients();
     for (std::size_t j = 0; j < b.size(); ++j)
     {
@@ -168,6 +168,7 @@ SolverStatistics MeshlessRadiosity::Relight(const Scene& lit, const ProgressCall
     this->Stats.RelightBounces = series.Bounces;
     this->Stats.RelightRowsAdded = series.RowsAdded;
     this->Stats.RelightRowsAddedSeconds = series.RowsAddedSeconds;
+    this->Stats.RelightRowsDeferred = series.RowsDeferred;
     if (series.RowsAdded > 0)
     {
       // The transfer grew: its figures as they are now.

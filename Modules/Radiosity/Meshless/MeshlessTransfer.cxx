@@ -260,12 +260,12 @@ std::size_t MeshlessTransfer::MemoryBytes() const
 }
 
 MeshlessTransfer::Series MeshlessTransfer::Indirect(
-  const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold)
+  const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold, double gatherSeconds)
 {
   // The rows a lighting wants are known only once its series is summed
   // (the oracle follows the values), and each added row may want its own
   // children: summed again until every wanted receiver is a row (at most
-  // one pass per level).
+  // one pass per level), or the time for gathers is spent.
   const Stopwatch clock;
   std::vector<std::uint32_t> missing;
   Series out = this->Sum(direct, tolerance, maxBounces, threshold, missing);
@@ -273,6 +273,25 @@ MeshlessTransfer::Series MeshlessTransfer::Indirect(
   double addSeconds = 0.0;
   for (int pass = 0; !missing.empty() && pass <= this->Points.NumberOfLevels(); ++pass)
   {
+    std::sort(missing.begin(), missing.end()); // point order: the coarsest first
+    missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
+    if (gatherSeconds > 0.0)
+    {
+      // As many as the time left allows at the cost per row so far (a few
+      // to measure it first).
+      const double left = gatherSeconds - addSeconds;
+      if (left <= 0.0)
+      {
+        break;
+      }
+      const std::size_t allowed = added > 0
+        ? std::max<std::size_t>(1, static_cast<std::size_t>(left / (addSeconds / static_cast<double>(added))))
+        : 8;
+      if (missing.size() > allowed)
+      {
+        missing.resize(allowed);
+      }
+    }
     const double before = clock.Seconds();
     const std::size_t rows = this->Rows.size();
     this->AddRows(std::move(missing));
@@ -281,6 +300,8 @@ MeshlessTransfer::Series MeshlessTransfer::Indirect(
     missing.clear();
     out = this->Sum(direct, tolerance, maxBounces, threshold, missing);
   }
+  std::sort(missing.begin(), missing.end());
+  out.RowsDeferred = static_cast<std::size_t>(std::unique(missing.begin(), missing.end()) - missing.begin());
   out.RowsAdded = added;
   out.RowsAddedSeconds = addSeconds;
   return out;

@@ -68,6 +68,8 @@ public:
     /// (and kept for the relights after it).
     std::size_t RowsAdded = 0;
     double RowsAddedSeconds = 0.0;
+    /// Receivers wanted but not gathered: past `gatherSeconds`.
+    std::size_t RowsDeferred = 0;
   };
   /**
    * The indirect light of the direct field `direct` (coefficients, one per
@@ -78,9 +80,13 @@ public:
    * or coefficient exceeds `threshold`, irradiance units), so that the
    * lighting solved gives the solve back; a receiver the oracle wants that
    * is not a row is gathered then (its row added, the series summed
-   * again). Throws SceneError when the added rows outgrow the memory budget.
+   * again). With `gatherSeconds` > 0 the gathers stop once they took that
+   * long (the coarsest wanted first; the rest wait for the next call, the
+   * series summed over the rows there are). Throws SceneError when the
+   * added rows outgrow the memory budget.
    */
-  Series Indirect(const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold);
+  Series Indirect(const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold,
+    double gatherSeconds = 0.0);
 
   std::size_t Receivers() const { return this->Rows.size(); }
   std::size_t Entries() const { return this->Senders.size() + this->FitColumns.size(); }
