@@ -530,8 +530,9 @@ public:
    * not solved again: the lights, the sky and the triangles' emission may
    * move or change intensity and colour, and only the direct light is
    * computed anew, the indirect light following through the transfer
-   * (about a hundred milliseconds on the Cornell box; bench/results/
-   * relight.md). A change of geometry, reflectance or settings invalidates
+   * (about 10 ms on the Cornell box, a few hundred when the new lighting
+   * wants receivers the transfer lacks, gathered then and kept;
+   * bench/results/relight.md). A change of geometry, reflectance or settings invalidates
    * the transfer: that request solves and precomputes again, with a
    * warning naming what changed. Another method, or MPI ranks, solve every
    * time (the status says why).
