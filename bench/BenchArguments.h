@@ -22,7 +22,9 @@ struct BenchArguments
   /// end that its table has nowhere to go.
   bool Parse(int argc, char* argv[])
   {
-    if (argc < 2)
+    // An option where the directory goes (--help, or options first) gets the
+    // usage, not a full run writing into a directory named like the option.
+    if (argc < 2 || argv[1][0] == '-')
     {
       std::cerr << "usage: " << argv[0] << " <output dir> [--quick] [--bunny index.js]\n";
       return false;

@@ -106,8 +106,38 @@ std::size_t Visibility::RaysCast() const
   return this->Impl->Rays.load();
 }
 
+namespace
+{
+// The intersect context comes first so that Embree's context pointer is ours.
+struct PassingContext
+{
+  RTCIntersectContext Context;
+  const std::vector<unsigned>* GeometryToTriangle;
+  const std::function<bool(std::uint32_t)>* Passes;
+};
+
+void PassThrough(const RTCFilterFunctionNArguments* args)
+{
+  const auto* ctx = reinterpret_cast<const PassingContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i)
+  {
+    if (args->valid[i] != 0 &&
+      (*ctx->Passes)((*ctx->GeometryToTriangle)[RTCHitN_primID(args->hit, args->N, i)]))
+    {
+      args->valid[i] = 0; // not an occluder of this segment: traversal goes on
+    }
+  }
+}
+}
+
 void Visibility::TestSegments(
   const Vec3* from, const Vec3* to, std::size_t n, unsigned char* visible) const
+{
+  this->TestSegmentsPassing(from, to, n, {}, visible);
+}
+
+void Visibility::TestSegmentsPassing(const Vec3* from, const Vec3* to, std::size_t n,
+  const std::function<bool(std::uint32_t)>& passes, unsigned char* visible) const
 {
   if (this->Empty())
   {
@@ -119,8 +149,14 @@ void Visibility::TestSegments(
   }
   constexpr std::size_t Batch = 64;
   RTCRay rays[Batch];
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  PassingContext passing;
+  rtcInitIntersectContext(&passing.Context);
+  passing.GeometryToTriangle = &this->Impl->GeometryToTriangle;
+  passing.Passes = &passes;
+  if (passes)
+  {
+    passing.Context.filter = &PassThrough;
+  }
   std::size_t cast = 0;
   for (std::size_t start = 0; start < n; start += Batch)
   {
@@ -155,7 +191,7 @@ void Visibility::TestSegments(
     }
     if (k > 0)
     {
-      rtcOccluded1M(this->Impl->Scene, &context, rays, static_cast<unsigned>(k), sizeof(RTCRay));
+      rtcOccluded1M(this->Impl->Scene, &passing.Context, rays, static_cast<unsigned>(k), sizeof(RTCRay));
       for (std::size_t j = 0; j < k; ++j)
       {
         // Embree marks an occluded ray by setting tfar to -inf.

@@ -40,6 +40,15 @@ public:
   void TestSegments(const Vec3* from, const Vec3* to, std::size_t n, unsigned char* visible) const;
 
   /**
+   * As TestSegments, where the occluders `passes` accepts (scene triangle
+   * indices) let the segments through: a receiver's and an emitter's own
+   * triangles (face cluster radiosity's exact visibility). `passes` is
+   * called only for the triangles a segment meets. Thread-safe.
+   */
+  void TestSegmentsPassing(const Vec3* from, const Vec3* to, std::size_t n,
+    const std::function<bool(std::uint32_t)>& passes, unsigned char* visible) const;
+
+  /**
    * Every occluder that any of the segments from[i] -> to[i] passes through
    * (not only the nearest), appended to `triangles` as scene triangle indices
    * (sorted, without repeats). These are the blockers of a link (Hanrahan,

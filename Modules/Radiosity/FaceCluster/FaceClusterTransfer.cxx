@@ -241,21 +241,35 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
     const Vec3& x = p < np ? rr.Points[p] : rr.Controls[p - np];
     const Vec3& normal = p < np ? rr.Normals[p] : rr.ControlNormals[p - np];
     double visibleSum = 0.0, weightSum = 0.0;
+    // The emitter's nodes above the point's horizon; exact visibility of
+    // them all in one batch of rays.
+    thread_local std::vector<std::size_t> above;
+    thread_local std::vector<Vec3> ends;
+    thread_local std::vector<unsigned char> seen;
+    above.clear();
+    ends.clear();
     for (std::size_t q = 0; q < nq; ++q)
     {
+      const Vec3 r = er.Points[q] - x;
+      if (glm::dot(r, r) > 0.0 && glm::dot(normal, r) > 0.0)
+      {
+        above.push_back(q);
+        ends.push_back(er.Points[q]);
+      }
+    }
+    if (spacing <= 0.0)
+    {
+      seen.resize(ends.size());
+      visibility.Visible(x, ends.data(), ends.size(), receiver.Id, emitter.Id, seen.data());
+    }
+    for (std::size_t k = 0; k < above.size(); ++k)
+    {
+      const std::size_t q = above[k];
       const Vec3& y = er.Points[q];
       const Vec3 r = y - x;
       const double d2 = glm::dot(r, r);
-      if (!(d2 > 0.0))
-      {
-        continue;
-      }
       const Vec3 dir = r / std::sqrt(d2);
-      if (glm::dot(normal, dir) <= 0.0)
-      {
-        continue; // below the point's horizon
-      }
-      const double v = visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing);
+      const double v = spacing <= 0.0 ? double(seen[k]) : visibility.Transmittance(x, y, receiver.Id, emitter.Id, spacing);
       shadowed[p] |= v < 1.0 ? 1 : 0;
       visibleSum += er.Weights[q] * v;
       weightSum += er.Weights[q];

@@ -1,5 +1,6 @@
 #include "Radiosity/FaceCluster/FaceClusterVisibility.h"
 
+#include "Radiosity/Common/Visibility.h"
 #include "Radiosity/Hierarchical/Shaft.h"
 
 #include <algorithm>
@@ -104,6 +105,33 @@ bool SegmentCrossesBox(const FaceCluster& c, const Vec3& p, const Vec3& d, doubl
 FaceClusterVisibility::FaceClusterVisibility(const FaceClusterHierarchy& hierarchy)
   : Source(hierarchy)
 {
+}
+
+FaceClusterVisibility::~FaceClusterVisibility() = default;
+
+void FaceClusterVisibility::Visible(const Vec3& x, const Vec3* ys, std::size_t n,
+  std::uint32_t receiver, std::uint32_t emitter, unsigned char* visible) const
+{
+  const FaceClusterHierarchy& h = this->Source;
+  std::call_once(this->Built, [&]() {
+    this->Rays = std::make_unique<Visibility>(h.GetScene(), Visibility::AllTriangles(h.GetScene()));
+  });
+  Range skip[2];
+  const int skips = OwnRanges(h, receiver, emitter, skip);
+  const std::function<bool(std::uint32_t)> own = [&](std::uint32_t t) {
+    const std::uint32_t at = h.TrianglePosition(t);
+    for (int k = 0; k < skips; ++k)
+    {
+      if (skip[k].Contains(at, 1))
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  thread_local std::vector<Vec3> from;
+  from.assign(n, x);
+  this->Rays->TestSegmentsPassing(from.data(), ys, n, own, visible);
 }
 
 std::size_t FaceClusterVisibility::NodesVisited()
