@@ -187,6 +187,7 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       options.GatherRays = this->GatherRays;
       options.VariationThreshold = this->VariationThreshold;
       options.SolidAngleThreshold = this->SolidAngleThreshold;
+      options.RelightGatherSeconds = this->MaxRelightGatherTime;
       return std::make_shared<radiosity::MeshlessMethod>(scene, options);
     }
     case FaceCluster:
@@ -644,6 +645,7 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SurfaceOutput: " << (this->SurfaceOutput ? "On" : "Off") << "\n";
   os << indent << "ProductOutput: " << (this->ProductOutput ? "On" : "Off") << "\n";
   os << indent << "Relighting: " << (this->Relighting ? "On" : "Off") << "\n";
+  os << indent << "MaxRelightGatherTime: " << this->MaxRelightGatherTime << "\n";
   os << indent << "RelightingStatus: " << this->RelightingStatus << "\n";
   os << indent << "RelightingPrecomputeSeconds: " << this->RelightingPrecomputeSeconds << "\n";
   os << indent << "ConformingBoundaries: " << (this->ConformingBoundaries ? "On" : "Off") << "\n";

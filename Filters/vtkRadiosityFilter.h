@@ -542,6 +542,21 @@ public:
   vtkBooleanMacro(Relighting, bool);
   ///@}
 
+  ///@{
+  /**
+   * Relighting: the most seconds a relight may spend gathering the
+   * receivers its lighting wants beyond the kept transfer (0, the default:
+   * no limit, every relight a fresh solve's answer). With a limit the
+   * coarsest receivers are gathered first and the rest wait for the next
+   * relights, the coarser receivers' fit standing in for them meanwhile (the
+   * status counts them: "N receivers deferred"); requesting the same
+   * lighting again gathers on. For interactive light moves (e.g. 0.02 with
+   * vtkRadiosityPass). Changing it does not invalidate the transfer.
+   */
+  vtkSetClampMacro(MaxRelightGatherTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaxRelightGatherTime, double);
+  ///@}
+
   /**
    * What the last request did about relighting, also in port 0's field
    * data as the string array `Relighting`: "off"; "precomputed: ..." (the
@@ -628,6 +643,7 @@ protected:
   bool SurfaceOutput = true;
   bool ProductOutput = true;
   bool Relighting = false;
+  double MaxRelightGatherTime = 0.0;
   int MaxDiscontinuitiesPerLeaf = 10;
   double MinDiscontinuityWeight = 0.05;
   bool ConformingBoundaries = true;

@@ -42,6 +42,7 @@ bool vtkRadiosityFilter::RelightWith(std::shared_ptr<radiosity::RadiositySolver>
   }
   try
   {
+    previous->SetRelightGatherSeconds(this->MaxRelightGatherTime);
     this->Statistics = previous->Relight(scene, progress);
   }
   catch (const radiosity::SceneError& e)
@@ -60,6 +61,10 @@ bool vtkRadiosityFilter::RelightWith(std::shared_ptr<radiosity::RadiositySolver>
     if (m.RelightRowsAdded > 0)
     {
       status << ", " << m.RelightRowsAdded << " receivers added to the transfer";
+    }
+    if (m.RelightRowsDeferred > 0)
+    {
+      status << ", " << m.RelightRowsDeferred << " receivers deferred to the next relights";
     }
     this->RelightingStatus = status.str();
   }

@@ -3,7 +3,8 @@
 // vtkLight or a recoloured lamp is relit, not solved, and equals a fresh
 // solve of the same input within 1% of the peak; a changed reflectance or
 // setting invalidates the transfer with a warning naming the change; a
-// method without relighting says so.
+// limit on the gathers per relight defers receivers to the next requests,
+// which end at a fresh solve's answer; a method without relighting says so.
 #include "vtkCellData.h"
 #include "vtkCornellBoxSource.h"
 #include "vtkDataArray.h"
@@ -113,6 +114,37 @@ int TestRadiosityFilterRelighting(int, char*[])
   const double recoloured = AgainstFreshSolve(radiosity, scene, bulb);
   std::cout << "  against a fresh solve: " << recoloured << " of the peak\n";
   ok &= Check(recoloured < 0.01, "the recoloured lamp equals a fresh solve within 1%");
+
+  // A limit on the gathers per relight (MaxRelightGatherTime): the bulb
+  // moved into a corner wants receivers the transfer lacks; at a microsecond
+  // a relight most of them wait, and requesting the same lighting again
+  // gathers on until none is left, then a fresh solve's answer.
+  radiosity->SetMaxRelightGatherTime(1e-6);
+  bulb->SetPosition(bounds[0] + 0.9 * size[0], bounds[2] + 0.1 * size[1], bounds[4] + 0.9 * size[2]);
+  radiosity->Update();
+  const std::string deferredFirst = radiosity->GetRelightingStatus();
+  std::cout << "bulb in a corner, 1 us of gathers: " << deferredFirst << "\n";
+  ok &= Check(StartsWith(deferredFirst, "relit: ") && deferredFirst.find(" deferred ") != std::string::npos,
+    "a relight past its gather time defers receivers and says so");
+  const double firstError = AgainstFreshSolve(radiosity, scene, bulb);
+  int requests = 1;
+  while (radiosity->GetRelightingStatus().find(" deferred ") != std::string::npos && requests < 200)
+  {
+    radiosity->Modified(); // the same lighting requested again
+    radiosity->Update();
+    ++requests;
+  }
+  const double lastError = AgainstFreshSolve(radiosity, scene, bulb);
+  std::cout << "  against a fresh solve: " << firstError << " of the peak at the first request, "
+            << lastError << " after " << requests << " (" << radiosity->GetRelightingStatus() << ")\n";
+  ok &= Check(StartsWith(radiosity->GetRelightingStatus(), "relit: ") &&
+      radiosity->GetRelightingStatus().find(" deferred ") == std::string::npos,
+    "the same lighting requested again gathers the deferred receivers");
+  // Measured: 8.7e-2 of the peak at the first request (8 receivers added,
+  // 92 deferred), 5.4e-9 after 13 requests.
+  ok &= Check(lastError < 0.01, "then equals a fresh solve within 1%");
+  ok &= Check(firstError > 100.0 * lastError, "the first request, its receivers deferred, was farther off");
+  radiosity->SetMaxRelightGatherTime(0.0);
 
   // A reflectance changed: the transfer no longer applies; solved again.
   vtkDataArray* reflectance = scene->GetCellData()->GetArray("Reflectance");

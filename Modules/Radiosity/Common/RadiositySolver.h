@@ -136,6 +136,9 @@ public:
     (void)progress;
     throw SceneError(std::string(this->MethodName()) + " radiosity has no relighting (meshless has)");
   }
+  /// The time a relight may spend adding to its transfer (0: no limit; the
+  /// rest waits for the next relights). Ignored by a method without relighting.
+  virtual void SetRelightGatherSeconds(double seconds) { (void)seconds; }
   ///@}
   const Scene& GetScene() const { return *this->SceneRef; }
   std::shared_ptr<const Scene> SharedScene() const { return this->SceneRef; }

@@ -31,6 +31,7 @@ public:
   bool HasRelighting() const override { return this->Solver.HasTransfer(); }
   bool PrecomputeRelighting(const ProgressCallback& progress) override;
   SolverStatistics Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress) override;
+  void SetRelightGatherSeconds(double seconds) override { this->Solver.SetRelightGatherSeconds(seconds); }
 };
 } // namespace radiosity
 

@@ -142,6 +142,12 @@ public:
 
   const Scene& GetScene() const { return *this->SourceScene; }
   const MeshlessOptions& Options() const { return this->Settings; }
+  /// MeshlessOptions::RelightGatherSeconds for the next relights (not a
+  /// setting the transfer depends on: it only paces the gathers).
+  void SetRelightGatherSeconds(double seconds)
+  {
+    this->Settings.RelightGatherSeconds = seconds > 0.0 ? seconds : 0.0;
+  }
   /// False before placement: a scene without emitters, or an abort before
   /// the points were placed (Points(), Irradiance() and DirectIrradiance()
   /// are then not to be called).

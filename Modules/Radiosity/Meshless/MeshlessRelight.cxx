@@ -109,6 +109,9 @@ SolverStatistics MeshlessRadiosity::Relight(const Scene& lit, const ProgressCall
   return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
     SolverStatistics stats;
     this->SourceScene = &lit;
+    // The caller may release the scene the transfer was built on (the
+    // filter does, each request its own scene): its gathers read this one.
+    this->Transfer->SetScene(lit);
     this->FindEmitters();
     this->Lights.reset();
     if (!lit.Lighting.Empty())

@@ -23,7 +23,7 @@ constexpr std::size_t RowsPerBlock = 2048;
 MeshlessTransfer::MeshlessTransfer(const Scene& scene, const PointHierarchy& points, const Visibility& rays,
   const MeshlessNeighbourhoods& lists, const MeshlessOptions& options, std::vector<std::uint32_t> receivers, const std::function<bool()>& keepGoing,
   double memoryBudgetBytes)
-  : SourceScene(scene)
+  : SourceScene(&scene)
   , Rays(rays)
   , Lists(lists)
   , Options(options)
@@ -103,7 +103,7 @@ void MeshlessTransfer::GatherRow(std::uint32_t j, const ShepardField& basis, std
   const bool uniform = this->WeightComponents == 1;
   thread_local std::vector<std::pair<std::uint32_t, RGB>> raw;
   raw.clear();
-  GatherWeights(this->SourceScene, this->Points, basis, this->Rays, this->Options, j,
+  GatherWeights(*this->SourceScene, this->Points, basis, this->Rays, this->Options, j,
     [&](std::uint32_t k, double w, const RGB& reflectance) {
       raw.emplace_back(k, uniform ? RGB(w) : w * reflectance);
     });

@@ -88,6 +88,11 @@ public:
   Series Indirect(const std::vector<RGB>& direct, double tolerance, int maxBounces, double threshold,
     double gatherSeconds = 0.0);
 
+  /// The scene the rows added later gather from: a relit scene (the same
+  /// surfaces, SameSurfaces) replaces the one the transfer was built on,
+  /// which its owner may then release.
+  void SetScene(const Scene& scene) { this->SourceScene = &scene; }
+
   std::size_t Receivers() const { return this->Rows.size(); }
   std::size_t Entries() const { return this->Senders.size() + this->FitColumns.size(); }
   std::size_t MemoryBytes() const;
@@ -107,7 +112,7 @@ private:
     std::vector<std::uint32_t>& missing) const;
   void CheckMemory(std::size_t done, std::size_t of) const;
 
-  const Scene& SourceScene;
+  const Scene* SourceScene;
   const Visibility& Rays;
   const MeshlessNeighbourhoods& Lists;
   MeshlessOptions Options;
