@@ -167,6 +167,43 @@ TEST(FaceClusterRadiosity, StiffSphereConservesEnergy)
   }
 }
 
+TEST(FaceClusterRadiosity, StiffSphereTheSameAtEveryScale)
+{
+  // The 320-facet sphere at reflectance 0.8 and 0.99 scaled to 1e-3 m and
+  // 1e3 m with the same emission (inside a sphere the irradiance does not
+  // depend on its radius): against the unit sphere's exact answer.
+  // Measured: reflectance 0.8 8.2e-3 / 7.8e-3 of the peak at worst, 0.99
+  // 2.7e-3 / 1.8e-3 (at 1 m 2.7e-3); mean 0.9997 and 0.99998. Bound 1e-2
+  // (the issue asks for 2% at these scales, 1% at high reflectance).
+  for (double rho : { 0.8, 0.99 })
+  {
+    const Scene unit = MakeSphereInterior(1.0, 2, rho, RGB(1.0));
+    std::vector<Probe> unitProbes;
+    const AnalyticReference reference = CentroidReference(unit, unitProbes);
+    for (double scale : { 1e-3, 1e3 })
+    {
+      Scene sphere = unit;
+      std::vector<Probe> probes = unitProbes;
+      for (Vec3& p : sphere.Points)
+      {
+        p *= scale;
+      }
+      for (Probe& p : probes)
+      {
+        p.Position *= scale;
+      }
+      FaceClusterRadiosity solver(sphere, FaceClusterSettings());
+      EXPECT_EQ(solver.Solve().Stop, StopReason::Converged);
+      double worst = 0.0, mean = 0.0;
+      WorstAndMean(solver.Evaluate(probes), reference, worst, mean);
+      std::cout << "sphere rho " << rho << " at " << scale << " m: worst " << worst << " of the peak, mean "
+                << mean << " of the exact\n";
+      EXPECT_LT(worst, 1e-2) << "rho " << rho << " at " << scale << " m";
+      EXPECT_LT(std::abs(mean - 1.0), 1e-3);
+    }
+  }
+}
+
 TEST(FaceClusterRadiosity, EnclosedSphereBalancesEachBounce)
 {
   // 1280 facets at reflectance 0.999: the transfers' own errors lost 3e-4
@@ -204,25 +241,39 @@ TEST(FaceClusterRadiosity, EnclosedSphereBalancesEachBounce)
 
 TEST(FaceClusterRadiosity, LargeSheetsMissingTheirBoxFitFromQuantileNodes)
 {
-  // The direct light of the cap inside a 20480-facet sphere (reflectance
-  // 0: every point receives the same irradiance). Its clusters are sheets
-  // whose triangles cover about half of their boxes, and a 40-triangle one
-  // had 2 of its 9 nodes on its surface: the linear fit's gradient was a
-  // guess, and a leaf below it got 16% less light at one edge. With nodes
-  // at the area quantiles there (MakeSurfaceRule): worst 5.3e-2 of the
-  // exact, 1 probe beyond 5%, mean 0.9995; bound 7e-2. (At reflectance
-  // 0.99 the worst was 59%, now 1.6%.)
-  const Scene sphere = MakeSphereInterior(1.0, 5, 0.0, RGB(1.0));
+  // Inside a 20480-facet sphere lit by its cap, every point receives the
+  // same irradiance. Its clusters are sheets whose triangles cover about
+  // half of their boxes: a 40-triangle one had 2 of its 9 nodes on its
+  // surface (the linear fit's gradient a guess: a leaf below it got 16%
+  // less direct light at one edge), a 30-triangle one 3 (the fit exactly
+  // determined, its departures unseen at the nodes). With nodes at the area
+  // quantiles wherever a sheet of more than 9 triangles misses nodes
+  // (MakeSurfaceRule), measured:
+  //   direct light (reflectance 0): worst 4.3e-2 of the exact, mean 0.99955
+  //     (5.3e-2 with quantile nodes on the 2-node sheets alone); bound 5.5e-2;
+  //   reflectance 0.99: worst 7.2e-3, mean 0.99956 (1.6e-2 before, 59% with
+  //     neither); the issue's 1%: bound 1e-2.
+  const Scene direct = MakeSphereInterior(1.0, 5, 0.0, RGB(1.0));
   std::vector<Probe> probes;
-  const AnalyticReference reference = CentroidReference(sphere, probes);
+  const AnalyticReference reference = CentroidReference(direct, probes);
   ASSERT_EQ(reference.Irradiance.size(), probes.size());
-  FaceClusterRadiosity solver(sphere, FaceClusterSettings());
+  FaceClusterRadiosity solver(direct, FaceClusterSettings());
   solver.Solve();
   double worst = 0.0, mean = 0.0;
   WorstAndMean(solver.Evaluate(probes), reference, worst, mean);
   std::cout << "20480-facet sphere, direct light: worst " << worst << ", mean " << mean << "\n";
-  EXPECT_LT(worst, 7e-2);
+  EXPECT_LT(worst, 5.5e-2);
   EXPECT_LT(std::abs(mean - 1.0), 2e-3);
+
+  const Scene stiff = MakeSphereInterior(1.0, 5, 0.99, RGB(1.0));
+  std::vector<Probe> stiffProbes;
+  const AnalyticReference stiffReference = CentroidReference(stiff, stiffProbes);
+  FaceClusterRadiosity stiffSolver(stiff, FaceClusterSettings());
+  stiffSolver.Solve();
+  WorstAndMean(stiffSolver.Evaluate(stiffProbes), stiffReference, worst, mean);
+  std::cout << "20480-facet sphere, reflectance 0.99: worst " << worst << ", mean " << mean << "\n";
+  EXPECT_LT(worst, 1e-2);
+  EXPECT_LT(std::abs(mean - 1.0), 1e-3);
 }
 
 TEST(FaceClusterRadiosity, PenumbraFromTheEmittersVisibleFraction)
