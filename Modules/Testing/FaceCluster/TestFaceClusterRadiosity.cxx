@@ -59,6 +59,19 @@ void WorstAndMean(const std::vector<RGB>& values, const AnalyticReference& refer
 
 /// A probe at every triangle's centroid, facing as it does, and the closed
 /// form's irradiance there.
+/// The scene and its probes scaled by `scale` about the origin.
+void ScaleSceneAndProbes(double scale, Scene& scene, std::vector<Probe>& probes)
+{
+  for (Vec3& p : scene.Points)
+  {
+    p *= scale;
+  }
+  for (Probe& p : probes)
+  {
+    p.Position *= scale;
+  }
+}
+
 AnalyticReference CentroidReference(const Scene& scene, std::vector<Probe>& probes)
 {
   probes.clear();
@@ -184,14 +197,7 @@ TEST(FaceClusterRadiosity, StiffSphereTheSameAtEveryScale)
     {
       Scene sphere = unit;
       std::vector<Probe> probes = unitProbes;
-      for (Vec3& p : sphere.Points)
-      {
-        p *= scale;
-      }
-      for (Probe& p : probes)
-      {
-        p.Position *= scale;
-      }
+      ScaleSceneAndProbes(scale, sphere, probes);
       FaceClusterRadiosity solver(sphere, FaceClusterSettings());
       EXPECT_EQ(solver.Solve().Stop, StopReason::Converged);
       double worst = 0.0, mean = 0.0;
@@ -334,14 +340,7 @@ TEST(FaceClusterRadiosity, CoarseInputHalvedWithinTwoPercentAtEveryScale)
     {
       Scene scene = unit;
       std::vector<Probe> probes = unitProbes;
-      for (Vec3& p : scene.Points)
-      {
-        p *= scale;
-      }
-      for (Probe& p : probes)
-      {
-        p.Position *= scale;
-      }
+      ScaleSceneAndProbes(scale, scene, probes);
       FaceClusterRadiosity solver(scene, FaceClusterSettings());
       EXPECT_EQ(solver.Solve().Stop, StopReason::Converged);
       const auto errors = RelativeErrors(solver.Evaluate(probes), reference.Irradiance);
