@@ -56,9 +56,9 @@ bool MeshlessRadiosity::PrecomputeTransfer(const ProgressCallback& progress)
       this->Lists.reset();
       return false;
     }
-    // The sky's visibility at every point the direct light was computed
-    // at, cast once: relights then replay the quadrature without rays. Kept
-    // even without a sky now (a relight may add one; cast then, once).
+    // The sky's visibility at every point, cast once: relights then replay
+    // the quadrature without rays. Kept even without a sky now (a relight
+    // may add one; cast then, once per point).
     {
       const Scene& scene = *this->SourceScene;
       if (!this->Lights)
@@ -73,12 +73,13 @@ bool MeshlessRadiosity::PrecomputeTransfer(const ProgressCallback& progress)
       this->SkyMomentUp = scene.Lighting.SkyLight.Up;
       if (this->Lights->HasSky())
       {
-        tbb::parallel_for(std::size_t(0), this->LightKnown.size(), [&](std::size_t j) {
-          if (this->LightKnown[j])
-          {
-            this->CachedSky(static_cast<std::uint32_t>(j));
-          }
-        });
+        // At every point, not only those the solve's direct light was
+        // computed at: a moved light's oracle picks new ones, and their
+        // 1024 sky rays each were most of the office's first relights (its
+        // direct light 23 to 48 ms, 7 ms with every mask cast; the
+        // precomputation 0.6 s longer, of 21 s).
+        tbb::parallel_for(std::size_t(0), points.Points().size(),
+          [&](std::size_t j) { this->CachedSky(static_cast<std::uint32_t>(j)); });
       }
       if (scene.Lighting.Empty())
       {
