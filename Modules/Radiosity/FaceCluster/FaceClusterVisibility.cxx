@@ -4,6 +4,7 @@
 #include "Radiosity/Hierarchical/Shaft.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 
 namespace radiosity
@@ -41,6 +42,33 @@ int OwnRanges(const FaceClusterHierarchy& h, std::uint32_t receiver, std::uint32
   }
   return skips;
 }
+
+/// Whether the triangles [first, first + count) lie inside one of the own ranges.
+bool InsideOwn(const Range* skip, int skips, std::uint32_t first, std::uint32_t count)
+{
+  for (int k = 0; k < skips; ++k)
+  {
+    if (skip[k].Contains(first, count))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The own triangles' test for Visibility::TestSegmentsPassing, held by
+/// reference (std::cref) so that the std::function allocates nothing on
+/// this hot path (one call per receiver point and transfer).
+struct OwnTriangles
+{
+  const FaceClusterHierarchy& Hierarchy;
+  Range Skip[2];
+  int Skips = 0;
+  bool operator()(std::uint32_t t) const
+  {
+    return InsideOwn(this->Skip, this->Skips, this->Hierarchy.TrianglePosition(t), 1);
+  }
+};
 }
 
 bool LineHitsTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, const Vec3& d, double& t)
@@ -116,22 +144,12 @@ void FaceClusterVisibility::Visible(const Vec3& x, const Vec3* ys, std::size_t n
   std::call_once(this->Built, [&]() {
     this->Rays = std::make_unique<Visibility>(h.GetScene(), Visibility::AllTriangles(h.GetScene()));
   });
-  Range skip[2];
-  const int skips = OwnRanges(h, receiver, emitter, skip);
-  const std::function<bool(std::uint32_t)> own = [&](std::uint32_t t) {
-    const std::uint32_t at = h.TrianglePosition(t);
-    for (int k = 0; k < skips; ++k)
-    {
-      if (skip[k].Contains(at, 1))
-      {
-        return true;
-      }
-    }
-    return false;
-  };
+  OwnTriangles own{ h, {}, 0 };
+  own.Skips = OwnRanges(h, receiver, emitter, own.Skip);
+  const std::function<bool(std::uint32_t)> passes = std::cref(own);
   thread_local std::vector<Vec3> from;
   from.assign(n, x);
-  this->Rays->TestSegmentsPassing(from.data(), ys, n, own, visible);
+  this->Rays->TestSegmentsPassing(from.data(), ys, n, passes, visible);
 }
 
 std::size_t FaceClusterVisibility::NodesVisited()
@@ -167,13 +185,12 @@ double FaceClusterVisibility::Transmittance(const Vec3& x, const Vec3& y, std::u
     const FaceCluster* c = h.InternalCluster(id);
     const std::uint32_t first = c ? c->First : h.TrianglePosition(id);
     const std::uint32_t count = c ? c->Count : 1u;
-    bool inside = false, around = false;
+    bool around = false;
     for (int k = 0; k < skips; ++k)
     {
-      inside = inside || skip[k].Contains(first, count);
       around = around || skip[k].Overlaps(first, count);
     }
-    if (inside)
+    if (InsideOwn(skip, skips, first, count))
     {
       continue;
     }
@@ -252,12 +269,7 @@ bool FaceClusterVisibility::ShaftBlockers(const TriangleCorners& receiver, const
     const FaceCluster* c = h.InternalCluster(id);
     const std::uint32_t first = c ? c->First : h.TrianglePosition(id);
     const std::uint32_t count = c ? c->Count : 1u;
-    bool inside = false;
-    for (int k = 0; k < skips; ++k)
-    {
-      inside = inside || skip[k].Contains(first, count);
-    }
-    if (inside)
+    if (InsideOwn(skip, skips, first, count))
     {
       continue;
     }
