@@ -138,6 +138,7 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
           seen[b] = static_cast<double>(count) / rs.Count;
         }
         const Vec3 c(this->Clusters->InternalCluster(p.Receiver)->Centroid);
+        const Vec3 axis = this->InternalBounds[p.Receiver - this->Triangles].Axis;
         Vec3 e(0.0);
         double g[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
         for (int b = 0; b < qs.Count; ++b)
@@ -145,7 +146,9 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
           const Vec3 d = c - qs.Point[b];
           const double r2 = glm::dot(d, d);
           const double md = glm::dot(qs.Normal[b], d);
-          if (!(seen[b] > 0) || !(r2 > 0) || md <= 0)
+          // Behind the receiver's plane (a nearly flat receiver that the
+          // source straddles; Refine) or facing away: no light.
+          if (!(seen[b] > 0) || !(r2 > 0) || md <= 0 || glm::dot(axis, d) >= 0)
           {
             continue;
           }
