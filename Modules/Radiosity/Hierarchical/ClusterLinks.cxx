@@ -42,20 +42,6 @@ constexpr double SmallOpening = 1.0;
 /// this angle from the axis is off by at most sin(angle) of the link's bound.
 /// Without it every cluster grazed by a source was split down to its triangles.
 constexpr double NearlyFlatCone = 0.125;
-/// A link whose largest transfer (the bound with the kernel's cosines at
-/// their largest) is at most this share of the link tolerance is sampled up
-/// to WidestOpening, whatever its relative error there (7-16% at a half on
-/// the closed cube). Without it every pair of nearly coplanar neighbours (a
-/// scan's slight concave edges) within eight radii of each other was linked
-/// down to its triangles, however little light it carried. Measured (scratch
-/// runs, 2 cores, both with the nearly flat receivers above): the
-/// 20,480-triangle sphere (rho 0.8) keeps its error (1.83e-3 against
-/// 1.79e-3) with 4.6 million links instead of 8.3 (11.6 before either), the
-/// bunny room at 30k triangles 3.0 million instead of 5.9 (10.1). A share of
-/// a quarter gave the sphere 5.0e-3; weighting the plain bound by the
-/// opening squared instead gave 4.7e-3 whatever the link tolerance.
-constexpr double NegligibleShare = 1.0 / 16.0;
-constexpr double WidestOpening = 0.5;
 } // namespace
 
 ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceClusterHierarchy> hierarchy,
@@ -212,32 +198,6 @@ double ClusterLinks::Bound(const Bounds& r, const Bounds& q, std::uint32_t sourc
                  : std::numeric_limits<double>::infinity();
 }
 
-double ClusterLinks::LargestTransfer(const Bounds& r, const Bounds& q, std::uint32_t source) const
-{
-  const Vec3 d = q.Centre - r.Centre;
-  const double distance = glm::length(d);
-  const Vec3 w = d / distance;
-  const double alpha = std::asin(std::min(1.0, (r.Radius + q.Radius) / distance));
-  // Every direction between the two spheres lies within alpha of w, every
-  // normal within its cone of the axis.
-  const auto largestCosine = [alpha](const Vec3& axis, double cone, const Vec3& towards) {
-    const double angle = std::acos(std::clamp(glm::dot(axis, towards), -1.0, 1.0));
-    return std::cos(std::clamp(angle - cone - alpha, 0.0, HalfPi));
-  };
-  return this->Bound(r, q, source) * largestCosine(r.Axis, r.ConeAngle, w) * largestCosine(q.Axis, q.ConeAngle, -w);
-}
-
-double ClusterLinks::SampledError(
-  const Bounds& r, const Bounds& q, std::uint32_t source, double opening, double quarter) const
-{
-  if (opening <= quarter)
-  {
-    return this->Bound(r, q, source);
-  }
-  return opening <= WidestOpening ? this->LargestTransfer(r, q, source) / NegligibleShare
-                                  : std::numeric_limits<double>::infinity();
-}
-
 void ClusterLinks::PullRadiosity()
 {
   const std::vector<RGB>& elements = *this->ElementRadiosity;
@@ -293,7 +253,7 @@ void ClusterLinks::Refine(
       const double distance = glm::length(Q.Centre - R.Centre);
       const bool small = this->Mesh.LongestEdge(ElementOf(r)) <= this->MinEdge &&
         this->Mesh.LongestEdge(ElementOf(q)) <= this->MinEdge && R.Radius + Q.Radius <= SmallOpening * distance;
-      const bool distant = this->SampledError(R, Q, q, (R.Radius + Q.Radius) / distance, DistantElements) <= epsilon;
+      const bool distant = R.Radius + Q.Radius <= DistantElements * distance && this->Bound(R, Q, q) <= epsilon;
       const bool apart = distance > R.Radius + Q.Radius;
       if (apart && this->Mesh.LongestEdge(ElementOf(r)) <= this->MinEdge &&
         this->Mesh.LongestEdge(ElementOf(q)) > this->MinEdge && !small && !distant)
@@ -332,6 +292,7 @@ void ClusterLinks::Refine(
   }
   const Vec3 d = Q.Centre - R.Centre;
   const double distance = glm::length(d);
+  const double bound = this->Bound(R, Q, q);
   const auto splittable = [&](bool element, std::uint32_t node) {
     return !element || this->Mesh.LongestEdge(ElementOf(node)) > this->MinEdge;
   };
@@ -345,7 +306,7 @@ void ClusterLinks::Refine(
     this->Deferred.push_back({ r, q });
     return;
   }
-  if (this->SampledError(R, Q, q, (R.Radius + Q.Radius) / distance, SampledOpening) <= epsilon || (!sr && !sq))
+  if ((bound <= epsilon && R.Radius + Q.Radius <= SampledOpening * distance) || (!sr && !sq))
   {
     const double alpha = std::asin(std::min(1.0, (R.Radius + Q.Radius) / distance));
     // A cluster receives when every triangle of it faces the whole source,
@@ -423,11 +384,7 @@ std::size_t ClusterLinks::RefineAgain(double epsilon, std::vector<Pair>& out, co
 {
   std::vector<Pair> again;
   const auto tooLarge = [&](std::uint32_t r, std::uint32_t q) {
-    // Held to the error it was accepted with; links wider than that, taken
-    // because neither end could split, to the plain bound.
-    const Bounds R = this->BoundsOf(r), Q = this->BoundsOf(q);
-    const double opening = (R.Radius + Q.Radius) / glm::length(Q.Centre - R.Centre);
-    if ((opening > WidestOpening ? this->Bound(R, Q, q) : this->SampledError(R, Q, q, opening, SampledOpening)) > epsilon)
+    if (this->Bound(this->BoundsOf(r), this->BoundsOf(q), q) > epsilon)
     {
       again.push_back({ r, q });
       return true;

