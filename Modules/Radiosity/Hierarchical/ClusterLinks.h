@@ -28,8 +28,10 @@
 //   normal cone (half angle beta around its mean normal) and the cone of
 //   directions to the source (half angle alpha from the two spheres) keep
 //   every n_t . (y - x) positive: angle(axis, direction) + beta + alpha < 90
-//   degrees, and its radius is at most a quarter of the distance; otherwise
-//   the receiver is split. The vector is kept to first order about the
+//   degrees, or when the cluster is nearly flat (beta at most 0.125 rad:
+//   the source's samples behind its plane are then left out of the
+//   transfer, as an element's are), and its radius is at most a quarter of
+//   the distance; otherwise the receiver is split. The vector is kept to first order about the
 //   cluster's centroid (its gradient from the source's samples, as the
 //   higher-order bases of Gobbetti et al. 2003 do): at zeroth order a
 //   triangle away from the centroid was off by up to 20% on the inside of a
