@@ -287,6 +287,38 @@ bool CollectInSphere(RTCPointQueryFunctionArguments* args)
   q->Hits->push_back((*q->GeometryToTriangle)[args->primID]);
   return false; // the query sphere stays as it is
 }
+
+struct FilteredSphereQuery
+{
+  const std::vector<unsigned>* GeometryToTriangle;
+  const std::function<bool(std::uint32_t)>* Keep;
+  std::size_t Most;
+  std::vector<std::uint32_t>* Hits;
+  std::size_t Kept;
+};
+
+bool CollectKeptInSphere(RTCPointQueryFunctionArguments* args)
+{
+  auto* q = static_cast<FilteredSphereQuery*>(args->userPtr);
+  if (q->Kept > q->Most)
+  {
+    return false;
+  }
+  const std::uint32_t t = (*q->GeometryToTriangle)[args->primID];
+  // A triangle the BVH split over several leaves is met more than once.
+  if (std::find(q->Hits->end() - static_cast<std::ptrdiff_t>(q->Kept), q->Hits->end(), t) != q->Hits->end() ||
+    !(*q->Keep)(t))
+  {
+    return false;
+  }
+  q->Hits->push_back(t);
+  if (++q->Kept > q->Most)
+  {
+    args->query->radius = 0.f; // enough: the traversal ends
+    return true;
+  }
+  return false;
+}
 }
 
 namespace
@@ -364,6 +396,21 @@ void Visibility::OccludersInSphere(
   rtcInitPointQueryContext(&context);
   SphereQuery user{ &this->Impl->GeometryToTriangle, &triangles };
   rtcPointQuery(this->Impl->Scene, &query, &context, &CollectInSphere, &user);
+}
+
+bool Visibility::OccludersInSphere(const Vec3& centre, double radius,
+  const std::function<bool(std::uint32_t)>& keep, std::size_t most, std::vector<std::uint32_t>& triangles) const
+{
+  if (this->Empty())
+  {
+    return true;
+  }
+  RTCPointQuery query = this->Impl->PointQuery(centre, static_cast<float>(radius * (1.0 + 1e-6) + this->Epsilon));
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  FilteredSphereQuery user{ &this->Impl->GeometryToTriangle, &keep, most, &triangles, 0 };
+  rtcPointQuery(this->Impl->Scene, &query, &context, &CollectKeptInSphere, &user);
+  return user.Kept <= most;
 }
 
 bool Visibility::Intersect(const Vec3& origin, const Vec3& direction, double& t,

@@ -64,6 +64,15 @@ public:
    */
   void OccludersInSphere(
     const Vec3& centre, double radius, std::vector<std::uint32_t>& triangles) const;
+  /**
+   * The same, keeping only the occluders `keep` accepts, as the query meets
+   * them, and stopping once more than `most` are kept: then returns false
+   * (the list holds most + 1 of them), true when it holds them all. A shaft
+   * that crosses a dense mesh is told it has too many blockers without every
+   * triangle in its sphere being listed first.
+   */
+  bool OccludersInSphere(const Vec3& centre, double radius, const std::function<bool(std::uint32_t)>& keep,
+    std::size_t most, std::vector<std::uint32_t>& triangles) const;
 
   /**
    * The triangle t (scene index) that minimises `distance(t)` among those

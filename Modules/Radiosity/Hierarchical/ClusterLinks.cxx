@@ -28,20 +28,8 @@ constexpr double ReceiverOpening = 0.25;
 /// Two elements whose spheres' radii sum to at most this fraction of their
 /// distance are linked with sampled visibility, not blockers.
 constexpr double DistantElements = 0.25;
-/// A link sampled at a cluster (K points with sampled visibility) only when
-/// the two spheres' radii sum to at most this fraction of the distance.
-/// Measured on a closed cube of 192 triangles, rho 0 and emission 1, without
-/// the row normalisation: irradiance 0.93 to 1.16 at 0.5, 0.96 to 1.10 at
-/// 0.35, 0.985 to 1.029 at 0.25 (exact 1).
-constexpr double SampledOpening = 0.25;
 /// Two elements too small to split are linked by samples up to this opening.
 constexpr double SmallOpening = 1.0;
-/// A cluster whose normal cone is at most this half angle (radians) receives
-/// from a source straddling its plane: the source's samples behind the plane
-/// through its centroid are left out (Compute), so a triangle tilted by up to
-/// this angle from the axis is off by at most sin(angle) of the link's bound.
-/// Without it every cluster grazed by a source was split down to its triangles.
-constexpr double NearlyFlatCone = 0.125;
 } // namespace
 
 ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceClusterHierarchy> hierarchy,
@@ -87,6 +75,9 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
       }
       b.ConeAngle = std::acos(std::clamp(minCos, -1.0, 1.0));
       b.Flat = minCos >= 1.0 - 1e-12 && offPlane <= this->PlaneTolerance + 1e-6 * half;
+      // No larger than the polygon solver's smallest element: a leaf, as face
+      // cluster radiosity's are, so the links stop at a size, not at the input.
+      b.Leaf = 2.0 * half <= this->MinEdge && b.ConeAngle <= NearlyFlatCone;
     }
   });
   this->Radiosity.assign(h.NumberOfClusters(), RGB(0.0));
@@ -144,6 +135,7 @@ ClusterLinks::Bounds ClusterLinks::BoundsOf(std::uint32_t node) const
   b.ConeAngle = 0.0;
   b.Area = el.Area;
   b.Flat = true;
+  b.Leaf = this->Mesh.LongestEdge(e) <= this->MinEdge;
   return b;
 }
 
@@ -228,8 +220,9 @@ void ClusterLinks::Refine(
   const bool er = IsElement(r), eq = IsElement(q);
   if (r == q)
   {
-    // An element does not see itself, nor does a cluster with no concave edge.
-    if (er || this->Clusters->InternalCluster(r)->Convex)
+    // An element does not see itself, nor does a cluster with no concave
+    // edge; a leaf's light within itself is below the solution's resolution.
+    if (er || this->Clusters->InternalCluster(r)->Convex || this->InternalBounds[r - this->Triangles].Leaf)
     {
       return;
     }
@@ -254,20 +247,20 @@ void ClusterLinks::Refine(
       const bool small = this->Mesh.LongestEdge(ElementOf(r)) <= this->MinEdge &&
         this->Mesh.LongestEdge(ElementOf(q)) <= this->MinEdge && R.Radius + Q.Radius <= SmallOpening * distance;
       const bool distant = R.Radius + Q.Radius <= DistantElements * distance && this->Bound(R, Q, q) <= epsilon;
-      const bool apart = distance > R.Radius + Q.Radius;
-      if (apart && this->Mesh.LongestEdge(ElementOf(r)) <= this->MinEdge &&
-        this->Mesh.LongestEdge(ElementOf(q)) > this->MinEdge && !small && !distant)
+      if (R.Leaf != Q.Leaf && !small && !distant)
       {
-        // A receiver too small to split, apart from a larger source: the
-        // source is split here, and its parts sampled, rather than every
-        // part's shaft searched for blockers on a receiver that meshing
-        // could not refine.
+        // One element too small to split facing a larger one (apart or not:
+        // a large element's sphere holds much that does not touch it): the
+        // larger is split here, and its parts sampled, rather than every
+        // part's shaft searched for blockers against an element that meshing
+        // could not refine; touching parts still reach the polygon solver.
         if (!this->CannotExchange(R, Q, q) && !this->CannotExchange(Q, R, r))
         {
-          const std::uint32_t c = this->SplitElement(ElementOf(q));
+          const bool receiver = !R.Leaf;
+          const std::uint32_t c = this->SplitElement(ElementOf(receiver ? r : q));
           for (std::uint32_t i = 0; i < 4; ++i)
           {
-            this->Refine(r, (c + i) | ElementBit, epsilon, out, elements);
+            this->Refine(receiver ? (c + i) | ElementBit : r, receiver ? q : (c + i) | ElementBit, epsilon, out, elements);
           }
         }
         return;
@@ -293,12 +286,9 @@ void ClusterLinks::Refine(
   const Vec3 d = Q.Centre - R.Centre;
   const double distance = glm::length(d);
   const double bound = this->Bound(R, Q, q);
-  const auto splittable = [&](bool element, std::uint32_t node) {
-    return !element || this->Mesh.LongestEdge(ElementOf(node)) > this->MinEdge;
-  };
   // Which to split: the larger while the transfer is too large; the
   // receiver when only its own extent or normal cone stands in the way.
-  const bool sr = splittable(er, r), sq = splittable(eq, q);
+  const bool sr = !R.Leaf, sq = !Q.Leaf;
   bool splitReceiver = sr && (!sq || R.Radius >= Q.Radius);
   if (!(MaxComponent(this->RadiosityOf(q)) > 0))
   {
@@ -312,7 +302,9 @@ void ClusterLinks::Refine(
     // A cluster receives when every triangle of it faces the whole source,
     // or when it is (nearly) flat: then the source's samples behind its plane
     // are left out of the transfer (Compute), as an element's are.
-    const bool receives = er ||
+    // A leaf cluster receives whatever its cone: it is not split, and each
+    // triangle takes its own normal's share of the vector (Compute, Descend).
+    const bool receives = er || R.Leaf ||
       (R.Radius <= ReceiverOpening * distance &&
         (R.ConeAngle <= NearlyFlatCone ||
           std::acos(std::clamp(glm::dot(R.Axis, d / distance), -1.0, 1.0)) + R.ConeAngle + alpha < HalfPi));

@@ -37,6 +37,10 @@
 //   triangle away from the centroid was off by up to 20% on the inside of a
 //   sphere, at first order 0.4%. Element receivers take scalar irradiance,
 //   each sample clamped to its own half-space.
+// - Leaves: a nearly flat cluster no larger than the smallest element is
+//   never split (face cluster radiosity's leaves), so the links stop at a
+//   size, not at the input's triangles; two nodes that cannot be split are
+//   sampled at any distance, each source point a disc of its area.
 // - Pairs that cannot exchange light are dropped before any work: a flat
 //   cluster and a cluster wholly behind its plane, or cones that face away.
 // - Transfer: K sample points per cluster (the centroids of the triangles at
@@ -173,7 +177,22 @@ private:
     double ConeAngle; ///< largest angle between Axis and a triangle's normal
     double Area;
     bool Flat;        ///< one plane: every triangle in it, one normal
+    bool Leaf;        ///< a cluster no larger than an element may become: never split
   };
+  /// A cluster whose normal cone is at most this half angle (radians)
+  /// receives from a source straddling its plane: the source's samples behind
+  /// the plane through its centroid are left out (Compute), so a triangle
+  /// tilted by up to this angle from the axis is off by at most sin(angle) of
+  /// the link's bound. Without it every cluster grazed by a source was split
+  /// down to its triangles.
+  static constexpr double NearlyFlatCone = 0.125;
+  /// A link sampled at a cluster (K points with sampled visibility) only when
+  /// the two spheres' radii sum to at most this fraction of the distance,
+  /// unless neither can be split (leaves, elements at the smallest size).
+  /// Measured on a closed cube of 192 triangles, rho 0 and emission 1, without
+  /// the row normalisation: irradiance 0.93 to 1.16 at 0.5, 0.96 to 1.10 at
+  /// 0.35, 0.985 to 1.029 at 0.25 (exact 1).
+  static constexpr double SampledOpening = 0.25;
   std::uint32_t NodeOf(std::uint32_t cluster) const;
   static bool IsElement(std::uint32_t node) { return (node & ElementBit) != 0; }
   static std::uint32_t ElementOf(std::uint32_t node) { return node & ~ElementBit; }

@@ -85,6 +85,13 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
         this->SamplesOf(p.Receiver, rs);
         this->SamplesOf(p.Source, qs);
         const std::size_t pairs = static_cast<std::size_t>(rs.Count) * static_cast<std::size_t>(qs.Count);
+        // Closer than sampling is good for (two nodes neither of which can be
+        // split): each source point as a disc of its area facing the receiver
+        // point, w / (pi r^2 + w) (Wallace, Elmquist & Haines 1989), not the
+        // point kernel, which grows without bound as r -> 0.
+        const Bounds rb = this->BoundsOf(p.Receiver), qb = this->BoundsOf(p.Source);
+        const bool near = rb.Radius + qb.Radius > SampledOpening * glm::length(qb.Centre - rb.Centre);
+        const auto disc = [near](double w, double r2) { return near ? Pi * r2 / (Pi * r2 + w) : 1.0; };
         if (this->Rays.Empty())
         {
           std::fill(visible, visible + pairs, static_cast<unsigned char>(1));
@@ -114,7 +121,7 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
               if (visible[a * qs.Count + b] && r2 > 0)
               {
                 const double r = std::sqrt(r2);
-                f += qs.Weight[b] * std::max(0.0, -glm::dot(qs.Normal[b], d) / r) *
+                f += qs.Weight[b] * disc(qs.Weight[b], r2) * std::max(0.0, -glm::dot(qs.Normal[b], d) / r) *
                   std::max(0.0, glm::dot(rs.Normal[a], d) / r) / (Pi * r2);
               }
             }
@@ -128,17 +135,28 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
         // normal m gives at x, with d = x - y and r = |d|:
         //   E(x) = -w (m . d) d / (pi r^4),
         //   dE_j/dx_k = -w (m_k d_j + (m . d) delta_jk - 4 (m . d) d_j d_k / r^2) / (pi r^4).
+        // Only the receiver's points that face a source point judge its
+        // visibility: the others' rays start into their own surface (a leaf
+        // cluster's cone may be wide).
         for (int b = 0; b < qs.Count; ++b)
         {
-          int count = 0;
+          int count = 0, facing = 0;
           for (int a = 0; a < rs.Count; ++a)
           {
-            count += visible[a * qs.Count + b] != 0;
+            if (glm::dot(rs.Normal[a], qs.Point[b] - rs.Point[a]) > 0)
+            {
+              ++facing;
+              count += visible[a * qs.Count + b] != 0;
+            }
           }
-          seen[b] = static_cast<double>(count) / rs.Count;
+          seen[b] = facing > 0 ? static_cast<double>(count) / facing : 0.0;
         }
         const Vec3 c(this->Clusters->InternalCluster(p.Receiver)->Centroid);
-        const Vec3 axis = this->InternalBounds[p.Receiver - this->Triangles].Axis;
+        const Bounds& receiver = this->InternalBounds[p.Receiver - this->Triangles];
+        // A nearly flat receiver's plane (Refine); a leaf of a wider cone has
+        // each triangle clamp its own share (Descend).
+        const bool clip = receiver.ConeAngle <= NearlyFlatCone;
+        const Vec3 axis = receiver.Axis;
         Vec3 e(0.0);
         double g[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
         for (int b = 0; b < qs.Count; ++b)
@@ -148,11 +166,11 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
           const double md = glm::dot(qs.Normal[b], d);
           // Behind the receiver's plane (a nearly flat receiver that the
           // source straddles; Refine) or facing away: no light.
-          if (!(seen[b] > 0) || !(r2 > 0) || md <= 0 || glm::dot(axis, d) >= 0)
+          if (!(seen[b] > 0) || !(r2 > 0) || md <= 0 || (clip && glm::dot(axis, d) >= 0))
           {
             continue;
           }
-          const double w = seen[b] * qs.Weight[b] / (Pi * r2 * r2);
+          const double w = seen[b] * qs.Weight[b] * disc(qs.Weight[b], r2) / (Pi * r2 * r2);
           e -= w * md * d;
           for (int k = 0; k < 3; ++k)
           {

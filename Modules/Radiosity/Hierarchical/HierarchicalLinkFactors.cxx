@@ -6,7 +6,10 @@
 #include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 
 #include "Radiosity/Common/FormFactor.h"
+#include "Radiosity/Common/SceneAnalysis.h"
 #include "Radiosity/Common/Visibility.h"
+#include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
+#include "Radiosity/Hierarchical/ClusterLinks.h"
 #include "Radiosity/Hierarchical/HierarchicalNodeRules.h"
 #include "Radiosity/Hierarchical/Shaft.h"
 
@@ -14,12 +17,51 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <functional>
 
 namespace radiosity
 {
 using hierarchical::At;
 using hierarchical::RuleA;
 using hierarchical::RuleB;
+
+namespace
+{
+/// The triangles `keep` accepts among those of the face cluster hierarchy
+/// whose boxes `mayBlock` does not rule out (Haines & Wallace's shaft culling
+/// against the hierarchy's boxes rather than every triangle in a sphere), at
+/// most `most` + 1 of them: false when it stopped there.
+bool ShaftCandidates(const FaceClusterHierarchy& h, const std::function<bool(const FaceCluster&)>& mayBlock,
+  const std::function<bool(std::uint32_t)>& keep, std::size_t most, std::vector<std::uint32_t>& out)
+{
+  std::vector<std::uint32_t> stack(h.Roots().begin(), h.Roots().end());
+  std::size_t kept = 0;
+  while (!stack.empty())
+  {
+    const std::uint32_t id = stack.back();
+    stack.pop_back();
+    const FaceCluster* c = h.InternalCluster(id);
+    if (!c)
+    {
+      if (keep(id))
+      {
+        out.push_back(id);
+        if (++kept > most)
+        {
+          return false;
+        }
+      }
+      continue;
+    }
+    if (mayBlock(*c))
+    {
+      stack.push_back(c->Child[0]);
+      stack.push_back(c->Child[1]);
+    }
+  }
+  return true;
+}
+} // namespace
 
 bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending,
   SolverStatistics& stats, const std::function<bool()>& keepGoing)
@@ -73,15 +115,12 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
             {
               radius = std::max({ radius, glm::length(p[k] - centre), glm::length(q[k] - centre) });
             }
-            std::vector<std::uint32_t> near;
-            this->Rays->OccludersInSphere(centre, radius, near);
             const Shaft shaft(p, q);
-            for (std::uint32_t b : near)
-            {
+            const std::function<bool(std::uint32_t)> blocks = [&](std::uint32_t b) {
               if (b == pe.Source || b == qe.Source ||
                 shaft.Excludes({ scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) }))
               {
-                continue;
+                return false;
               }
               bool frontP = false, frontQ = false;
               for (int k = 0; k < 3; ++k)
@@ -90,13 +129,55 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
                 frontP = frontP || glm::dot(v - pe.Centroid, pe.Normal) > this->PlaneTolerance;
                 frontQ = frontQ || glm::dot(v - qe.Centroid, qe.Normal) > this->PlaneTolerance;
               }
-              if (frontP && frontQ)
-              {
-                res.Blockers.push_back(b);
-              }
+              return frontP && frontQ;
+            };
+            // Past MaxBlockersPerLink the list is cut to the rays' below, so
+            // the query stops there: a shaft across a dense mesh would
+            // otherwise list every triangle in its sphere.
+            if (this->ClusterSolve)
+            {
+              // The boxes of the face cluster hierarchy against the shaft and
+              // the two nodes' planes: a dense mesh beside the shaft is ruled
+              // out a cluster at a time.
+              const std::vector<unsigned char>& occludes = this->SceneInfo.CanOcclude;
+              const auto mayBlock = [&](const FaceCluster& c) {
+                // The boxes are single precision: grown to hold their triangles.
+                const double grow = 1e-5 * glm::length(Vec3(c.HalfSize)) + this->PlaneTolerance;
+                Vec3 half[3];
+                double outside = 0.0; // from the link's sphere's centre to the box
+                for (int k = 0; k < 3; ++k)
+                {
+                  half[k] = (double(c.HalfSize[k]) + grow) * Vec3(c.Axis[k]);
+                  const double along = std::fabs(glm::dot(centre - Vec3(c.Centre), Vec3(c.Axis[k])));
+                  const double beyond = std::max(0.0, along - (double(c.HalfSize[k]) + grow));
+                  outside += beyond * beyond;
+                }
+                if (outside > radius * radius)
+                {
+                  return false;
+                }
+                Vec3 corner[8];
+                double frontP = -1e300, frontQ = -1e300;
+                for (int k = 0; k < 8; ++k)
+                {
+                  corner[k] = Vec3(c.Centre) + (k & 1 ? half[0] : -half[0]) + (k & 2 ? half[1] : -half[1]) +
+                    (k & 4 ? half[2] : -half[2]);
+                  frontP = std::max(frontP, glm::dot(corner[k] - pe.Centroid, pe.Normal));
+                  frontQ = std::max(frontQ, glm::dot(corner[k] - qe.Centroid, qe.Normal));
+                }
+                return frontP > this->PlaneTolerance && frontQ > this->PlaneTolerance && !shaft.Excludes(corner, 8);
+              };
+              const std::function<bool(std::uint32_t)> occluding = [&](std::uint32_t b) {
+                return (occludes.empty() || occludes[b]) && blocks(b);
+              };
+              ShaftCandidates(this->ClusterSolve->Hierarchy(), mayBlock, occluding, this->Settings.MaxBlockersPerLink,
+                res.Blockers);
+            }
+            else
+            {
+              this->Rays->OccludersInSphere(centre, radius, blocks, this->Settings.MaxBlockersPerLink, res.Blockers);
             }
             std::sort(res.Blockers.begin(), res.Blockers.end());
-            res.Blockers.erase(std::unique(res.Blockers.begin(), res.Blockers.end()), res.Blockers.end());
           }
           if (res.Blockers.size() > this->Settings.MaxBlockersPerLink)
           {
