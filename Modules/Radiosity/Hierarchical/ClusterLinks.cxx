@@ -244,8 +244,7 @@ void ClusterLinks::Refine(
     {
       const Bounds R = this->BoundsOf(r), Q = this->BoundsOf(q);
       const double distance = glm::length(Q.Centre - R.Centre);
-      const bool small = this->Mesh.LongestEdge(ElementOf(r)) <= this->MinEdge &&
-        this->Mesh.LongestEdge(ElementOf(q)) <= this->MinEdge && R.Radius + Q.Radius <= SmallOpening * distance;
+      const bool small = R.Leaf && Q.Leaf && R.Radius + Q.Radius <= SmallOpening * distance;
       const bool distant = R.Radius + Q.Radius <= DistantElements * distance && this->Bound(R, Q, q) <= epsilon;
       if (R.Leaf != Q.Leaf && !small && !distant)
       {

@@ -152,11 +152,10 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
           seen[b] = facing > 0 ? static_cast<double>(count) / facing : 0.0;
         }
         const Vec3 c(this->Clusters->InternalCluster(p.Receiver)->Centroid);
-        const Bounds& receiver = this->InternalBounds[p.Receiver - this->Triangles];
         // A nearly flat receiver's plane (Refine); a leaf of a wider cone has
         // each triangle clamp its own share (Descend).
-        const bool clip = receiver.ConeAngle <= NearlyFlatCone;
-        const Vec3 axis = receiver.Axis;
+        const bool clip = rb.ConeAngle <= NearlyFlatCone;
+        const Vec3 axis = rb.Axis;
         Vec3 e(0.0);
         double g[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
         for (int b = 0; b < qs.Count; ++b)
