@@ -74,10 +74,13 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
         }
       }
       b.ConeAngle = std::acos(std::clamp(minCos, -1.0, 1.0));
+      b.CosCone = std::cos(b.ConeAngle);
+      b.SinCone = std::sin(b.ConeAngle);
       b.Flat = minCos >= 1.0 - 1e-12 && offPlane <= this->PlaneTolerance + 1e-6 * half;
       // No larger than the polygon solver's smallest element: a leaf, as face
-      // cluster radiosity's are, so the links stop at a size, not at the input.
-      b.Leaf = 2.0 * half <= this->MinEdge && b.ConeAngle <= NearlyFlatCone;
+      // cluster radiosity's are, so the links stop at a size, not at the
+      // input; a curved one clamps its links per triangle (DescendCurved).
+      b.Leaf = 2.0 * half <= this->MinEdge;
     }
   });
   this->Radiosity.assign(h.NumberOfClusters(), RGB(0.0));
@@ -133,6 +136,8 @@ ClusterLinks::Bounds ClusterLinks::BoundsOf(std::uint32_t node) const
   b.Radius += this->PlaneTolerance;
   b.Axis = el.Normal;
   b.ConeAngle = 0.0;
+  b.CosCone = 1.0;
+  b.SinCone = 0.0;
   b.Area = el.Area;
   b.Flat = true;
   b.Leaf = this->Mesh.LongestEdge(e) <= this->MinEdge;

@@ -37,10 +37,15 @@
 //   triangle away from the centroid was off by up to 20% on the inside of a
 //   sphere, at first order 0.4%. Element receivers take scalar irradiance,
 //   each sample clamped to its own half-space.
-// - Leaves: a nearly flat cluster no larger than the smallest element is
-//   never split (face cluster radiosity's leaves), so the links stop at a
-//   size, not at the input's triangles; two nodes that cannot be split are
-//   sampled at any distance, each source point a disc of its area.
+// - Leaves: a cluster no larger than the smallest element is never split
+//   (face cluster radiosity's leaves), whatever its normal cone, so the links
+//   stop at a size, not at the input's triangles; two nodes that cannot be
+//   split are sampled at any distance, each source point a disc of its area.
+//   A curved leaf receives links that some of its triangles face away from:
+//   each triangle takes max(0, n_t . E_l) of each such link (the sum of
+//   opposite links cancels on a triangle facing across them), found down the
+//   leaf's subtree only where the link's terminator passes
+//   (ClusterLinksCurvedLeaves.cxx).
 // - Pairs that cannot exchange light are dropped before any work: a flat
 //   cluster and a cluster wholly behind its plane, or cones that face away.
 // - Transfer: K sample points per cluster (the centroids of the triangles at
@@ -157,6 +162,9 @@ private:
     std::uint32_t Receiver, Source; ///< cluster id; node id
     glm::vec3 Factor;
     float Gradient[9];
+    /// To a curved leaf (Leaf, cone over NearlyFlatCone) some of whose
+    /// triangles face away from it: clamped per triangle (DescendCurved).
+    bool Straddles;
   };
   /// Sample points of a node: its triangles' centroids at area quantiles
   /// (every triangle when it has at most Most), an element's four points.
@@ -175,6 +183,7 @@ private:
     double Radius;
     Vec3 Axis;
     double ConeAngle; ///< largest angle between Axis and a triangle's normal
+    double CosCone, SinCone; ///< of ConeAngle
     double Area;
     bool Flat;        ///< one plane: every triangle in it, one normal
     bool Leaf;        ///< a cluster no larger than an element may become: never split
@@ -205,6 +214,28 @@ private:
   void Refine(std::uint32_t r, std::uint32_t q, double epsilon, std::vector<Pair>& out, const ElementPair& elements);
   void Index();
   void SamplesOf(std::uint32_t node, SamplePoints& s) const;
+  /// How the triangles of a node of bounds `b` face a link's vector
+  /// irradiance, its expansion about `origin` (first order, the gradient's
+  /// change over the node's sphere counted against it).
+  enum class Facing
+  {
+    All,
+    None,
+    Some
+  };
+  static Facing FacingOf(const VectorLink& link, const Vec3& origin, const Bounds& b);
+  /// A link carried into a curved leaf: its source's radiosity and the
+  /// centre its expansion is about.
+  struct Carried
+  {
+    const VectorLink* Link;
+    RGB B;
+    Vec3 Origin;
+  };
+  /// Descend below a curved leaf with links that some of its triangles face
+  /// away from: each is summed where every triangle faces it, dropped where
+  /// none does, and clamped per triangle on the rest.
+  void DescendCurved(std::uint32_t node, const void* above, const std::vector<Carried>& links, std::vector<RGB>& out) const;
   /// Pushes the expansion from above (an Expansion, file-local) down to the triangles.
   void Descend(std::uint32_t cluster, const void* above, std::vector<RGB>& out) const;
 

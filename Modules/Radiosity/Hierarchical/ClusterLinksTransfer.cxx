@@ -5,6 +5,7 @@
 #include "Radiosity/Hierarchical/ClusterLinks.h"
 
 #include "Radiosity/Common/Enclosure.h"
+#include "Radiosity/Hierarchical/ClusterExpansion.h"
 #include "Radiosity/Common/Visibility.h"
 #include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
 #include "Radiosity/Hierarchical/HierarchicalNodeRules.h"
@@ -187,6 +188,14 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
         {
           l.Gradient[k] = static_cast<float>(g[k]);
         }
+        // A curved leaf: the links that some of its triangles face away from
+        // are clamped per triangle (DescendCurved); one that none faces is dropped.
+        const Facing facing = clip || !rb.Leaf ? Facing::All : FacingOf(l, c, rb);
+        l.Straddles = facing == Facing::Some;
+        if (facing == Facing::None)
+        {
+          l.Factor = glm::vec3(0.0f);
+        }
       }
     });
   }
@@ -208,27 +217,7 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
   return true;
 }
 
-namespace
-{
-/// Irradiance about a centre to first order: per colour channel, the vector
-/// E (x, y, z) and its gradient G[3 k + j] = dE_j / dx_k.
-struct Expansion
-{
-  Vec3 Centre{ 0.0 };
-  RGB E[3] = { RGB(0.0), RGB(0.0), RGB(0.0) };
-  RGB G[9] = { RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0), RGB(0.0) };
-
-  /// The vector at x (first order).
-  void At(const Vec3& x, RGB (&out)[3]) const
-  {
-    const Vec3 d = x - this->Centre;
-    for (int j = 0; j < 3; ++j)
-    {
-      out[j] = this->E[j] + d.x * this->G[j] + d.y * this->G[3 + j] + d.z * this->G[6 + j];
-    }
-  }
-};
-} // namespace
+using cluster_detail::Expansion;
 
 void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, std::vector<RGB>& out) const
 {
@@ -247,20 +236,25 @@ void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, std::vec
   above.At(here.Centre, here.E);
   std::copy(std::begin(above.G), std::end(above.G), std::begin(here.G));
   const std::size_t i = c - this->Triangles;
+  std::vector<Carried> curved;
   for (std::uint32_t k = this->ClusterOffsets[i]; k < this->ClusterOffsets[i + 1]; ++k)
   {
     const VectorLink& l = this->ToClusters[k];
-    const RGB& b = this->RadiosityOf(l.Source);
-    for (int j = 0; j < 3; ++j)
+    if (l.Straddles)
     {
-      here.E[j] += double(l.Factor[j]) * b;
+      curved.push_back({ &l, this->RadiosityOf(l.Source), here.Centre });
     }
-    for (int j = 0; j < 9; ++j)
+    else
     {
-      here.G[j] += double(l.Gradient[j]) * b;
+      here.Add(Vec3(l.Factor), l.Gradient, this->RadiosityOf(l.Source));
     }
   }
-  if (f.Count > 4096)
+  if (!curved.empty())
+  {
+    this->DescendCurved(f.Child[0], &here, curved, out);
+    this->DescendCurved(f.Child[1], &here, curved, out);
+  }
+  else if (f.Count > 4096)
   {
     tbb::parallel_invoke([&]() { this->Descend(f.Child[0], &here, out); },
       [&]() { this->Descend(f.Child[1], &here, out); });
