@@ -278,43 +278,49 @@ std::size_t ConformBoundaries(
     const double longest = mesh.LongestEdge(leaves[i]);
     const double tol = 1e-7 * longest;
     std::vector<Vec3> extra;
-    std::vector<std::uint64_t> visited;
+    std::vector<std::uint64_t> cells;
     for (int e = 0; e < 3; ++e)
     {
       const Vec3& a = c[e];
       const Vec3& b = c[(e + 1) % 3];
       const double length = glm::length(b - a);
-      const int steps = 1 + static_cast<int>(2.0 * length / h);
-      visited.clear();
-      for (int t = 0; t <= steps; ++t)
+      // The cells that a point within tol of the edge can lie in: those
+      // meeting the boxes of the edge's pieces no longer than a cell, each
+      // at most two cells wide per axis.
+      const int pieces = 1 + static_cast<int>(length / h);
+      cells.clear();
+      for (int t = 0; t < pieces; ++t)
       {
-        const auto centre = cellOf(a + (static_cast<double>(t) / steps) * (b - a));
-        for (int dx = -1; dx <= 1; ++dx)
+        const Vec3 p = a + (static_cast<double>(t) / pieces) * (b - a);
+        const Vec3 q = a + (static_cast<double>(t + 1) / pieces) * (b - a);
+        const auto lo = cellOf(glm::min(p, q) - Vec3(tol));
+        const auto hi = cellOf(glm::max(p, q) + Vec3(tol));
+        for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
         {
-          for (int dy = -1; dy <= 1; ++dy)
+          for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
           {
-            for (int dz = -1; dz <= 1; ++dz)
+            for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
             {
-              const std::uint64_t key = keyOf({ centre[0] + dx, centre[1] + dy, centre[2] + dz });
-              if (std::find(visited.begin(), visited.end(), key) != visited.end())
-              {
-                continue;
-              }
-              visited.push_back(key);
-              const auto it = grid.find(key);
-              if (it == grid.end())
-              {
-                continue;
-              }
-              for (std::uint32_t k : it->second)
-              {
-                bool inside = false;
-                if (owner[k] != i && EdgeDistance(points[k], a, b, inside, 10.0 * tol) < tol && inside)
-                {
-                  extra.push_back(points[k]);
-                }
-              }
+              cells.push_back(keyOf({ x, y, z }));
             }
+          }
+        }
+      }
+      std::sort(cells.begin(), cells.end());
+      cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+      for (const std::uint64_t key : cells)
+      {
+        const auto it = grid.find(key);
+        if (it == grid.end())
+        {
+          continue;
+        }
+        for (std::uint32_t k : it->second)
+        {
+          bool inside = false;
+          if (owner[k] != i && EdgeDistance(points[k], a, b, inside, 10.0 * tol) < tol && inside)
+          {
+            extra.push_back(points[k]);
           }
         }
       }
