@@ -1,6 +1,7 @@
 #include "Radiosity/FaceCluster/FaceClusterVisibility.h"
 
 #include "Radiosity/Common/Visibility.h"
+#include "Radiosity/FaceCluster/FaceClusterDescent.h"
 #include "Radiosity/Hierarchical/Shaft.h"
 
 #include <algorithm>
@@ -260,38 +261,19 @@ bool FaceClusterVisibility::ShaftBlockers(const TriangleCorners& receiver, const
   {
     return true;
   }
-  thread_local std::vector<std::uint32_t> stack;
-  stack.assign(h.Roots().begin(), h.Roots().end());
-  while (!stack.empty())
-  {
-    const std::uint32_t id = stack.back();
-    stack.pop_back();
-    const FaceCluster* c = h.InternalCluster(id);
-    const std::uint32_t first = c ? c->First : h.TrianglePosition(id);
-    const std::uint32_t count = c ? c->Count : 1u;
-    if (InsideOwn(skip, skips, first, count))
+  const auto open = [&](const FaceCluster& c) {
+    if (InsideOwn(skip, skips, c.First, c.Count))
     {
-      continue;
+      return false;
     }
-    if (c)
+    Vec3 corners[8];
+    GrownBoxCorners(c, 1e-6, tolerance, corners);
+    return !shaft.Excludes(corners, 8);
+  };
+  const auto take = [&](std::uint32_t id) {
+    if (InsideOwn(skip, skips, h.TrianglePosition(id), 1u))
     {
-      Vec3 corners[8];
-      for (int k = 0; k < 8; ++k)
-      {
-        corners[k] = Vec3(c->Centre);
-        for (int j = 0; j < 3; ++j)
-        {
-          // A little slack: flat boxes have zero thickness.
-          const double half = double(c->HalfSize[j]) * (1.0 + 1e-6) + tolerance;
-          corners[k] += ((k >> j) & 1 ? half : -half) * Vec3(c->Axis[j]);
-        }
-      }
-      if (!shaft.Excludes(corners, 8))
-      {
-        stack.push_back(c->Child[0]);
-        stack.push_back(c->Child[1]);
-      }
-      continue;
+      return true;
     }
     const TriangleCorners t{ scene.Vertex(id, 0), scene.Vertex(id, 1), scene.Vertex(id, 2) };
     bool frontR = false, frontS = false;
@@ -308,7 +290,8 @@ bool FaceClusterVisibility::ShaftBlockers(const TriangleCorners& receiver, const
       }
       out.push_back(t);
     }
-  }
-  return true;
+    return true;
+  };
+  return DescendClusters(h, open, take);
 }
 } // namespace radiosity

@@ -8,7 +8,7 @@
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/SceneAnalysis.h"
 #include "Radiosity/Common/Visibility.h"
-#include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
+#include "Radiosity/FaceCluster/FaceClusterDescent.h"
 #include "Radiosity/Hierarchical/ClusterLinks.h"
 #include "Radiosity/Hierarchical/HierarchicalNodeRules.h"
 #include "Radiosity/Hierarchical/Shaft.h"
@@ -24,44 +24,6 @@ namespace radiosity
 using hierarchical::At;
 using hierarchical::RuleA;
 using hierarchical::RuleB;
-
-namespace
-{
-/// The triangles `keep` accepts among those of the face cluster hierarchy
-/// whose boxes `mayBlock` does not rule out (Haines & Wallace's shaft culling
-/// against the hierarchy's boxes rather than every triangle in a sphere), at
-/// most `most` + 1 of them: false when it stopped there.
-bool ShaftCandidates(const FaceClusterHierarchy& h, const std::function<bool(const FaceCluster&)>& mayBlock,
-  const std::function<bool(std::uint32_t)>& keep, std::size_t most, std::vector<std::uint32_t>& out)
-{
-  std::vector<std::uint32_t> stack(h.Roots().begin(), h.Roots().end());
-  std::size_t kept = 0;
-  while (!stack.empty())
-  {
-    const std::uint32_t id = stack.back();
-    stack.pop_back();
-    const FaceCluster* c = h.InternalCluster(id);
-    if (!c)
-    {
-      if (keep(id))
-      {
-        out.push_back(id);
-        if (++kept > most)
-        {
-          return false;
-        }
-      }
-      continue;
-    }
-    if (mayBlock(*c))
-    {
-      stack.push_back(c->Child[0]);
-      stack.push_back(c->Child[1]);
-    }
-  }
-  return true;
-}
-} // namespace
 
 bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending,
   SolverStatistics& stats, const std::function<bool()>& keepGoing)
@@ -143,11 +105,9 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
               const auto mayBlock = [&](const FaceCluster& c) {
                 // The boxes are single precision: grown to hold their triangles.
                 const double grow = 1e-5 * glm::length(Vec3(c.HalfSize)) + this->PlaneTolerance;
-                Vec3 half[3];
                 double outside = 0.0; // from the link's sphere's centre to the box
                 for (int k = 0; k < 3; ++k)
                 {
-                  half[k] = (double(c.HalfSize[k]) + grow) * Vec3(c.Axis[k]);
                   const double along = std::fabs(glm::dot(centre - Vec3(c.Centre), Vec3(c.Axis[k])));
                   const double beyond = std::max(0.0, along - (double(c.HalfSize[k]) + grow));
                   outside += beyond * beyond;
@@ -157,11 +117,10 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
                   return false;
                 }
                 Vec3 corner[8];
+                GrownBoxCorners(c, 0.0, grow, corner);
                 double frontP = -1e300, frontQ = -1e300;
                 for (int k = 0; k < 8; ++k)
                 {
-                  corner[k] = Vec3(c.Centre) + (k & 1 ? half[0] : -half[0]) + (k & 2 ? half[1] : -half[1]) +
-                    (k & 4 ? half[2] : -half[2]);
                   frontP = std::max(frontP, glm::dot(corner[k] - pe.Centroid, pe.Normal));
                   frontQ = std::max(frontQ, glm::dot(corner[k] - qe.Centroid, qe.Normal));
                 }
@@ -170,8 +129,14 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
               const std::function<bool(std::uint32_t)> occluding = [&](std::uint32_t b) {
                 return (occludes.empty() || occludes[b]) && blocks(b);
               };
-              ShaftCandidates(this->ClusterSolve->Hierarchy(), mayBlock, occluding, this->Settings.MaxBlockersPerLink,
-                res.Blockers);
+              // At most MaxBlockersPerLink + 1 kept: past that the rays decide.
+              DescendClusters(this->ClusterSolve->Hierarchy(), mayBlock, [&](std::uint32_t b) {
+                if (occluding(b))
+                {
+                  res.Blockers.push_back(b);
+                }
+                return res.Blockers.size() <= this->Settings.MaxBlockersPerLink;
+              });
             }
             else
             {
