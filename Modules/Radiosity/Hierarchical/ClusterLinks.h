@@ -215,8 +215,9 @@ private:
   void Index();
   void SamplesOf(std::uint32_t node, SamplePoints& s) const;
   /// How the triangles of a node of bounds `b` face a link's vector
-  /// irradiance, its expansion about `origin` (first order, the gradient's
-  /// change over the node's sphere counted against it).
+  /// irradiance (its first-order expansion about `origin`, taken at the
+  /// node's centre): by the normal cone, or by the axis alone when the node
+  /// is nearly flat.
   enum class Facing
   {
     All,
@@ -236,7 +237,8 @@ private:
   /// away from: each is summed where every triangle faces it, dropped where
   /// none does, and clamped per triangle on the rest.
   void DescendCurved(std::uint32_t node, const void* above, const std::vector<Carried>& links, std::vector<RGB>& out) const;
-  /// Pushes the expansion from above (an Expansion, file-local) down to the triangles.
+  /// Pushes the expansion from above (a cluster_detail::Expansion,
+  /// ClusterExpansion.h) down to the triangles.
   void Descend(std::uint32_t cluster, const void* above, std::vector<RGB>& out) const;
 
   const Scene& SourceScene;

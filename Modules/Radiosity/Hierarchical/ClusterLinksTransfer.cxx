@@ -5,9 +5,9 @@
 #include "Radiosity/Hierarchical/ClusterLinks.h"
 
 #include "Radiosity/Common/Enclosure.h"
-#include "Radiosity/Hierarchical/ClusterExpansion.h"
 #include "Radiosity/Common/Visibility.h"
 #include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
+#include "Radiosity/Hierarchical/ClusterExpansion.h"
 #include "Radiosity/Hierarchical/HierarchicalNodeRules.h"
 
 #include <glm/geometric.hpp>
