@@ -126,12 +126,9 @@ bool HierarchicalRadiosity::ComputeLinks(const std::vector<PendingLink>& pending
                 }
                 return frontP > this->PlaneTolerance && frontQ > this->PlaneTolerance && !shaft.Excludes(corner, 8);
               };
-              const std::function<bool(std::uint32_t)> occluding = [&](std::uint32_t b) {
-                return (occludes.empty() || occludes[b]) && blocks(b);
-              };
               // At most MaxBlockersPerLink + 1 kept: past that the rays decide.
               DescendClusters(this->ClusterSolve->Hierarchy(), mayBlock, [&](std::uint32_t b) {
-                if (occluding(b))
+                if ((occludes.empty() || occludes[b]) && blocks(b))
                 {
                   res.Blockers.push_back(b);
                 }
