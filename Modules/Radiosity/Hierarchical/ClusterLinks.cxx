@@ -79,7 +79,7 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
       b.Flat = minCos >= 1.0 - 1e-12 && offPlane <= this->PlaneTolerance + 1e-6 * half;
       // No larger than the polygon solver's smallest element: a leaf, as face
       // cluster radiosity's are, so the links stop at a size, not at the
-      // input; a curved one clamps its links per triangle (DescendCurved).
+      // input; a curved one clamps its links per triangle (Descend).
       b.Leaf = 2.0 * half <= this->MinEdge;
     }
   });

@@ -163,7 +163,7 @@ private:
     glm::vec3 Factor;
     float Gradient[9];
     /// To a curved leaf (Leaf, cone over NearlyFlatCone) some of whose
-    /// triangles face away from it: clamped per triangle (DescendCurved).
+    /// triangles face away from it: clamped per triangle (Descend).
     bool Straddles;
   };
   /// Sample points of a node: its triangles' centroids at area quantiles
@@ -233,13 +233,12 @@ private:
     RGB B;
     Vec3 Origin;
   };
-  /// Descend below a curved leaf with links that some of its triangles face
-  /// away from: each is summed where every triangle faces it, dropped where
-  /// none does, and clamped per triangle on the rest.
-  void DescendCurved(std::uint32_t node, const void* above, const std::vector<Carried>& links, std::vector<RGB>& out) const;
   /// Pushes the expansion from above (a cluster_detail::Expansion,
-  /// ClusterExpansion.h) down to the triangles.
-  void Descend(std::uint32_t cluster, const void* above, std::vector<RGB>& out) const;
+  /// ClusterExpansion.h) down to the triangles, with the links `carried`
+  /// from a curved leaf above: each is summed where every triangle below
+  /// faces it, dropped where none does, and clamped per triangle on the rest.
+  void Descend(std::uint32_t cluster, const void* above, const std::vector<Carried>& carried,
+    std::vector<RGB>& out) const;
 
   const Scene& SourceScene;
   std::shared_ptr<const FaceClusterHierarchy> Clusters;

@@ -5,8 +5,8 @@
 // a triangle facing across them (a triangle facing sideways under a bright
 // source went to 0 on the bunny), so such links are clamped per triangle:
 // each triangle receives sum_l max(0, n_t . E_l(x_t)) over them. Rather than
-// every link at every triangle, each link descends the leaf's subtree only
-// where its terminator (n . E_l = 0) passes: a subtree whose normal cone
+// every link at every triangle, each link descends the leaf's subtree
+// (ClusterLinks::Descend) only where its terminator (n . E_l = 0) passes: a subtree whose normal cone
 // faces it takes it into the expansion it passes down, one that faces away
 // drops it, and a nearly flat subtree decides by its plane, as a nearly flat
 // receiver does (ClusterLinks.h has the method and its papers). The cost per
@@ -14,7 +14,6 @@
 // triangles: on the 400k bunny room a leaf held 365 triangles on average.
 #include "Radiosity/Hierarchical/ClusterLinks.h"
 
-#include "Radiosity/FaceCluster/FaceClusterHierarchy.h"
 #include "Radiosity/Hierarchical/ClusterExpansion.h"
 
 #include <glm/geometric.hpp>
@@ -24,7 +23,6 @@
 
 namespace radiosity
 {
-using cluster_detail::Expansion;
 using cluster_detail::FactorAt;
 
 ClusterLinks::Facing ClusterLinks::FacingOf(const VectorLink& link, const Vec3& origin, const Bounds& b)
@@ -55,56 +53,4 @@ ClusterLinks::Facing ClusterLinks::FacingOf(const VectorLink& link, const Vec3& 
   return Facing::Some;
 }
 
-void ClusterLinks::DescendCurved(
-  std::uint32_t c, const void* aboveExpansion, const std::vector<Carried>& links, std::vector<RGB>& out) const
-{
-  const Expansion& above = *static_cast<const Expansion*>(aboveExpansion);
-  if (c < this->Triangles)
-  {
-    const Vec3 x = this->SourceScene.Centroid(c);
-    const Vec3 n = this->SourceScene.Normal(c);
-    RGB v[3];
-    above.At(x, v);
-    RGB sum = glm::max(n.x * v[0] + n.y * v[1] + n.z * v[2], RGB(0.0));
-    for (const Carried& l : links)
-    {
-      const double e = glm::dot(n, FactorAt(l.Link->Factor, l.Link->Gradient, x - l.Origin));
-      if (e > 0)
-      {
-        sum += e * l.B;
-      }
-    }
-    out[c] = sum;
-    return;
-  }
-  const FaceCluster& f = *this->Clusters->InternalCluster(c);
-  const Bounds& b = this->InternalBounds[c - this->Triangles];
-  Expansion here;
-  here.Centre = Vec3(f.Centroid);
-  above.At(here.Centre, here.E);
-  std::copy(std::begin(above.G), std::end(above.G), std::begin(here.G));
-  std::vector<Carried> down;
-  for (const Carried& l : links)
-  {
-    switch (FacingOf(*l.Link, l.Origin, b))
-    {
-      case Facing::All:
-        here.Add(FactorAt(l.Link->Factor, l.Link->Gradient, here.Centre - l.Origin), l.Link->Gradient, l.B);
-        break;
-      case Facing::Some:
-        down.push_back(l);
-        break;
-      case Facing::None:
-        break;
-    }
-  }
-  if (down.empty())
-  {
-    this->Descend(f.Child[0], &here, out);
-    this->Descend(f.Child[1], &here, out);
-    return;
-  }
-  this->DescendCurved(f.Child[0], &here, down, out);
-  this->DescendCurved(f.Child[1], &here, down, out);
-}
 } // namespace radiosity

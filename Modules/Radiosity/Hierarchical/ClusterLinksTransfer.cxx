@@ -189,7 +189,7 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
           l.Gradient[k] = static_cast<float>(g[k]);
         }
         // A curved leaf: the links that some of its triangles face away from
-        // are clamped per triangle (DescendCurved); one that none faces is dropped.
+        // are clamped per triangle (Descend); one that none faces is dropped.
         const Facing facing = clip || !rb.Leaf ? Facing::All : FacingOf(l, c, rb);
         l.Straddles = facing == Facing::Some;
         if (facing == Facing::None)
@@ -219,50 +219,76 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
 
 using cluster_detail::Expansion;
 
-void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, std::vector<RGB>& out) const
+void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, const std::vector<Carried>& carried,
+  std::vector<RGB>& out) const
 {
   const Expansion& above = *static_cast<const Expansion*>(aboveExpansion);
   if (c < this->Triangles)
   {
+    const Vec3 x = this->SourceScene.Centroid(c);
+    const Vec3 n = this->SourceScene.Normal(c);
     RGB v[3];
-    above.At(this->SourceScene.Centroid(c), v);
-    const Vec3 normal = this->SourceScene.Normal(c);
-    out[c] = glm::max(normal.x * v[0] + normal.y * v[1] + normal.z * v[2], RGB(0.0));
+    above.At(x, v);
+    RGB sum = glm::max(n.x * v[0] + n.y * v[1] + n.z * v[2], RGB(0.0));
+    // The carried links, each clamped to the triangle's own half-space.
+    for (const Carried& l : carried)
+    {
+      const double e = glm::dot(n, cluster_detail::FactorAt(l.Link->Factor, l.Link->Gradient, x - l.Origin));
+      if (e > 0)
+      {
+        sum += e * l.B;
+      }
+    }
+    out[c] = sum;
     return;
   }
   const FaceCluster& f = *this->Clusters->InternalCluster(c);
+  const std::size_t i = c - this->Triangles;
   Expansion here;
   here.Centre = Vec3(f.Centroid);
   above.At(here.Centre, here.E);
   std::copy(std::begin(above.G), std::end(above.G), std::begin(here.G));
-  const std::size_t i = c - this->Triangles;
-  std::vector<Carried> curved;
+  // Links carried from a curved leaf above (ClusterLinksCurvedLeaves.cxx):
+  // summed where every triangle below faces them, dropped where none does.
+  std::vector<Carried> down;
+  for (const Carried& l : carried)
+  {
+    switch (FacingOf(*l.Link, l.Origin, this->InternalBounds[i]))
+    {
+      case Facing::All:
+        here.Add(cluster_detail::FactorAt(l.Link->Factor, l.Link->Gradient, here.Centre - l.Origin), l.Link->Gradient,
+          l.B);
+        break;
+      case Facing::Some:
+        down.push_back(l);
+        break;
+      case Facing::None:
+        break;
+    }
+  }
+  // Its own links; those that some of its triangles face away from (a
+  // curved leaf's) are carried down to be clamped per triangle.
   for (std::uint32_t k = this->ClusterOffsets[i]; k < this->ClusterOffsets[i + 1]; ++k)
   {
     const VectorLink& l = this->ToClusters[k];
     if (l.Straddles)
     {
-      curved.push_back({ &l, this->RadiosityOf(l.Source), here.Centre });
+      down.push_back({ &l, this->RadiosityOf(l.Source), here.Centre });
     }
     else
     {
       here.Add(Vec3(l.Factor), l.Gradient, this->RadiosityOf(l.Source));
     }
   }
-  if (!curved.empty())
+  if (down.empty() && f.Count > 4096)
   {
-    this->DescendCurved(f.Child[0], &here, curved, out);
-    this->DescendCurved(f.Child[1], &here, curved, out);
-  }
-  else if (f.Count > 4096)
-  {
-    tbb::parallel_invoke([&]() { this->Descend(f.Child[0], &here, out); },
-      [&]() { this->Descend(f.Child[1], &here, out); });
+    tbb::parallel_invoke([&]() { this->Descend(f.Child[0], &here, down, out); },
+      [&]() { this->Descend(f.Child[1], &here, down, out); });
   }
   else
   {
-    this->Descend(f.Child[0], &here, out);
-    this->Descend(f.Child[1], &here, out);
+    this->Descend(f.Child[0], &here, down, out);
+    this->Descend(f.Child[1], &here, down, out);
   }
 }
 
@@ -276,7 +302,7 @@ void ClusterLinks::Gather(std::vector<RGB>& triangleIrradiance, std::vector<RGB>
     const Expansion none;
     const std::vector<std::uint32_t>& roots = this->Clusters->Roots();
     tbb::parallel_for(
-      std::size_t(0), roots.size(), [&](std::size_t r) { this->Descend(roots[r], &none, triangleIrradiance); });
+      std::size_t(0), roots.size(), [&](std::size_t r) { this->Descend(roots[r], &none, {}, triangleIrradiance); });
   }
   const std::size_t indexed = std::min(elements, this->ElementOffsets.empty() ? 0 : this->ElementOffsets.size() - 1);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, indexed, 256), [&](const tbb::blocked_range<std::size_t>& range) {
