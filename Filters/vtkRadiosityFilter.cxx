@@ -25,6 +25,7 @@
 #include "Radiosity/Hierarchical/HierarchicalMethod.h"
 #include "Radiosity/Meshless/MeshlessMethod.h"
 #include "Radiosity/Progressive/ProgressiveMethod.h"
+#include "ProgressiveGPUMethod.h"
 #include "Radiosity/Common/Lights.h"
 #include "Radiosity/Common/MemoryBudget.h"
 #include "Radiosity/Common/ScenePieces.h"
@@ -75,6 +76,8 @@ const char* vtkRadiosityFilter::GetMethodName(int method)
       return "meshless";
     case FaceCluster:
       return "facecluster";
+    case ProgressiveGPU:
+      return "progressive-gpu";
     default:
       return "unknown";
   }
@@ -209,24 +212,36 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       this->HierarchySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return std::make_shared<radiosity::FaceClusterMethod>(scene, settings, std::move(hierarchy));
     }
+    case ProgressiveGPU:
+    {
+      radiosity::ProgressiveGPUOptions options;
+      this->FillProgressiveOptions(options);
+      options.HemicubeResolution = this->HemicubeResolution;
+      return std::make_shared<radiosity::ProgressiveGPUMethod>(scene, options);
+    }
     case Progressive:
     default:
     {
       radiosity::ProgressiveOptions options;
-      this->FillCommonOptions(options);
-      this->FillErrorReference(options);
-      options.MaxIterations = this->MaxIterations;
-      options.Overshooting = this->Overshooting;
-      options.ShooterElementSize = this->ShooterElementSize;
-      options.InitialElementSize = this->InitialElementSize;
-      options.MaxSubdivisionLevels = this->MaxSubdivisionLevels;
-      options.SubdivisionThreshold = this->SubdivisionThreshold;
-      options.FormFactorTolerance = this->FormFactorTolerance;
-      options.VisibilitySamples = this->VisibilitySamples;
-      options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
+      this->FillProgressiveOptions(options);
       return std::make_shared<radiosity::ProgressiveMethod>(scene, options);
     }
   }
+}
+
+void vtkRadiosityFilter::FillProgressiveOptions(radiosity::ProgressiveOptions& options) const
+{
+  this->FillCommonOptions(options);
+  this->FillErrorReference(options);
+  options.MaxIterations = this->MaxIterations;
+  options.Overshooting = this->Overshooting;
+  options.ShooterElementSize = this->ShooterElementSize;
+  options.InitialElementSize = this->InitialElementSize;
+  options.MaxSubdivisionLevels = this->MaxSubdivisionLevels;
+  options.SubdivisionThreshold = this->SubdivisionThreshold;
+  options.FormFactorTolerance = this->FormFactorTolerance;
+  options.VisibilitySamples = this->VisibilitySamples;
+  options.IndirectVisibilitySamples = this->IndirectVisibilitySamples;
 }
 
 void vtkRadiosityFilter::ResolveMethod(const radiosity::Scene& scene)
@@ -623,6 +638,7 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxSubdivisionLevels: " << this->MaxSubdivisionLevels << "\n";
   os << indent << "SubdivisionThreshold: " << this->SubdivisionThreshold << "\n";
   os << indent << "FormFactorTolerance: " << this->FormFactorTolerance << "\n";
+  os << indent << "HemicubeResolution: " << this->HemicubeResolution << "\n";
   os << indent << "VisibilitySamples: " << this->VisibilitySamples << "\n";
   os << indent << "IndirectVisibilitySamples: " << this->IndirectVisibilitySamples << "\n";
   os << indent << "LinkTolerance: " << this->LinkTolerance << "\n";

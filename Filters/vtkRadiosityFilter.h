@@ -11,7 +11,10 @@
  * quadtrees, Coombe et al. 2004 on the CPU); Hierarchical (hierarchical
  * radiosity with BF refinement and the blockers of every partially visible
  * link, the solver of Hardt & Teller); Meshless (Lehtinen et al. 2007);
- * FaceCluster (Gobbetti et al. 2003). Auto, the default, picks one per scene
+ * FaceCluster (Gobbetti et al. 2003); ProgressiveGPU (Coombe et al.'s
+ * solver on the GPU, in an offscreen OpenGL context of its own: texture
+ * atlases, hemicube item buffers; the Progressive settings apply, and
+ * HemicubeResolution). Auto, the default, picks one per scene
  * from the measured rules of radiosity::ChooseMethod (MethodChoice.h): face
  * cluster for a glossy scene, hierarchical up to 2048 triangles, meshless
  * above; GetResolvedMethod and GetMethodChoice say which and why.
@@ -83,6 +86,7 @@ class HierarchicalRadiosity;
 class MeshlessRadiosity;
 class FaceClusterRadiosity;
 class RadiositySolver;
+struct ProgressiveOptions;
 }
 
 class vtkLight;
@@ -102,7 +106,8 @@ public:
     Progressive = 1,
     Hierarchical = 2,
     Meshless = 3,
-    FaceCluster = 4
+    FaceCluster = 4,
+    ProgressiveGPU = 5
   };
 
   /// The polynomial bases of face cluster radiosity (Gobbetti et al. 2003).
@@ -118,13 +123,14 @@ public:
   ///@{
   /// The solution method. Default Auto: chosen per scene at each solve
   /// (radiosity::ChooseMethod).
-  vtkSetClampMacro(Method, int, Auto, FaceCluster);
+  vtkSetClampMacro(Method, int, Auto, ProgressiveGPU);
   vtkGetMacro(Method, int);
   void SetMethodToAuto() { this->SetMethod(Auto); }
   void SetMethodToProgressive() { this->SetMethod(Progressive); }
   void SetMethodToHierarchical() { this->SetMethod(Hierarchical); }
   void SetMethodToMeshless() { this->SetMethod(Meshless); }
   void SetMethodToFaceCluster() { this->SetMethod(FaceCluster); }
+  void SetMethodToProgressiveGPU() { this->SetMethod(ProgressiveGPU); }
   static const char* GetMethodName(int method);
   ///@}
 
@@ -191,6 +197,12 @@ public:
   /// Use the disc approximation when A / (pi r^2) is below this. Default 2e-3.
   vtkSetClampMacro(FormFactorTolerance, double, 0.0, 1.0);
   vtkGetMacro(FormFactorTolerance, double);
+  ///@}
+
+  ///@{
+  /// ProgressiveGPU: pixels along a hemicube face's edge (Coombe 3.2's item buffer). Default 256.
+  vtkSetClampMacro(HemicubeResolution, int, 16, 4096);
+  vtkGetMacro(HemicubeResolution, int);
   ///@}
 
   ///@{
@@ -623,6 +635,7 @@ protected:
   int MaxSubdivisionLevels = 2;
   double SubdivisionThreshold = 0.1;
   double FormFactorTolerance = 2e-3;
+  int HemicubeResolution = 256;
   int VisibilitySamples = 16;
   int IndirectVisibilitySamples = 1;
   double LinkTolerance = 0.05;
@@ -680,6 +693,8 @@ private:
   void FillCommonOptions(Options& options) const;
   template <typename Options>
   void FillErrorReference(Options& options) const;
+  /// The Progressive settings, shared by ProgressiveGPU.
+  void FillProgressiveOptions(radiosity::ProgressiveOptions& options) const;
   void Warn(const std::string& warning);
   /// Every light of the request: the file's, the scene lights, the
   /// vtkLights, the sky; validated (a SceneError names the light and field).

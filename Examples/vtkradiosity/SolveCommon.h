@@ -68,6 +68,7 @@ struct SolveArguments
   bool NoOvershooting = false;
   double ElementSize = 1.0 / 16.0;
   double ShooterSize = 0.25;
+  int HemicubeResolution = 256; ///< progressive-gpu: item buffer pixels per face edge
   // --method hierarchical
   double LinkTolerance = 0.05;   ///< relative to the scene's mean irradiance
   double MinElementSize = 1.0 / 64.0;

@@ -66,11 +66,11 @@ int RunSolve(const SolveArguments& args)
 {
   RunPhases phases(Clock::now());
   if (args.Method != "auto" && args.Method != "progressive" && args.Method != "hierarchical" &&
-    args.Method != "meshless" && args.Method != "facecluster")
+    args.Method != "meshless" && args.Method != "facecluster" && args.Method != "progressive-gpu")
   {
     throw BadInput("--method " + args.Method +
       ": not available in this version (available: progressive, hierarchical, meshless, "
-      "facecluster, auto)");
+      "facecluster, progressive-gpu, auto)");
   }
   bool meshless = args.Method == "meshless"; // or auto's choice, once solved
   bool faceCluster = args.Method == "facecluster";
@@ -206,7 +206,9 @@ int RunSolve(const SolveArguments& args)
       : args.Method == "hierarchical" ? vtkRadiosityFilter::Hierarchical
       : meshless                      ? vtkRadiosityFilter::Meshless
       : faceCluster                   ? vtkRadiosityFilter::FaceCluster
+      : args.Method == "progressive-gpu" ? vtkRadiosityFilter::ProgressiveGPU
                                       : vtkRadiosityFilter::Progressive);
+  filter->SetHemicubeResolution(args.HemicubeResolution);
   filter->SetIrradianceBasis(irradianceBasis);
   filter->SetRadiosityBasis(radiosityBasis);
   filter->SetTransferTolerance(args.TransferTolerance);
@@ -267,7 +269,9 @@ int RunSolve(const SolveArguments& args)
   }
   phases.End("probes_s");
   WriteProbesAndHistory(args, probes, probeValues, stats.History,
-    meshless ? ", meshless radiosity" : faceCluster ? ", face cluster radiosity" : ", progressive refinement",
+    meshless ? ", meshless radiosity" : faceCluster ? ", face cluster radiosity"
+      : filter->GetResolvedMethod() == vtkRadiosityFilter::ProgressiveGPU ? ", progressive refinement on the GPU"
+                                                                           : ", progressive refinement",
     filter->GetScene());
   phases.End("write_s");
 
@@ -275,7 +279,7 @@ int RunSolve(const SolveArguments& args)
   {
     const Scene& scene = filter->GetScene();
     nlohmann::json report;
-    report["method"] = meshless ? "meshless" : faceCluster ? "facecluster" : "progressive";
+    report["method"] = vtkRadiosityFilter::GetMethodName(filter->GetResolvedMethod());
     report["method_choice"] = MethodChoiceReport(args.Method, filter);
     report["parameters"] = { { "tolerance", filter->GetTolerance() },
       { "max_iterations", filter->GetMaxIterations() }, { "max_time_s", filter->GetMaxTime() },
@@ -286,7 +290,8 @@ int RunSolve(const SolveArguments& args)
       { "subdivision_threshold", filter->GetSubdivisionThreshold() },
       { "form_factor_tolerance", filter->GetFormFactorTolerance() },
       { "visibility_samples", filter->GetVisibilitySamples() },
-      { "indirect_visibility_samples", filter->GetIndirectVisibilitySamples() } };
+      { "indirect_visibility_samples", filter->GetIndirectVisibilitySamples() },
+      { "hemicube_resolution", filter->GetHemicubeResolution() } };
     report["scene"] = { { "source", args.Scene }, { "triangles", scene.Triangles.size() },
       { "objects", scene.ObjectNames.size() }, { "emitters", scene.NumberOfEmitters() },
       { "lights", scene.Lighting.Lights.size() }, { "sky", scene.Lighting.SkyLight.Enabled() },
@@ -377,7 +382,7 @@ int main(int argc, char* argv[])
   SolveArguments solve;
   CLI::App* solveCommand = app.add_subcommand("solve", "solve a scene");
   solveCommand->add_option("SCENE", solve.Scene, "scene file or a built-in scene: 'cornell', 'office' (lit by a lamp and the sky), ...")->required();
-  solveCommand->add_option("--method", solve.Method, "progressive|hierarchical|meshless|facecluster|auto");
+  solveCommand->add_option("--method", solve.Method, "progressive|hierarchical|meshless|facecluster|progressive-gpu|auto");
   solveCommand->add_option("--tolerance", solve.Tolerance, "relative unshot power to stop at")
     ->check(CLI::Range(1e-12, 1.0));
   solveCommand->add_option("--max-iterations", solve.MaxIterations)->check(CLI::NonNegativeNumber);
@@ -456,6 +461,9 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--element-size", solve.ElementSize,
     "initial receiving element edge, fraction of the scene diagonal (default 1/16)")
     ->check(CLI::Range(1e-4, 1.0));
+  solveCommand->add_option("--hemicube-resolution", solve.HemicubeResolution,
+    "progressive-gpu: pixels along a hemicube face's edge (default 256)")
+    ->check(CLI::Range(16, 4096));
   solveCommand->add_option("--shooter-size", solve.ShooterSize,
     "shooting element edge, fraction of the scene diagonal (default 0.25)")
     ->check(CLI::Range(1e-4, 1.0));

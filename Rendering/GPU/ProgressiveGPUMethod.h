@@ -1,0 +1,62 @@
+// Progressive refinement radiosity on the GPU: Coombe, Harris & Lastra 2004,
+// "Radiosity on Graphics Hardware", section 3 (README.md in this folder maps
+// the sections to the code). The radiosity and the residual live in texture
+// atlases, one texel per element; each shot draws a hemicube item buffer
+// from the shooter and one fragment per element texel back-projects itself
+// onto it and adds eq. 1 with eq. 2's disc form factor (the exact contour
+// formula where the shooter is close); the next shooter is the node of
+// largest unshot power, found by the z-buffer maximum of section 3.4. The
+// CPU holds the bookkeeping only: one pixel of totals and one of the chosen
+// node come back per shot, and the solution once at the end.
+//
+// The elements are the CPU progressive solver's uniform initial mesh
+// (ElementMesh: the same element and shooter sizes), so the two methods
+// solve the same discrete problem and their answers compare directly.
+#ifndef Radiosity_ProgressiveGPUMethod_h
+#define Radiosity_ProgressiveGPUMethod_h
+
+#include "RadiosityRenderingGPUModule.h" // For export macro
+#include "Radiosity/Common/RadiositySolver.h"
+#include "Radiosity/Progressive/ProgressiveRadiosity.h"
+
+#include <memory>
+#include <string>
+
+namespace radiosity
+{
+class ElementMesh;
+class ProgressiveGPUPasses;
+
+struct ProgressiveGPUOptions : ProgressiveOptions
+{
+  /// Pixels along a hemicube face's edge (section 3.2's item buffer).
+  int HemicubeResolution = 256;
+};
+
+class RADIOSITYRENDERINGGPU_EXPORT ProgressiveGPUMethod final : public RadiositySolver
+{
+public:
+  /// Builds the element mesh (SceneError when it exceeds the memory budget
+  /// or the 2^24 elements a float texel can index).
+  ProgressiveGPUMethod(std::shared_ptr<const Scene> scene, const ProgressiveGPUOptions& options);
+  ~ProgressiveGPUMethod() override;
+  const char* MethodName() const override { return "progressive-gpu"; }
+  /// Opens the OpenGL context (SceneError when none can be opened), uploads
+  /// the atlases and shoots to a stop condition; can be called once.
+  SolverStatistics Solve(const ProgressCallback& progress) override;
+  SolutionMesh Surface() const override;
+  SolverProduct Product(const ProgressCallback& progress) const override;
+  /// The OpenGL renderer that solved ("llvmpipe ...", a GPU's name); empty before Solve.
+  const std::string& Renderer() const { return this->RendererName; }
+  const ElementMesh& Mesh() const { return *this->Elements; }
+
+private:
+  void ShootLights(SolverStatistics& stats);
+
+  ProgressiveGPUOptions Settings;
+  std::unique_ptr<ElementMesh> Elements;
+  std::string RendererName;
+};
+} // namespace radiosity
+
+#endif
