@@ -19,11 +19,16 @@
 #include "Radiosity/Common/RadiositySolver.h"
 #include "Radiosity/Progressive/ProgressiveRadiosity.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace radiosity
 {
+class DirectLighting;
+class Visibility;
 class ElementMesh;
 class ProgressiveGPUPasses;
 
@@ -52,9 +57,20 @@ public:
 
 private:
   void ShootLights(SolverStatistics& stats);
+  /// The lights' and the sky's exact irradiance at the elements' samples.
+  void LightElements(const std::vector<std::uint32_t>& elements);
+  /// Subdivision levels of a shooter's parts (0: one part).
+  int PartsDepth(std::uint32_t node, double initialEdge, bool occluders) const;
+  /// A split's children: what every earlier shooter (index in Shooters(),
+  /// total radiosity shot) sent them, added to their irradiance samples.
+  void GatherHistory(const std::vector<std::uint32_t>& children,
+    const std::vector<std::pair<std::size_t, RGB>>& active, const Visibility& rays, double initialEdge, bool convex);
 
   ProgressiveGPUOptions Settings;
   std::unique_ptr<ElementMesh> Elements;
+  std::unique_ptr<DirectLighting> Lights; ///< null without lights and sky
+  std::vector<std::uint16_t> MaxLevel; ///< per input triangle: the deepest an element may split to
+  std::size_t ElementCapacity = 0;     ///< elements the memory budget holds
   std::string RendererName;
 };
 } // namespace radiosity

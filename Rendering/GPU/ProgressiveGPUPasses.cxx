@@ -46,6 +46,21 @@ vtkSmartPointer<vtkTextureObject> FloatTexture(vtkOpenGLRenderWindow* window, in
   return ok ? texture : nullptr;
 }
 
+/// Binds `fbo` and draws into its first `count` colour attachments. The
+/// draw buffers are set by OpenGL directly: vtkOpenGLState's cache of them
+/// is shared by every framebuffer and left a second one writing its first
+/// attachment alone.
+void DrawTo(vtkOpenGLFramebufferObject* fbo, int count)
+{
+  fbo->Bind();
+  GLenum buffers[8];
+  for (int k = 0; k < count; ++k)
+  {
+    buffers[k] = GL_COLOR_ATTACHMENT0 + k;
+  }
+  glDrawBuffers(count, buffers);
+}
+
 void Uniform3(vtkShaderProgram* program, const char* name, const std::array<float, 3>& v)
 {
   program->SetUniform3f(name, v.data());
@@ -67,12 +82,14 @@ struct ProgressiveGPUPasses::Internals
   // Element atlas: inputs, then the five targets (corner 0-2, centre, unshot).
   vtkSmartPointer<vtkTextureObject> Centre, Corner[3], CentreLo, CornerLo[3], Normal, Reflectance;
   vtkSmartPointer<vtkTextureObject> Target[5];
+  vtkSmartPointer<vtkTextureObject> Delta[4], Flag; ///< one shot's irradiance; split flags
   vtkSmartPointer<vtkTextureObject> NodeRange, NodeReflectance, NodePower;
   vtkSmartPointer<vtkTextureObject> Item, ItemDepth, Pick, PickDepth;
-  vtkNew<vtkOpenGLFramebufferObject> ElementFBO, NodeFBO, ItemFBO, PickFBO;
+  vtkNew<vtkOpenGLFramebufferObject> ElementFBO, DeltaFBO, FlagFBO, NodeFBO, ItemFBO, PickFBO;
+  GLuint SplitQuery = 0;
   vtkNew<vtkOpenGLBufferObject> TriangleBuffer;
   vtkNew<vtkOpenGLVertexArrayObject> TriangleArrays, PointArrays;
-  std::unique_ptr<vtkOpenGLQuadHelper> ShotQuad, NodeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> ShotQuad, CommitQuad, SplitQuad, NodeQuad;
   vtkShaderProgram* ItemProgram = nullptr;
   vtkShaderProgram* PickProgram = nullptr;
 
@@ -128,12 +145,18 @@ ProgressiveGPUPasses::~ProgressiveGPUPasses()
   {
     this->GL->Window->MakeCurrent();
     this->GL->ShotQuad.reset();
+    this->GL->CommitQuad.reset();
+    this->GL->SplitQuad.reset();
     this->GL->NodeQuad.reset();
+    if (this->GL->SplitQuery != 0)
+    {
+      glDeleteQueries(1, &this->GL->SplitQuery);
+    }
     this->GL->TriangleArrays->ReleaseGraphicsResources();
     this->GL->PointArrays->ReleaseGraphicsResources();
     this->GL->TriangleBuffer->ReleaseGraphicsResources();
-    for (vtkOpenGLFramebufferObject* fbo :
-      { this->GL->ElementFBO.Get(), this->GL->NodeFBO.Get(), this->GL->ItemFBO.Get(), this->GL->PickFBO.Get() })
+    for (vtkOpenGLFramebufferObject* fbo : { this->GL->ElementFBO.Get(), this->GL->DeltaFBO.Get(),
+           this->GL->FlagFBO.Get(), this->GL->NodeFBO.Get(), this->GL->ItemFBO.Get(), this->GL->PickFBO.Get() })
     {
       fbo->ReleaseGraphicsResources(this->GL->Window);
     }
@@ -152,70 +175,31 @@ int ProgressiveGPUPasses::MaxTextureSize() const
   return this->GL->MaxTexture;
 }
 
-bool ProgressiveGPUPasses::Upload(const GPUElementTexels& elements, const GPUNodeTexels& nodes,
-  const std::vector<float>& triangles, int hemicubeResolution, std::string& error)
+bool ProgressiveGPUPasses::Prepare(const std::vector<float>& triangles, int hemicubeResolution, std::string& error)
 {
   Internals& gl = *this->GL;
   vtkOpenGLRenderWindow* window = gl.Window;
   window->MakeCurrent();
-  gl.AtlasWidth = elements.Width;
-  gl.AtlasHeight = elements.Height;
-  gl.ElementCount = elements.Count;
-  gl.NodeWidth = nodes.Width;
-  gl.NodeCount = nodes.Count;
   gl.Hemicube = hemicubeResolution;
   gl.TriangleCount = triangles.size() / 12;
-  const int w = elements.Width, h = elements.Height;
-  gl.Centre = FloatTexture(window, w, h, &elements.Centre);
-  gl.Corner[0] = FloatTexture(window, w, h, &elements.Corner0);
-  gl.Corner[1] = FloatTexture(window, w, h, &elements.Corner1);
-  gl.Corner[2] = FloatTexture(window, w, h, &elements.Corner2);
-  gl.CentreLo = FloatTexture(window, w, h, &elements.CentreLo);
-  gl.CornerLo[0] = FloatTexture(window, w, h, &elements.Corner0Lo);
-  gl.CornerLo[1] = FloatTexture(window, w, h, &elements.Corner1Lo);
-  gl.CornerLo[2] = FloatTexture(window, w, h, &elements.Corner2Lo);
-  gl.Normal = FloatTexture(window, w, h, &elements.Normal);
-  gl.Reflectance = FloatTexture(window, w, h, &elements.Reflectance);
-  const std::vector<float>* initial[5] = { &elements.Irradiance0, &elements.Irradiance1,
-    &elements.Irradiance2, &elements.IrradianceCentre, &elements.Unshot };
-  bool ok = gl.Centre && gl.Corner[0] && gl.Corner[1] && gl.Corner[2] && gl.CentreLo && gl.CornerLo[0] &&
-    gl.CornerLo[1] && gl.CornerLo[2] && gl.Normal && gl.Reflectance;
-  for (int k = 0; k < 5; ++k)
-  {
-    gl.Target[k] = FloatTexture(window, w, h, initial[k]);
-    ok = ok && gl.Target[k];
-  }
-  gl.NodeRange = FloatTexture(window, nodes.Width, nodes.Width, &nodes.Range);
-  gl.NodeReflectance = FloatTexture(window, nodes.Width, nodes.Width, &nodes.Reflectance);
-  gl.NodePower = FloatTexture(window, nodes.Width, nodes.Width, nullptr);
   gl.Item = FloatTexture(window, 5 * hemicubeResolution, hemicubeResolution, nullptr);
   gl.Pick = FloatTexture(window, 1, 1, nullptr);
-  ok = ok && gl.NodeRange && gl.NodeReflectance && gl.NodePower && gl.Item && gl.Pick;
   gl.ItemDepth = vtkSmartPointer<vtkTextureObject>::New();
   gl.ItemDepth->SetContext(window);
   gl.PickDepth = vtkSmartPointer<vtkTextureObject>::New();
   gl.PickDepth->SetContext(window);
-  ok = ok && gl.ItemDepth->AllocateDepth(5 * hemicubeResolution, hemicubeResolution, vtkTextureObject::Float32) &&
-    gl.PickDepth->AllocateDepth(1, 1, vtkTextureObject::Float32);
-  if (!ok)
+  if (!gl.Item || !gl.Pick ||
+    !gl.ItemDepth->AllocateDepth(5 * hemicubeResolution, hemicubeResolution, vtkTextureObject::Float32) ||
+    !gl.PickDepth->AllocateDepth(1, 1, vtkTextureObject::Float32))
   {
-    error = "progressive-gpu: the OpenGL context (" + gl.Renderer + ") could not allocate the " +
-      std::to_string(w) + "x" + std::to_string(h) + " element atlas";
+    error = "progressive-gpu: the OpenGL context (" + gl.Renderer + ") could not allocate the item buffer";
     return false;
   }
-  for (vtkOpenGLFramebufferObject* fbo : { gl.ElementFBO.Get(), gl.NodeFBO.Get(), gl.ItemFBO.Get(), gl.PickFBO.Get() })
+  for (vtkOpenGLFramebufferObject* fbo : { gl.ElementFBO.Get(), gl.DeltaFBO.Get(), gl.FlagFBO.Get(),
+         gl.NodeFBO.Get(), gl.ItemFBO.Get(), gl.PickFBO.Get() })
   {
     fbo->SetContext(window);
   }
-  gl.ElementFBO->Bind();
-  for (int k = 0; k < 5; ++k)
-  {
-    gl.ElementFBO->AddColorAttachment(k, gl.Target[k]);
-  }
-  gl.ElementFBO->ActivateDrawBuffers(5);
-  gl.NodeFBO->Bind();
-  gl.NodeFBO->AddColorAttachment(0, gl.NodePower);
-  gl.NodeFBO->ActivateDrawBuffers(1);
   gl.ItemFBO->Bind();
   gl.ItemFBO->AddColorAttachment(0, gl.Item);
   gl.ItemFBO->AddDepthAttachment(gl.ItemDepth);
@@ -227,15 +211,25 @@ bool ProgressiveGPUPasses::Upload(const GPUElementTexels& elements, const GPUNod
 
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
   gl.ShotQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, gpu_shaders::ShotFragment, ""));
+  gl.CommitQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, gpu_shaders::CommitFragment, ""));
+  gl.SplitQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, gpu_shaders::SplitFragment, ""));
   gl.NodeQuad.reset(new vtkOpenGLQuadHelper(window, nullptr, gpu_shaders::NodePowerFragment, ""));
   gl.ItemProgram = cache->ReadyShaderProgram(gpu_shaders::HemicubeItemVertex, gpu_shaders::HemicubeItemFragment, "");
   gl.PickProgram = cache->ReadyShaderProgram(gpu_shaders::SelectionVertex, gpu_shaders::SelectionFragment, "");
-  if (!gl.ShotQuad->Program || !gl.ShotQuad->Program->GetCompiled() || !gl.NodeQuad->Program ||
-    !gl.NodeQuad->Program->GetCompiled() || !gl.ItemProgram || !gl.PickProgram)
+  for (vtkOpenGLQuadHelper* quad : { gl.ShotQuad.get(), gl.CommitQuad.get(), gl.SplitQuad.get(), gl.NodeQuad.get() })
+  {
+    if (!quad->Program || !quad->Program->GetCompiled())
+    {
+      error = "progressive-gpu: a shader program did not build on " + gl.Renderer;
+      return false;
+    }
+  }
+  if (!gl.ItemProgram || !gl.PickProgram)
   {
     error = "progressive-gpu: a shader program did not build on " + gl.Renderer;
     return false;
   }
+  glGenQueries(1, &gl.SplitQuery);
   if (gl.TriangleCount == 0)
   {
     return true; // nothing can occlude: the item buffer stays empty
@@ -255,11 +249,77 @@ bool ProgressiveGPUPasses::Upload(const GPUElementTexels& elements, const GPUNod
   return true;
 }
 
+bool ProgressiveGPUPasses::UploadAtlas(const GPUElementTexels& elements, const GPUNodeTexels& nodes, std::string& error)
+{
+  Internals& gl = *this->GL;
+  vtkOpenGLRenderWindow* window = gl.Window;
+  window->MakeCurrent();
+  gl.AtlasWidth = elements.Width;
+  gl.AtlasHeight = elements.Height;
+  gl.ElementCount = elements.Count;
+  gl.NodeWidth = nodes.Width;
+  gl.NodeCount = nodes.Count;
+  const int w = elements.Width, h = elements.Height;
+  const std::vector<float>* inputs[10] = { &elements.Centre, &elements.Corner0, &elements.Corner1,
+    &elements.Corner2, &elements.CentreLo, &elements.Corner0Lo, &elements.Corner1Lo, &elements.Corner2Lo,
+    &elements.Normal, &elements.Reflectance };
+  vtkSmartPointer<vtkTextureObject>* slots[10] = { &gl.Centre, &gl.Corner[0], &gl.Corner[1], &gl.Corner[2],
+    &gl.CentreLo, &gl.CornerLo[0], &gl.CornerLo[1], &gl.CornerLo[2], &gl.Normal, &gl.Reflectance };
+  bool ok = true;
+  for (int k = 0; k < 10; ++k)
+  {
+    *slots[k] = FloatTexture(window, w, h, inputs[k]);
+    ok = ok && *slots[k];
+  }
+  const std::vector<float>* initial[5] = { &elements.Irradiance0, &elements.Irradiance1,
+    &elements.Irradiance2, &elements.IrradianceCentre, &elements.Unshot };
+  for (int k = 0; k < 5; ++k)
+  {
+    gl.Target[k] = FloatTexture(window, w, h, initial[k]);
+    ok = ok && gl.Target[k];
+  }
+  for (int k = 0; k < 4; ++k)
+  {
+    gl.Delta[k] = FloatTexture(window, w, h, nullptr);
+    ok = ok && gl.Delta[k];
+  }
+  gl.Flag = FloatTexture(window, w, h, nullptr);
+  gl.NodeRange = FloatTexture(window, nodes.Width, nodes.Width, &nodes.Range);
+  gl.NodeReflectance = FloatTexture(window, nodes.Width, nodes.Width, &nodes.Reflectance);
+  gl.NodePower = FloatTexture(window, nodes.Width, nodes.Width, nullptr);
+  ok = ok && gl.Flag && gl.NodeRange && gl.NodeReflectance && gl.NodePower;
+  if (!ok)
+  {
+    error = "progressive-gpu: the OpenGL context (" + gl.Renderer + ") could not allocate the " +
+      std::to_string(w) + "x" + std::to_string(h) + " element atlas";
+    return false;
+  }
+  gl.ElementFBO->Bind();
+  for (int k = 0; k < 5; ++k)
+  {
+    gl.ElementFBO->AddColorAttachment(k, gl.Target[k]);
+  }
+  gl.ElementFBO->ActivateDrawBuffers(5);
+  gl.DeltaFBO->Bind();
+  for (int k = 0; k < 4; ++k)
+  {
+    gl.DeltaFBO->AddColorAttachment(k, gl.Delta[k]);
+  }
+  gl.DeltaFBO->ActivateDrawBuffers(4);
+  gl.FlagFBO->Bind();
+  gl.FlagFBO->AddColorAttachment(0, gl.Flag);
+  gl.FlagFBO->ActivateDrawBuffers(1);
+  gl.NodeFBO->Bind();
+  gl.NodeFBO->AddColorAttachment(0, gl.NodePower);
+  gl.NodeFBO->ActivateDrawBuffers(1);
+  return true;
+}
+
 std::array<double, 4> ProgressiveGPUPasses::NodeTotals()
 {
   Internals& gl = *this->GL;
   vtkOpenGLState* state = gl.State();
-  gl.NodeFBO->Bind();
+  DrawTo(gl.NodeFBO, 1);
   state->vtkglViewport(0, 0, gl.NodeWidth, gl.NodeWidth);
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_DEPTH_TEST);
@@ -302,7 +362,7 @@ long long ProgressiveGPUPasses::SelectShooter(
 {
   Internals& gl = *this->GL;
   vtkOpenGLState* state = gl.State();
-  gl.PickFBO->Bind();
+  DrawTo(gl.PickFBO, 1);
   state->vtkglViewport(0, 0, 1, 1);
   state->vtkglDisable(GL_BLEND);
   state->vtkglEnable(GL_DEPTH_TEST);
@@ -359,7 +419,7 @@ void ProgressiveGPUPasses::Shoot(const GPUShooter& shooter, float discTolerance)
   // (the occluders only; none in a convex room, where it stays as cleared).
   if (gl.TriangleCount > 0 || !gl.ItemCleared)
   {
-    gl.ItemFBO->Bind();
+    DrawTo(gl.ItemFBO, 1);
     state->vtkglViewport(0, 0, 5 * gl.Hemicube, gl.Hemicube);
     state->vtkglDisable(GL_BLEND);
     state->vtkglDisable(GL_SCISSOR_TEST);
@@ -396,9 +456,9 @@ void ProgressiveGPUPasses::Shoot(const GPUShooter& shooter, float discTolerance)
     gl.ItemCleared = true;
   }
 
-  // Sections 3.2-3.3, the reconstruction pass over the element atlas.
-  gl.ElementFBO->Bind();
-  gl.ElementFBO->ActivateDrawBuffers(5);
+  // Sections 3.2-3.3, the reconstruction pass over the element atlas,
+  // into the shot's deltas.
+  DrawTo(gl.DeltaFBO, 4);
   state->vtkglViewport(0, 0, gl.AtlasWidth, gl.AtlasHeight);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglEnable(GL_BLEND);
@@ -456,8 +516,7 @@ void ProgressiveGPUPasses::SetUnshot(std::size_t first, std::size_t count, const
     return;
   }
   vtkOpenGLState* state = gl.State();
-  gl.ElementFBO->Bind();
-  gl.ElementFBO->ActivateDrawBuffers(5);
+  DrawTo(gl.ElementFBO, 5);
   state->vtkglViewport(0, 0, gl.AtlasWidth, gl.AtlasHeight);
   state->vtkglEnable(GL_SCISSOR_TEST);
   const GLfloat clear[4] = { value[0], value[1], value[2], 0.0f };
@@ -483,6 +542,92 @@ void ProgressiveGPUPasses::SetUnshot(std::size_t first, std::size_t count, const
     fill(0, r1, last % w + 1, 1);
   }
   state->vtkglDisable(GL_SCISSOR_TEST);
+}
+
+void ProgressiveGPUPasses::BeginShot()
+{
+  Internals& gl = *this->GL;
+  vtkOpenGLState* state = gl.State();
+  DrawTo(gl.DeltaFBO, 4);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+}
+
+std::size_t ProgressiveGPUPasses::CountSplits(float threshold)
+{
+  Internals& gl = *this->GL;
+  vtkOpenGLState* state = gl.State();
+  DrawTo(gl.FlagFBO, 1);
+  state->vtkglViewport(0, 0, gl.AtlasWidth, gl.AtlasHeight);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  gl.Window->GetShaderCache()->ReadyShaderProgram(gl.SplitQuad->Program);
+  vtkShaderProgram* program = gl.SplitQuad->Program;
+  vtkTextureObject* inputs[9] = { gl.Delta[0], gl.Delta[1], gl.Delta[2], gl.Delta[3], gl.Target[0], gl.Target[1],
+    gl.Target[2], gl.Target[3], gl.Reflectance };
+  const char* names[9] = { "delta0Tex", "delta1Tex", "delta2Tex", "deltaCentreTex", "irradiance0Tex",
+    "irradiance1Tex", "irradiance2Tex", "irradianceCentreTex", "reflectanceTex" };
+  for (int k = 0; k < 9; ++k)
+  {
+    inputs[k]->Activate();
+    program->SetUniformi(names[k], inputs[k]->GetTextureUnit());
+  }
+  program->SetUniformi("atlasWidth", gl.AtlasWidth);
+  program->SetUniformi("elementCount", static_cast<int>(gl.ElementCount));
+  program->SetUniformf("threshold", threshold);
+  // Section 4.1: "a hardware occlusion query is used to count" the
+  // fragments that ask for a split (the others are discarded).
+  glBeginQuery(GL_SAMPLES_PASSED, gl.SplitQuery);
+  gl.SplitQuad->Render();
+  glEndQuery(GL_SAMPLES_PASSED);
+  for (vtkTextureObject* input : inputs)
+  {
+    input->Deactivate();
+  }
+  GLuint count = 0;
+  glGetQueryObjectuiv(gl.SplitQuery, GL_QUERY_RESULT, &count);
+  return count;
+}
+
+std::vector<float> ProgressiveGPUPasses::ReadSplitFlags()
+{
+  Internals& gl = *this->GL;
+  std::vector<float> flags(4 * static_cast<std::size_t>(gl.AtlasWidth) * gl.AtlasHeight);
+  gl.Flag->Bind();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, flags.data());
+  return flags;
+}
+
+void ProgressiveGPUPasses::CommitShot()
+{
+  Internals& gl = *this->GL;
+  vtkOpenGLState* state = gl.State();
+  DrawTo(gl.ElementFBO, 5);
+  state->vtkglViewport(0, 0, gl.AtlasWidth, gl.AtlasHeight);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  gl.Window->GetShaderCache()->ReadyShaderProgram(gl.CommitQuad->Program);
+  vtkShaderProgram* program = gl.CommitQuad->Program;
+  vtkTextureObject* inputs[5] = { gl.Delta[0], gl.Delta[1], gl.Delta[2], gl.Delta[3], gl.Reflectance };
+  const char* names[5] = { "delta0Tex", "delta1Tex", "delta2Tex", "deltaCentreTex", "reflectanceTex" };
+  for (int k = 0; k < 5; ++k)
+  {
+    inputs[k]->Activate();
+    program->SetUniformi(names[k], inputs[k]->GetTextureUnit());
+  }
+  gl.CommitQuad->Render();
+  for (vtkTextureObject* input : inputs)
+  {
+    input->Deactivate();
+  }
+  state->vtkglDisable(GL_BLEND);
 }
 
 std::array<std::vector<float>, 5> ProgressiveGPUPasses::ReadElements()

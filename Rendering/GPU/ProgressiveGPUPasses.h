@@ -65,12 +65,14 @@ public:
   /// The largest texture edge the context allows.
   int MaxTextureSize() const;
 
-  /// Uploads the atlases and the triangles that can occlude, for the item
-  /// buffer (per vertex x, y, z in scaled coordinates and the triangle's
-  /// index: 12 floats a triangle); false with `error` when the context
-  /// cannot hold them.
-  bool Upload(const GPUElementTexels& elements, const GPUNodeTexels& nodes,
-    const std::vector<float>& triangles, int hemicubeResolution, std::string& error);
+  /// Once: the triangles that can occlude, for the item buffer (per vertex
+  /// x, y, z in scaled coordinates and the triangle's index: 12 floats a
+  /// triangle), the item buffer of `hemicubeResolution` and the programs;
+  /// false with `error` when the context cannot hold them.
+  bool Prepare(const std::vector<float>& triangles, int hemicubeResolution, std::string& error);
+  /// The element and node atlases, at the start and again after elements
+  /// were subdivided (the textures are made anew at the new size).
+  bool UploadAtlas(const GPUElementTexels& elements, const GPUNodeTexels& nodes, std::string& error);
 
   /// Section 3.4's totals over every node: signed unshot power (rgb) and
   /// the sum of mean(|U|) A (the fourth), from the node texture's top mipmap level.
@@ -78,8 +80,18 @@ public:
   /// The node of largest |mean(P + rho ambient A)| by the z-buffer maximum,
   /// -1 when every node has none; its power P (rgb) in `power`.
   long long SelectShooter(const std::array<float, 3>& ambient, float powerScale, std::array<double, 3>& power);
-  /// Section 3.2: the item buffer from `shooter`, then every element gathers its shot.
+  /// Clears the shot's deltas (before a shooter's first part).
+  void BeginShot();
+  /// Section 3.2: the item buffer from `shooter`, then every element adds
+  /// its shot to the deltas.
   void Shoot(const GPUShooter& shooter, float discTolerance);
+  /// Section 4.1: how many elements the shot's deltas ask to subdivide
+  /// (gradient criterion, `threshold` relative); ReadSplitFlags says which
+  /// (x of each texel: 1 to split).
+  std::size_t CountSplits(float threshold);
+  std::vector<float> ReadSplitFlags();
+  /// Eq. 1: the deltas join the irradiance, rho times their mean the residual.
+  void CommitShot();
   /// Sets the unshot radiosity of elements [first, first + count) to `value`.
   void SetUnshot(std::size_t first, std::size_t count, const std::array<float, 3>& value);
   /// The five element targets read back: corner 0-2 and centre irradiance, unshot (RGBA each).

@@ -66,9 +66,8 @@ const char* const HemicubeItemFragment = "//VTK::System::Dec\n"
                                          "}\n";
 
 // One fragment per element texel (the element at index y * atlasWidth + x).
-// Targets 0-2: the irradiance at the element's corners, 3: at its centroid,
-// 4: its unshot radiosity (rho times the area mean of the four by the
-// degree-2 rule 3/4 centre + 1/12 corners, as ElementSamples::Mean).
+// Targets 0-2: the shot's irradiance at the element's corners, 3: at its
+// centroid (CommitFragment adds them and the residual's share).
 const char* const ShotFragment =
   "//VTK::System::Dec\n"
   "//VTK::Output::Dec\n"
@@ -124,26 +123,33 @@ const char* const ShotFragment =
   "    ivec2(faceResolution - 1));\n"
   "  float d = length(w);\n"
   "  float nw = dot(n, w);\n"
-  "  for (int dy = -1; dy <= 1; ++dy)\n"
-  "    for (int dx = -1; dx <= 1; ++dx)\n"
-  "    {\n"
-  "      ivec2 q = px + ivec2(dx, dy);\n"
-  "      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(faceResolution)))) continue;\n"
-  "      vec2 item = texelFetch(itemTex, ivec2(face * faceResolution + q.x, q.y), 0).xy;\n"
-  "      if (abs(item.x - (triangle + 1.0)) < 0.5) return 1.0;\n"
+  // The ids first (the common case: a texel sees its own triangle), then
+  // the plane test, at the sample's pixel before its neighbours.
+  "  vec2 items[9];\n"
+  "  for (int k = 0; k < 9; ++k)\n"
+  "  {\n"
+  "    ivec2 q = clamp(px + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), ivec2(faceResolution - 1));\n"
+  "    items[k] = texelFetch(itemTex, ivec2(face * faceResolution + q.x, q.y), 0).xy;\n"
+  "    if (abs(items[k].x - (triangle + 1.0)) < 0.5) return 1.0;\n"
+  "  }\n"
+  "  for (int j = 0; j < 9; ++j)\n"
+  "  {\n"
+  "    int k = (j + 4) % 9;\n"
+  "    ivec2 q = clamp(px + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), ivec2(faceResolution - 1));\n"
   // Nothing drawn: no occluder lies that way (only the triangles that can
   // occlude are drawn, SceneAnalysis::CanOcclude).
-  "      if (!(item.x > 0.5)) return 1.0;\n"
+  "    if (!(items[k].x > 0.5)) return 1.0;\n"
   // The pixel centre's ray, from its clip coordinates back to the frame.
-  "      vec2 c = (vec2(q) + 0.5) / float(faceResolution) * 2.0 - 1.0;\n"
-  "      vec3 abc = face == 0 ? vec3(c.x, c.y, 1.0) : face == 1 ? vec3(1.0, c.x, c.y)\n"
-  "        : face == 2 ? vec3(-1.0, c.x, c.y) : face == 3 ? vec3(c.x, 1.0, c.y) : vec3(c.x, -1.0, c.y);\n"
-  "      vec3 u = normalize(abc.x * frameU + abc.y * frameV + abc.z * frameN);\n"
-  "      float toward = dot(n, u);\n"
+  "    vec2 c = (vec2(q) + 0.5) / float(faceResolution) * 2.0 - 1.0;\n"
+  "    vec3 abc = face == 0 ? vec3(c.x, c.y, 1.0) : face == 1 ? vec3(1.0, c.x, c.y)\n"
+  "      : face == 2 ? vec3(-1.0, c.x, c.y) : face == 3 ? vec3(c.x, 1.0, c.y) : vec3(c.x, -1.0, c.y);\n"
+  "    vec3 u = abc.x * frameU + abc.y * frameV + abc.z * frameN;\n"
+  "    float length_u = length(u);\n"
+  "    float toward = dot(n, u) / length_u;\n"
   // Where the ray meets the sample's plane (edge-on: the sample's own distance).
-  "      float plane = toward < -1e-3 ? nw / toward : d;\n"
-  "      if (item.y >= min(plane, 4.0) * (1.0 - depthSlope) - depthFloor) return 1.0;\n"
-  "    }\n"
+  "    float plane = toward < -1e-3 ? nw / toward : d;\n"
+  "    if (items[k].y >= min(plane, 4.0) * (1.0 - depthSlope) - depthFloor) return 1.0;\n"
+  "  }\n"
   "  return 0.0;\n"
   "}\n"
   // Lambert's contour integral over the shooter clipped to the receiver's
@@ -261,13 +267,79 @@ const char* const ShotFragment =
   "    any += f[k];\n"
   "  }\n"
   "  if (!(any > 0.0)) discard;\n"
-  "  vec3 rho = texelFetch(reflectanceTex, t, 0).rgb;\n"
-  "  float mean = 0.75 * f[3] + (f[0] + f[1] + f[2]) / 12.0;\n"
   "  gl_FragData[0] = vec4(shot * f[0], 0.0);\n"
   "  gl_FragData[1] = vec4(shot * f[1], 0.0);\n"
   "  gl_FragData[2] = vec4(shot * f[2], 0.0);\n"
   "  gl_FragData[3] = vec4(shot * f[3], 0.0);\n"
-  "  gl_FragData[4] = vec4(rho * shot * mean, 0.0);\n"
+  "}\n";
+
+// Eq. 1's update once the shot is accepted: the irradiance samples take the
+// shot's deltas, the residual rho times their area mean (the degree-2 rule
+// 3/4 centre + 1/12 corners, as ElementSamples::Mean). Blended (added) into
+// targets 0-3 (irradiance) and 4 (unshot radiosity).
+const char* const CommitFragment = "//VTK::System::Dec\n"
+                                   "//VTK::Output::Dec\n"
+                                   "in vec2 texCoord;\n"
+                                   "uniform sampler2D delta0Tex;\n"
+                                   "uniform sampler2D delta1Tex;\n"
+                                   "uniform sampler2D delta2Tex;\n"
+                                   "uniform sampler2D deltaCentreTex;\n"
+                                   "uniform sampler2D reflectanceTex;\n"
+                                   "void main()\n"
+                                   "{\n"
+                                   "  ivec2 t = ivec2(texCoord * vec2(textureSize(delta0Tex, 0)));\n"
+                                   "  vec3 d0 = texelFetch(delta0Tex, t, 0).rgb;\n"
+                                   "  vec3 d1 = texelFetch(delta1Tex, t, 0).rgb;\n"
+                                   "  vec3 d2 = texelFetch(delta2Tex, t, 0).rgb;\n"
+                                   "  vec3 dc = texelFetch(deltaCentreTex, t, 0).rgb;\n"
+                                   "  vec3 rho = texelFetch(reflectanceTex, t, 0).rgb;\n"
+                                   "  gl_FragData[0] = vec4(d0, 0.0);\n"
+                                   "  gl_FragData[1] = vec4(d1, 0.0);\n"
+                                   "  gl_FragData[2] = vec4(d2, 0.0);\n"
+                                   "  gl_FragData[3] = vec4(dc, 0.0);\n"
+                                   "  gl_FragData[4] = vec4(rho * (0.75 * dc + (d0 + d1 + d2) / 12.0), 0.0);\n"
+                                   "}\n";
+
+// Section 4.1's subdivision test on the GPU, the gradient criterion (after
+// Vedel & Puech 1992, as ProgressiveRadiosity::Shoot): a linear field's
+// centre value is the mean of its corners, so the shot's departure from
+// that mean measures the change of gradient across the element; judged
+// against everything received so far with the shot, so that late, weak
+// shots do not split. Elements at their deepest level (reflectance's w 0)
+// never split. Fragments that need no split are discarded: an occlusion
+// query counts the rest, and the flag texture says which they are.
+const char* const SplitFragment =
+  "//VTK::System::Dec\n"
+  "//VTK::Output::Dec\n"
+  "in vec2 texCoord;\n"
+  "uniform sampler2D delta0Tex;\n"
+  "uniform sampler2D delta1Tex;\n"
+  "uniform sampler2D delta2Tex;\n"
+  "uniform sampler2D deltaCentreTex;\n"
+  "uniform sampler2D irradiance0Tex;\n"
+  "uniform sampler2D irradiance1Tex;\n"
+  "uniform sampler2D irradiance2Tex;\n"
+  "uniform sampler2D irradianceCentreTex;\n"
+  "uniform sampler2D reflectanceTex;\n"
+  "uniform int atlasWidth;\n"
+  "uniform int elementCount;\n"
+  "uniform float threshold;\n"
+  "float Luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }\n"
+  "void main()\n"
+  "{\n"
+  "  ivec2 t = ivec2(texCoord * vec2(textureSize(delta0Tex, 0)));\n"
+  "  if (t.y * atlasWidth + t.x >= elementCount || texelFetch(reflectanceTex, t, 0).w < 0.5) discard;\n"
+  "  float d0 = Luminance(texelFetch(delta0Tex, t, 0).rgb);\n"
+  "  float d1 = Luminance(texelFetch(delta1Tex, t, 0).rgb);\n"
+  "  float d2 = Luminance(texelFetch(delta2Tex, t, 0).rgb);\n"
+  "  float dc = Luminance(texelFetch(deltaCentreTex, t, 0).rgb);\n"
+  "  float h0 = Luminance(texelFetch(irradiance0Tex, t, 0).rgb) + d0;\n"
+  "  float h1 = Luminance(texelFetch(irradiance1Tex, t, 0).rgb) + d1;\n"
+  "  float h2 = Luminance(texelFetch(irradiance2Tex, t, 0).rgb) + d2;\n"
+  "  float hc = Luminance(texelFetch(irradianceCentreTex, t, 0).rgb) + dc;\n"
+  "  float total = abs(0.75 * hc + (h0 + h1 + h2) / 12.0);\n"
+  "  if (!(abs(dc - (d0 + d1 + d2) / 3.0) > threshold * total)) discard;\n"
+  "  gl_FragData[0] = vec4(1.0);\n"
   "}\n";
 
 // One fragment per shooter node of the power-of-two node texture: the sum

@@ -8,9 +8,14 @@
 // - Shot*: sections 3.2 and 3.3, the reconstruction pass: one fragment per
 //   element texel; each of the element's four samples back-projects itself
 //   onto the item buffer (visible where it finds its own triangle, or a
-//   surface no nearer than itself), takes the disc form factor of eq. 2, or
-//   the exact contour formula where the shooter is close, and the texel adds
-//   eq. 1's delta to its irradiance and residual by additive blending.
+//   surface no nearer than its plane), takes the disc form factor of eq. 2,
+//   or the exact contour formula where the shooter is close, and the texel
+//   adds the shot's irradiance to four delta targets (blended over the
+//   shooter's parts).
+// - Split*: section 4.1's gradient test on the shot's deltas; an occlusion
+//   query counts the elements to subdivide.
+// - Commit*: eq. 1's update, the deltas added to the irradiance and rho
+//   times their mean to the residual.
 // - NodePower*: section 3.4's mipmapped residual: the unshot power of every
 //   shooter node, summed over its elements, in a power-of-two texture whose
 //   top mipmap level is the total (and the signed total for overshooting).
@@ -27,6 +32,8 @@ namespace gpu_shaders
 extern const char* const HemicubeItemVertex;
 extern const char* const HemicubeItemFragment;
 extern const char* const ShotFragment;
+extern const char* const CommitFragment;
+extern const char* const SplitFragment;
 extern const char* const NodePowerFragment;
 extern const char* const SelectionVertex;
 extern const char* const SelectionFragment;

@@ -107,7 +107,8 @@ int TestProgressiveGPUAccuracy(int, char*[])
     std::cout << "closed cube rho " << rho << ": " << stats.Iterations << " shots, " << stats.SolveSeconds
               << " s on " << gpu->Renderer() << ", max error " << error << "\n";
     ok &= Check(stats.Stop == StopReason::Converged, "closed cube converges");
-    // Measured 2.9e-5, 1.6e-5, 8.5e-6, 2.8e-5 (rho 0.5, 0.9, 0.99, 0.999; llvmpipe).
+    // Measured 1.5e-5, 2.9e-5, 2.3e-5, 2.5e-5 (rho 0.5, 0.9, 0.99, 0.999;
+    // llvmpipe; elements split near each shooter and gather their history).
     ok &= Check(error < 1e-4, "closed cube within 1e-4");
   }
   // Scale: the same cube at 1e-4 m and 1e4 m gives the same answer.
@@ -117,7 +118,7 @@ int TestProgressiveGPUAccuracy(int, char*[])
     auto gpu = Solved<ProgressiveGPUMethod>(MakeClosedCube(size, 2, 0.9, 1.0), cubeOptions, stats);
     const double error = MaxCellError(gpu->Surface(), 10.0);
     std::cout << "closed cube of edge " << size << " m, rho 0.9: max error " << error << "\n";
-    // Measured 1.6e-5 at both scales, as at 1 m.
+    // Measured 2.9e-5 at both scales, as at 1 m.
     ok &= Check(error < 1e-4, "closed cube within 1e-4 at any scale");
   }
 
@@ -141,9 +142,12 @@ int TestProgressiveGPUAccuracy(int, char*[])
               << cpuStats.Iterations << " shots " << cpuStats.SolveSeconds
               << " s; triangle means differ by at most " << worst << " of the peak\n";
     ok &= Check(gpuStats.Stop == StopReason::Converged, "Cornell box converges");
-    // Measured 0.0123 of the peak (the CPU solver splits its elements
-    // adaptively, the GPU keeps the initial mesh; the issue asks for 3%).
+    // Measured 0.0116 of the peak (the issue asks for 3%); both split
+    // their elements by the same gradient criterion (1640 splits on the GPU).
+    std::cout << "Cornell box: " << gpuStats.Subdivisions << " splits on the GPU, " << cpuStats.Subdivisions
+              << " on the CPU\n";
     ok &= Check(worst < 0.02, "Cornell box within 2% of the CPU solver");
+    ok &= Check(gpuStats.Subdivisions > 0, "Cornell box: the GPU subdivides");
   }
 
   // The exact penumbra (a black scene: the direct light alone) and the
@@ -181,13 +185,18 @@ int TestProgressiveGPUAccuracy(int, char*[])
     SolverStatistics stats;
     auto gpu = Solved<ProgressiveGPUMethod>(contact, options, stats);
     auto cpu = Solved<ProgressiveMethod>(contact, static_cast<const ProgressiveOptions&>(options), stats);
+    ProgressiveGPUOptions uniform = options;
+    uniform.MaxSubdivisionLevels = 0;
+    auto flat = Solved<ProgressiveGPUMethod>(contact, uniform, stats);
     const double gpuError = ProbeError(*gpu, probes, ref.Irradiance);
     const double cpuError = ProbeError(*cpu, probes, ref.Irradiance);
+    const double flatError = ProbeError(*flat, probes, ref.Irradiance);
     std::cout << "contact edge: max error " << gpuError << " of the peak (CPU " << cpuError
-              << "): the item buffer adds " << gpuError - cpuError << "\n";
-    // Measured 1.28e-3 (CPU 5.0e-4): the corner samples' limit taken 1e-3
-    // inside the element (the CPU's 1e-6) and float.
-    ok &= Check(gpuError < 2e-3, "contact edge within 2e-3 of the peak");
+              << "): the item buffer adds " << gpuError - cpuError << "; without subdivision " << flatError << "\n";
+    // Measured 5.3e-4 (CPU 5.0e-4); without the adaptive subdivision
+    // (section 4) 1.28e-3.
+    ok &= Check(gpuError < 8e-4, "contact edge within 8e-4 of the peak");
+    ok &= Check(gpuError < 0.6 * flatError, "contact edge: subdivision halves the error");
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
