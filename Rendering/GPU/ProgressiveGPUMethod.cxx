@@ -3,8 +3,8 @@
 #include "ProgressiveGPUAtlas.h"
 #include "ProgressiveGPUPasses.h"
 #include "Radiosity/Common/DirectLighting.h"
-#include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/ElementMesh.h"
+#include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Common/MemoryBudget.h"
 #include "Radiosity/Common/SceneAnalysis.h"
 #include "Radiosity/Common/SolutionMesh.h"
@@ -17,16 +17,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <unordered_map>
 
 namespace radiosity
 {
 namespace
 {
-// The GPU side per element: eleven RGBA32F texels (inputs and targets); the
-// CPU keeps the element mesh and the staging arrays.
-constexpr double BytesPerGPUElement = 11 * 16.0 + sizeof(Element) + 12 * 16.0;
+// The GPU side per element: twenty RGBA32F texels (ten inputs, five
+// targets, four deltas, the split flag); the CPU keeps the element mesh and
+// the fifteen staging arrays (ProgressiveGPUAtlas).
+constexpr double BytesPerGPUElement = 20 * 16.0 + sizeof(Element) + 15 * 16.0;
 // Element and node indices travel as float texel values: exact below 2^24.
 constexpr double MaxIndexedByFloat = 16777216.0;
 
@@ -128,8 +128,7 @@ void ProgressiveGPUMethod::ShootLights(SolverStatistics& stats)
   // The lights and the sky shoot first, once, on the CPU: their exact direct
   // light (DirectLighting, the CPU solver's) at every element's corners and
   // centroid becomes its first irradiance (and a split's children's, exact
-  // again). The GPU then shoots what the surfaces reflect. The elements do
-  // not split along the lights' shadows (the CPU solver's LightSubdivisionLevels).
+  // again). The GPU then shoots what the surfaces reflect.
   const Scene& scene = this->GetScene();
   if (scene.Lighting.Empty())
   {
@@ -137,8 +136,38 @@ void ProgressiveGPUMethod::ShootLights(SolverStatistics& stats)
   }
   ElementMesh& mesh = *this->Elements;
   this->Lights = std::make_unique<DirectLighting>(scene, this->Settings.SkySamples);
+  std::vector<std::uint32_t> pending = mesh.Leaves();
+  this->LightElements(pending);
+  // The receivers split where the lights' light departs from linear (the
+  // gradient criterion of section 4.1, as for every shot), exact light at
+  // the children, down to LightSubdivisionLevels below the elements'
+  // maximum depth (the CPU solver's rule): hard shadows of point lights and
+  // the sun otherwise fell across elements as dark blotches.
+  const double threshold = this->Settings.SubdivisionThreshold;
+  const int extra = std::max(0, this->Settings.LightSubdivisionLevels);
+  while (!pending.empty())
+  {
+    std::vector<std::uint32_t> children;
+    for (std::uint32_t e : pending)
+    {
+      const ElementSamples& h = mesh[e].Irradiance;
+      const double departure = std::fabs(Luminance(h.Centre) -
+        (Luminance(h.Corner[0]) + Luminance(h.Corner[1]) + Luminance(h.Corner[2])) / 3.0);
+      if (mesh[e].Level < this->MaxLevel[mesh[e].Source] + extra && departure > threshold * std::fabs(Luminance(h.Mean())) &&
+        mesh.Elements().size() + 4 <= this->ElementCapacity)
+      {
+        const std::uint32_t first = mesh.Subdivide(e);
+        for (std::uint32_t c = first; c < first + 4; ++c)
+        {
+          children.push_back(c);
+        }
+      }
+    }
+    stats.Subdivisions += children.size() / 4;
+    this->LightElements(children);
+    pending = std::move(children);
+  }
   const std::vector<std::uint32_t> leaves = mesh.Leaves();
-  this->LightElements(leaves);
   double power = 0.0;
   for (std::uint32_t l : leaves)
   {
