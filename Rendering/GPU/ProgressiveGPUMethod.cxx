@@ -11,6 +11,7 @@
 #include "Radiosity/Common/Stopwatch.h"
 #include "Radiosity/Common/ThreadLimit.h"
 #include "Radiosity/Common/Visibility.h"
+#include "Radiosity/Progressive/ShooterSamples.h"
 
 #include <tbb/parallel_for.h>
 
@@ -29,29 +30,6 @@ namespace
 constexpr double BytesPerGPUElement = 20 * 16.0 + sizeof(Element) + 15 * 16.0;
 // Element and node indices travel as float texel values: exact below 2^24.
 constexpr double MaxIndexedByFloat = 16777216.0;
-
-/// The midpoint subdivision of triangle (a, b, c) to `depth` levels: the
-/// parts that shoot in turn (Coombe 3.1: "all of the elements on the
-/// polygon shoot their energy in turn"), each with its own item buffer.
-void SubTriangles(const Vec3& a, const Vec3& b, const Vec3& c, int depth, std::vector<std::array<Vec3, 3>>& out)
-{
-  if (depth <= 0)
-  {
-    out.push_back({ a, b, c });
-    return;
-  }
-  const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-  SubTriangles(a, ab, ca, depth - 1, out);
-  SubTriangles(ab, b, bc, depth - 1, out);
-  SubTriangles(ca, bc, c, depth - 1, out);
-  SubTriangles(ab, bc, ca, depth - 1, out);
-}
-
-/// 1, 4 or 16 visibility samples (ProgressiveOptions) as subdivision depth 0, 1 or 2.
-int DepthOfSamples(int samples)
-{
-  return samples >= 16 ? 2 : samples >= 4 ? 1 : 0;
-}
 } // namespace
 
 ProgressiveGPUMethod::ProgressiveGPUMethod(std::shared_ptr<const Scene> scene, const ProgressiveGPUOptions& options)
@@ -74,15 +52,7 @@ ProgressiveGPUMethod::ProgressiveGPUMethod(std::shared_ptr<const Scene> scene, c
   this->Elements = std::make_unique<ElementMesh>(s, shooterEdge, initialEdge, 12);
   // Section 4.4's maximum depth, as the CPU solver's: the initial levels
   // of each input triangle and MaxSubdivisionLevels below them.
-  this->MaxLevel.assign(s.Triangles.size(), 0);
-  for (const Element& e : this->Elements->Elements())
-  {
-    this->MaxLevel[e.Source] = std::max<std::uint16_t>(this->MaxLevel[e.Source], e.Level);
-  }
-  for (auto& level : this->MaxLevel)
-  {
-    level = static_cast<std::uint16_t>(level + std::max(0, options.MaxSubdivisionLevels));
-  }
+  this->MaxLevel = this->Elements->MaxLevels(options.MaxSubdivisionLevels);
   const double budget = ResolveMemoryBudget(options.MemoryBudgetBytes);
   this->ElementCapacity = budget > 0 ? static_cast<std::size_t>(std::min(budget / BytesPerGPUElement, MaxIndexedByFloat))
                                      : static_cast<std::size_t>(MaxIndexedByFloat);
@@ -178,8 +148,10 @@ void ProgressiveGPUMethod::ShootLights(SolverStatistics& stats)
 
 int ProgressiveGPUMethod::PartsDepth(std::uint32_t node, double initialEdge, bool occluders) const
 {
-  // Shooting in parts samples visibility from each; with nothing to
-  // occlude one shot is the same light (the contour formula is additive).
+  // Coombe 3.1: "all of the elements on the polygon shoot their energy in
+  // turn", each part with its own item buffer. Shooting in parts samples
+  // visibility from each; with nothing to occlude one shot is the same
+  // light (the contour formula is additive).
   // A part is no smaller than a quarter of a receiving element: a shadow
   // is resolved no finer (the subdivided light of a tessellated scene
   // shoots each of its small triangles whole; a part of a receiving
@@ -190,7 +162,7 @@ int ProgressiveGPUMethod::PartsDepth(std::uint32_t node, double initialEdge, boo
   const int samples = !occluders ? 1
     : emitter                    ? this->Settings.VisibilitySamples
                                  : this->Settings.IndirectVisibilitySamples;
-  int depth = DepthOfSamples(samples);
+  int depth = SubdivisionLevelsOfSamples(samples);
   while (depth > 0 && mesh.LongestEdge(node) < std::ldexp(initialEdge, depth - 2))
   {
     --depth;
@@ -212,13 +184,8 @@ void ProgressiveGPUMethod::GatherHistory(const std::vector<std::uint32_t>& child
   for (std::size_t a = 0; a < active.size(); ++a)
   {
     const std::uint32_t node = shooters[active[a].first];
-    std::vector<std::array<Vec3, 3>> parts;
-    SubTriangles(mesh.Corner(node, 0), mesh.Corner(node, 1), mesh.Corner(node, 2),
-      this->PartsDepth(node, initialEdge, !convex), parts);
-    for (const auto& part : parts)
-    {
-      targets[a].push_back((part[0] + part[1] + part[2]) / 3.0);
-    }
+    AppendSubtriangleCentroids(mesh.Corner(node, 0), mesh.Corner(node, 1), mesh.Corner(node, 2),
+      this->PartsDepth(node, initialEdge, !convex), targets[a]);
   }
   RunWithThreads(this->Settings.Threads, [&] {
     tbb::parallel_for(std::size_t(0), children.size(), [&](std::size_t c) {
@@ -385,7 +352,7 @@ SolverStatistics ProgressiveGPUMethod::Solve(const ProgressCallback& progress)
     shooter.Shot = ToFloat(shot);
     const int depth = this->PartsDepth(node, initialEdge, analysis.Occluders > 0);
     parts.clear();
-    SubTriangles(mesh.Corner(node, 0), mesh.Corner(node, 1), mesh.Corner(node, 2), depth, parts);
+    AppendSubtriangles(mesh.Corner(node, 0), mesh.Corner(node, 1), mesh.Corner(node, 2), depth, parts);
     gpu.BeginShot();
     for (const auto& part : parts)
     {

@@ -118,6 +118,20 @@ std::uint32_t ElementMesh::Subdivide(std::uint32_t e)
   return first;
 }
 
+std::vector<std::uint16_t> ElementMesh::MaxLevels(int levels) const
+{
+  std::vector<std::uint16_t> deepest(this->SourceScene->Triangles.size(), 0);
+  for (const Element& e : this->Nodes)
+  {
+    deepest[e.Source] = std::max(deepest[e.Source], e.Level);
+  }
+  for (auto& level : deepest)
+  {
+    level = static_cast<std::uint16_t>(level + std::max(0, levels));
+  }
+  return deepest;
+}
+
 std::vector<std::uint32_t> ElementMesh::Leaves() const
 {
   std::vector<std::uint32_t> leaves;

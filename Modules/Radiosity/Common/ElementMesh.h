@@ -98,6 +98,10 @@ public:
 
   double LongestEdge(std::uint32_t e) const;
 
+  /// Per input triangle, the deepest level its elements may reach: that of
+  /// its deepest element now plus `levels` (Coombe 4.4's maximum depth).
+  std::vector<std::uint16_t> MaxLevels(int levels) const;
+
 private:
   std::uint32_t Midpoint(std::uint32_t a, std::uint32_t b);
   std::uint32_t AddElement(const std::array<std::uint32_t, 3>& v, std::int32_t parent,

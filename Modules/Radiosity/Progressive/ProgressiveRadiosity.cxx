@@ -72,15 +72,7 @@ ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene, const Progressive
     ? static_cast<std::size_t>(std::min(this->Budget / BytesPerElement, 1e18))
     : std::numeric_limits<std::size_t>::max();
   this->Elements = std::make_unique<ElementMesh>(scene, shooterEdge, initialEdge, 12);
-  this->MaxLevel.assign(scene.Triangles.size(), 0);
-  for (const Element& e : this->Elements->Elements())
-  {
-    this->MaxLevel[e.Source] = std::max<std::uint16_t>(this->MaxLevel[e.Source], e.Level);
-  }
-  for (auto& level : this->MaxLevel)
-  {
-    level = static_cast<std::uint16_t>(level + std::max(0, options.MaxSubdivisionLevels));
-  }
+  this->MaxLevel = this->Elements->MaxLevels(options.MaxSubdivisionLevels);
   double rhoArea = 0.0, area = 0.0;
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {

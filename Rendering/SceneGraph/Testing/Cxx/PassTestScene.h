@@ -17,6 +17,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <iostream>
 #include <string>
@@ -133,6 +134,20 @@ inline bool RenderAndCountSolves(
     what + ": " + std::to_string(solves) + " solves, expected " + std::to_string(expected));
   ok &= Check(pass->HasSolution(), what + ": no solution");
   return ok;
+}
+
+/// Mean of the red, green and blue bytes of the window's left (half 0) or
+/// right (half 1) half, each `width` x `height` pixels.
+inline double MeanOfHalf(vtkRenderWindow* window, int half, int width, int height)
+{
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetRGBACharPixelData(half * width, 0, half * width + width - 1, height - 1, 1, pixels);
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
+  {
+    sum += pixels->GetValue(4 * i) + pixels->GetValue(4 * i + 1) + pixels->GetValue(4 * i + 2);
+  }
+  return sum / (3.0 * pixels->GetNumberOfTuples());
 }
 }
 

@@ -19,25 +19,12 @@
 #include "vtkRenderWindow.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <cmath>
 
 namespace
 {
 constexpr int Width = 320, Height = 260;
-
-double MeanOfHalf(vtkRenderWindow* window, int half)
-{
-  vtkNew<vtkUnsignedCharArray> pixels;
-  window->GetRGBACharPixelData(half * Width, 0, half * Width + Width - 1, Height - 1, 1, pixels);
-  double sum = 0.0;
-  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
-  {
-    sum += pixels->GetValue(4 * i) + pixels->GetValue(4 * i + 1) + pixels->GetValue(4 * i + 2);
-  }
-  return sum / (3.0 * pixels->GetNumberOfTuples());
-}
 }
 
 int TestRadiosityPass(int argc, char* argv[])
@@ -113,7 +100,7 @@ int TestRadiosityPass(int argc, char* argv[])
     vtkRadiosityFilter* filter = passes[i]->GetFilter();
     ok &= PassTestScene::Check(passes[i]->GetNumberOfSolves() == 1 && passes[i]->HasSolution(),
       std::string(vtkRadiosityFilter::GetMethodName(methods[i])) + ": no solution");
-    means[i] = MeanOfHalf(window, i);
+    means[i] = PassTestScene::MeanOfHalf(window, i, Width, Height);
     std::cout << vtkRadiosityFilter::GetMethodName(methods[i]) << ": "
               << filter->GetScene().Triangles.size() << " scene triangles, "
               << filter->GetOutput(0)->GetNumberOfCells() << " solution cells, "

@@ -13,25 +13,12 @@
 #include "vtkRadiosityPass.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <cmath>
 
 namespace
 {
 constexpr int Width = 320, Height = 260;
-
-double MeanOfHalf(vtkRenderWindow* window, int half)
-{
-  vtkNew<vtkUnsignedCharArray> pixels;
-  window->GetRGBACharPixelData(half * Width, 0, half * Width + Width - 1, Height - 1, 1, pixels);
-  double sum = 0.0;
-  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
-  {
-    sum += pixels->GetValue(4 * i) + pixels->GetValue(4 * i + 1) + pixels->GetValue(4 * i + 2);
-  }
-  return sum / (3.0 * pixels->GetNumberOfTuples());
-}
 } // namespace
 
 int TestRadiosityPassGPU(int argc, char* argv[])
@@ -57,7 +44,8 @@ int TestRadiosityPassGPU(int argc, char* argv[])
   {
     ok &= PassTestScene::Check(passes[half]->HasSolution(), "no solution in half " + std::to_string(half));
   }
-  const double cpu = MeanOfHalf(window, 0), gpu = MeanOfHalf(window, 1);
+  const double cpu = PassTestScene::MeanOfHalf(window, 0, Width, Height),
+               gpu = PassTestScene::MeanOfHalf(window, 1, Width, Height);
   std::cout << "mean pixel: CPU " << cpu << ", GPU " << gpu << " (" << passes[1]->GetFilter()->GetStatistics().Iterations
             << " shots on the GPU)\n";
   ok &= PassTestScene::Check(cpu > 20.0 && gpu > 20.0, "a half is dark");
