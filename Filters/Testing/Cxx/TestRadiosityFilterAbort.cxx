@@ -1,7 +1,7 @@
 // vtkRadiosityFilter honours AbortExecute from a progress observer: the solve
 // stops early and says so; VTK's pipeline empties an aborted filter's output,
 // and the solution so far stays available through GetSolution(); for the
-// progressive method and for Auto's choice on the Cornell box.
+// progressive method, its GPU form and Auto's choice on the Cornell box.
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
@@ -35,8 +35,10 @@ int TestRadiosityFilterAbort(int, char*[])
   vtkFloatingPointExceptions::Disable();
   vtkNew<vtkCornellBoxSource> box;
   bool ok = true;
-  // Progressive, and Auto (the default: clustered hierarchical radiosity here).
-  for (int method : { int(vtkRadiosityFilter::Progressive), int(vtkRadiosityFilter::Auto) })
+  // Progressive, on the CPU and the GPU, and Auto (the default: clustered
+  // hierarchical radiosity here).
+  for (int method : { int(vtkRadiosityFilter::Progressive), int(vtkRadiosityFilter::ProgressiveGPU),
+         int(vtkRadiosityFilter::Auto) })
   {
     const std::string name = vtkRadiosityFilter::GetMethodName(method);
     progressEvents = 0;
@@ -59,7 +61,7 @@ int TestRadiosityFilterAbort(int, char*[])
     }
     // Hierarchical radiosity is stopped while it links (its second progress
     // event), before its first gathering sweep: elements, no history row yet.
-    const bool sweeps = method == vtkRadiosityFilter::Progressive;
+    const bool sweeps = method != vtkRadiosityFilter::Auto;
     if (progressEvents < 2 || !radiosity->GetSolution() || radiosity->GetSolution()->Triangles.empty() ||
       (sweeps && stats.History.Rows.empty()) || (!sweeps && stats.Iterations != 0))
     {
