@@ -286,16 +286,11 @@ SolverStatistics ProgressiveGPUMethod::Solve(const ProgressCallback& progress)
       triangles.insert(triangles.end(), { p[0], p[1], p[2], static_cast<float>(t) });
     }
   }
-  if (progress)
+  if (!ReportProgress(progress, "uploading the element atlas", 0, 1.0, this->Settings.Tolerance))
   {
-    ProgressStatus status;
-    status.Phase = "uploading the element atlas";
-    if (!progress(status))
-    {
-      stats.Stop = StopReason::Aborted;
-      stats.SolveSeconds = start.Seconds();
-      return stats;
-    }
+    stats.Stop = StopReason::Aborted;
+    stats.SolveSeconds = start.Seconds();
+    return stats;
   }
 
   ProgressiveGPUPasses gpu;
@@ -383,20 +378,11 @@ SolverStatistics ProgressiveGPUMethod::Solve(const ProgressCallback& progress)
     stats.Iterations = iteration;
     stats.UnshotPowerW = row.UnshotPowerW;
     const double relative = absPower / scaledEmitted;
-    if (progress)
+    if (!ReportProgress(progress, "shooting", iteration, relative, this->Settings.Tolerance))
     {
-      ProgressStatus status;
-      status.Phase = "shooting";
-      status.Iteration = iteration;
-      status.Residual = relative;
-      status.Fraction = std::clamp(
-        std::log(std::max(relative, 1e-300)) / std::log(this->Settings.Tolerance), 0.0, 1.0);
-      if (!progress(status))
-      {
-        stats.History.Rows.push_back(row);
-        stats.Stop = StopReason::Aborted;
-        break;
-      }
+      stats.History.Rows.push_back(row);
+      stats.Stop = StopReason::Aborted;
+      break;
     }
     if (relative <= this->Settings.Tolerance)
     {

@@ -720,19 +720,10 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       stats.UnshotPowerW = sel.AbsPower;
 
       const double relative = sel.AbsPower / emitted;
-      if (progress)
+      if (!ReportProgress(progress, "shooting", iteration, relative, this->Settings.Tolerance))
       {
-        ProgressStatus status;
-        status.Phase = "shooting";
-        status.Iteration = iteration;
-        status.Residual = relative;
-        status.Fraction = std::clamp(
-          std::log(std::max(relative, 1e-300)) / std::log(this->Settings.Tolerance), 0.0, 1.0);
-        if (!progress(status))
-        {
-          stats.Stop = StopReason::Aborted;
-          break;
-        }
+        stats.Stop = StopReason::Aborted;
+        break;
       }
       if (relative <= this->Settings.Tolerance)
       {
