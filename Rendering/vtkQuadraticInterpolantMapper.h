@@ -32,36 +32,14 @@
  *
  * How it works (paper section 2.5: texture coordinates (0,0), (1,0), (0,1)
  * issued per triangle and interpolated perspective-correctly by the
- * rasteriser):
- *
- * - Barycentrics. When the input changes, the mapper builds once an
- *   unshared-vertex copy of it: three points of its own per triangle, in the
- *   triangle's cell order, with a two-component point array holding
- *   (0,0), (1,0), (0,1). The copy is what the OpenGL polydata machinery
- *   draws; the array reaches the vertex shader as the generic attribute
- *   `interpolantST` and the fragment shader as a smooth (perspective-correct)
- *   varying, so (s,t) at a pixel are exact barycentrics of the visible point,
- *   whatever the camera. A shared-vertex mesh cannot carry them, since a
- *   point belongs to several triangles with a different (s,t) in each. The
- *   copy costs three points and six floats per triangle; a geometry shader
- *   could issue the coordinates instead, but would have to be merged with
- *   the ones VTK itself uses for surface edges and wide lines.
- * - Coefficients and materials. The 24 floats of each triangle (the six
- *   coefficient triples, reflectance, emission) sit in a float texture buffer
- *   (vtkTextureObject::CreateTextureBuffer over a vtkOpenGLBufferObject,
- *   six RGBA32F texels per triangle, coefficient-major: A.rgb, 2B.rgb, 2C.rgb,
- *   D.rgb, 2E.rgb, F.rgb, Reflectance.rgb, Emission.rgb) which the fragment
- *   shader reads with texelFetch at gl_PrimitiveID + PrimitiveIDOffset, as
- *   vtkOpenGLPolyDataMapper does for cell scalars. The buffer is laid out per
- *   OpenGL primitive through the superclass's cell-to-cell map, so the
- *   wireframe and points representations show the interpolants along the
- *   edges and at the corners too.
- *
- * The shaders are vtkOpenGLPolyDataMapper's with replacements, so clipping
- * planes, coincident topology, depth peeling, hardware picking of cells and
- * surface edges (drawn in the property's edge colour) keep working. Cell ids
- * seen by the picker are the input's (the copy keeps the cell order); point
- * ids are those of the copy (3 per triangle).
+ * rasteriser): see vtkRadiosityTriangleFieldMapper, which builds the
+ * unshared-vertex copy carrying the barycentrics and lays the 24 floats of
+ * each triangle (the six coefficient triples, reflectance, emission) out in
+ * a float texture buffer, six RGBA32F texels per triangle, coefficient-major:
+ * A.rgb, 2B.rgb, 2C.rgb, D.rgb, 2E.rgb, F.rgb, Reflectance.rgb,
+ * Emission.rgb. The copy costs three points and six floats per triangle; a
+ * geometry shader could issue the coordinates instead, but would have to be
+ * merged with the ones VTK itself uses for surface edges and wide lines.
  *
  * Typical use, in a renderer whose pass is a vtkToneMappingPass:
  * @code
@@ -78,29 +56,24 @@
 #define vtkQuadraticInterpolantMapper_h
 
 #include "RadiosityRenderingModule.h" // For export macro
-#include "vtkNew.h"                   // For members
-#include "vtkRadiosityCellTexelMapper.h"
+#include "vtkRadiosityTriangleFieldMapper.h"
 
 #include <string> // For ValidateInput
 
 class vtkPolyData;
 
-class RADIOSITYRENDERING_EXPORT vtkQuadraticInterpolantMapper : public vtkRadiosityCellTexelMapper
+class RADIOSITYRENDERING_EXPORT vtkQuadraticInterpolantMapper : public vtkRadiosityTriangleFieldMapper
 {
 public:
   static vtkQuadraticInterpolantMapper* New();
-  vtkTypeMacro(vtkQuadraticInterpolantMapper, vtkRadiosityCellTexelMapper);
+  vtkTypeMacro(vtkQuadraticInterpolantMapper, vtkRadiosityTriangleFieldMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
   /**
-   * Names of the cell arrays read (SPEC.md): "QuadraticInterpolant"
-   * (18 components), "Reflectance" (3) and "Emission" (3).
+   * Name of the cell array read (SPEC.md): "QuadraticInterpolant"
+   * (18 components); with the base's "Reflectance" (3) and "Emission" (3).
    */
   static const char* GetInterpolantArrayName() { return "QuadraticInterpolant"; }
-  static const char* GetReflectanceArrayName() { return "Reflectance"; }
-  static const char* GetEmissionArrayName() { return "Emission"; }
-  ///@}
 
   /**
    * Whether `input` can be drawn: triangles only, a numeric cell array
@@ -116,37 +89,10 @@ protected:
   vtkQuadraticInterpolantMapper();
   ~vtkQuadraticInterpolantMapper() override;
 
-  /**
-   * Rebuilds the unshared-vertex copy and the per-triangle texel data when
-   * the input changed; false (with an error) when the input is refused.
-   */
-  bool UpdateTriangles(vtkPolyData* input);
-
-  /**
-   * vtkOpenGLPolyDataMapper::RenderPiece calls this after updating the input
-   * and before drawing: here the input is checked (an error, and nothing
-   * drawn, when ValidateInput refuses it) and the copy replaces it as
-   * CurrentInput.
-   */
-  void UpdateCameraShiftScale(vtkRenderer* ren, vtkActor* act) override;
-
-  void ReplaceShaderValues(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderLight(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-
-
-  // The unshared-vertex copy of the input that the superclass draws, and the
-  // input state it was built from.
-  vtkNew<vtkPolyData> Triangles;
-  vtkPolyData* TrianglesSource = nullptr; // not referenced: compared only
-  vtkMTimeType TrianglesSourceTime = 0;
-  bool InputValid = false;
-  std::string InputError;
-  bool WarnedNoReflectance = false;
-  bool WarnedNoEmission = false;
-
-  // CellTexels: 24 floats per triangle (see the class description).
+  /// Coefficient k of channel c is the array's component 6c + k (channel-major).
+  int FieldComponent(int vector, int channel) const override { return 6 * channel + vector; }
+  /// Hardt & Teller eq. 1: eight multiplies and five adds per channel.
+  std::string FieldIrradianceGLSL() const override;
 
 private:
   vtkQuadraticInterpolantMapper(const vtkQuadraticInterpolantMapper&) = delete;
