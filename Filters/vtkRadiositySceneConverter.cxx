@@ -9,6 +9,7 @@
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
@@ -392,6 +393,39 @@ void SetColour(vtkDoubleArray* a, vtkIdType i, const RGB& c)
   a->SetTypedTuple(i, &c[0]);
 }
 
+// Each element's own irradiance at its corners and centroid (12 floats,
+// sample-major), what vtkIrradianceSamplesMapper draws per pixel and the
+// probes interpolate (radiosity::InterpolateSamples). Float: the display
+// reads floats, and the array is the largest of the output.
+vtkSmartPointer<vtkFloatArray> SamplesArray(const std::vector<radiosity::ElementSamples>& samples)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName("IrradianceSamples");
+  a->SetNumberOfComponents(12);
+  const char* const names[4] = { "0", "1", "2", "Centroid" };
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      a->SetComponentName(3 * k + c, (std::string(names[k]) + "_" + "RGB"[c]).c_str());
+    }
+  }
+  a->SetNumberOfTuples(static_cast<vtkIdType>(samples.size()));
+  float* out = a->GetPointer(0);
+  for (const radiosity::ElementSamples& s : samples)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const RGB& h = k < 3 ? s.Corner[k] : s.Centre;
+      for (int c = 0; c < 3; ++c)
+      {
+        *out++ = static_cast<float>(h[c]);
+      }
+    }
+  }
+  return a;
+}
+
 vtkSmartPointer<vtkPoints> ToPoints(const std::vector<radiosity::Vec3>& pts)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -489,6 +523,10 @@ vtkSmartPointer<vtkPolyData> vtkRadiositySceneConverter::FromSolution(
          reflectance, emission, elementId, level, objects })
   {
     cd->AddArray(a);
+  }
+  if (solution.Samples.size() == solution.Triangles.size() && nc > 0)
+  {
+    cd->AddArray(SamplesArray(solution.Samples));
   }
   auto pointIrradiance = ColourArray("Irradiance", np);
   auto pointRadiosity = ColourArray("Radiosity", np);

@@ -4,12 +4,12 @@
  *          pixel: the element's texel, as Coombe et al. display it
  *
  * Progressive radiosity (Cohen et al. 1988; on the GPU, Coombe, Harris &
- * Lastra 2004, section 3) keeps per element the irradiance gathered at its
- * three corners and its centroid. Coombe et al. draw the radiosity texture
- * of each polygon with the hardware's bilinear filter, so every pixel shows
- * the element's own value, interpolated, never an average across elements.
- * This mapper does the same for triangular elements: every fragment
- * evaluates
+ * Lastra 2004) keeps per element the irradiance gathered at its three
+ * corners and its centroid. Coombe et al. display the solution by rendering
+ * every leaf of the quadtree with its own radiosity texture (section 4.3),
+ * so every pixel shows its element's values, interpolated, never an average
+ * across elements. This mapper does the same for triangular elements: every
+ * fragment evaluates
  *
  *   H(u, s, t) = u H0 + s H1 + t H2 + 27 u s t (Hc - (H0 + H1 + H2) / 3),
  *   u = 1 - s - t,
@@ -20,10 +20,12 @@
  * B = Emission + Reflectance * H as radiance. It is the interpolation the
  * probes of `vtkradiosity --probe-output` report (radiosity::
  * InterpolateSamples), so the picture shows what the probes measure. Unlike
- * the Gouraud path it does not average corners across elements: where an
+ * the Gouraud path it keeps a centroid sample (a spot of light or a shadow
+ * inside an element) and does not average corners across elements. Where an
  * element meets two smaller ones (a T-junction of the adaptive subdivision)
- * each side shows its own samples, and a shadow edge inside an element
- * keeps its centroid sample.
+ * each side shows its own samples, so a step may show along that edge: the
+ * "t-vertex" artifact of the paper's figure 5, as large as the light's
+ * curvature the subdivision criterion let through.
  *
  * The input is triangles with the cell array `IrradianceSamples`
  * (12 components, sample-major: H0.rgb, H1.rgb, H2.rgb at the cell's points

@@ -1,4 +1,5 @@
 #include "vtkRadiosityView.h"
+#include "vtkIrradianceSamplesMapper.h"
 #include "vtkQuadraticInterpolantMapper.h"
 #include "vtkRadiosityWindowPNG.h"
 #include "vtkShepardSplatMapper.h"
@@ -101,12 +102,18 @@ vtkRadiosityView::vtkRadiosityView()
   this->VectorActor->SetMapper(this->VectorMapper);
   this->VectorActor->VisibilityOff();
 
+  this->SamplesMapper = vtkSmartPointer<vtkIrradianceSamplesMapper>::New();
+  this->SamplesActor = vtkSmartPointer<vtkActor>::New();
+  this->SamplesActor->SetMapper(this->SamplesMapper);
+  this->SamplesActor->VisibilityOff();
+
   this->Renderer = vtkSmartPointer<vtkOpenGLRenderer>::New();
   this->Renderer->SetBackground(0.0, 0.0, 0.0);
   this->Renderer->AddActor(this->Actor);
   this->Renderer->AddActor(this->InterpolantActor);
   this->Renderer->AddActor(this->SplatActor);
   this->Renderer->AddActor(this->VectorActor);
+  this->Renderer->AddActor(this->SamplesActor);
 
   // The standard render steps (camera, lights, opaque, translucent, overlay)
   // draw into the tone mapping pass's float framebuffer, which keeps HDR.
@@ -257,6 +264,16 @@ bool vtkRadiosityView::UsesInterpolantMapper()
 }
 
 //------------------------------------------------------------------------------
+bool vtkRadiosityView::UsesIrradianceSamplesMapper()
+{
+  return !this->UsesSplatMapper() && !this->UsesInterpolantMapper() &&
+    !this->UsesVectorIrradianceMapper() && this->InterpolantRendering && this->Input &&
+    this->ArrayName && strcmp(this->ArrayName, "Radiosity") == 0 &&
+    this->Input->GetCellData()->GetAbstractArray(
+      vtkIrradianceSamplesMapper::GetSamplesArrayName()) != nullptr;
+}
+
+//------------------------------------------------------------------------------
 bool vtkRadiosityView::CheckInput()
 {
   const char* name = this->ArrayName ? this->ArrayName : "";
@@ -309,6 +326,16 @@ bool vtkRadiosityView::CheckInput()
     }
     return true;
   }
+  if (this->UsesIrradianceSamplesMapper())
+  {
+    std::string message;
+    if (!vtkIrradianceSamplesMapper::ValidateInput(this->Input, &message))
+    {
+      vtkErrorMacro(<< message);
+      return false;
+    }
+    return true;
+  }
   vtkPointData* pd = this->Input->GetPointData();
   vtkDataArray* array = pd->GetArray(name);
   if (!array)
@@ -345,10 +372,18 @@ void vtkRadiosityView::UpdatePipeline()
   const bool splats = this->UsesSplatMapper();
   const bool interpolants = this->UsesInterpolantMapper();
   const bool vectors = this->UsesVectorIrradianceMapper();
+  const bool samples = this->UsesIrradianceSamplesMapper();
   this->SplatActor->SetVisibility(splats);
   this->InterpolantActor->SetVisibility(interpolants);
   this->VectorActor->SetVisibility(vectors);
-  this->Actor->SetVisibility(!interpolants && !splats && !vectors);
+  this->SamplesActor->SetVisibility(samples);
+  this->Actor->SetVisibility(!interpolants && !splats && !vectors && !samples);
+  if (samples)
+  {
+    this->SamplesMapper->SetInputData(this->Input);
+    this->SamplesMapper->SetExposure(this->Exposure);
+    return;
+  }
   if (vectors)
   {
     this->VectorMapper->SetInputData(this->Input);
@@ -443,6 +478,8 @@ void vtkRadiosityView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UsesInterpolantMapper: " << (this->UsesInterpolantMapper() ? "true" : "false")
      << "\n";
   os << indent << "ShepardField: " << this->ShepardField.GetPointer() << "\n";
+  os << indent << "UsesIrradianceSamplesMapper: "
+     << (this->UsesIrradianceSamplesMapper() ? "true" : "false") << "\n";
   os << indent << "UsesSplatMapper: " << (this->UsesSplatMapper() ? "true" : "false") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMappingType: " << this->ToneMappingType << "\n";

@@ -31,6 +31,14 @@
  *   pixel with eq. 10 of Gobbetti et al. 2003 (glossy where the input has
  *   `Specular`).
  *
+ * - Irradiance samples: when the input has the cell array
+ *   `IrradianceSamples` (12 components: each element's irradiance at its
+ *   corners and centroid, written for the progressive and hierarchical
+ *   methods), the drawn array is `Radiosity` and InterpolantRendering is
+ *   on, a vtkIrradianceSamplesMapper draws every element from its own
+ *   samples per pixel (Coombe et al.'s texel display). The interpolant,
+ *   splat and vector paths take precedence.
+ *
  * InterpolantRenderingOff forces the Gouraud path (for side-by-side
  * comparisons of the same solution); UsesInterpolantMapper tells which path
  * the next render takes.
@@ -61,6 +69,7 @@
 
 class vtkActor;
 class vtkPolyData;
+class vtkIrradianceSamplesMapper;
 class vtkPolyDataMapper;
 class vtkQuadraticInterpolantMapper;
 class vtkShepardSplatMapper;
@@ -144,6 +153,13 @@ public:
    * ArrayName "Radiosity" and no Shepard field.
    */
   bool UsesInterpolantMapper();
+
+  /**
+   * Whether the next render draws the elements' own samples per pixel: the
+   * cell array `IrradianceSamples`, InterpolantRendering on, ArrayName
+   * "Radiosity", and none of the other per-pixel paths.
+   */
+  bool UsesIrradianceSamplesMapper();
 
   ///@{
   /**
@@ -261,6 +277,9 @@ protected:
   // Vector irradiance path.
   vtkSmartPointer<vtkVectorIrradianceMapper> VectorMapper;
   vtkSmartPointer<vtkActor> VectorActor;
+  // Irradiance samples path.
+  vtkSmartPointer<vtkIrradianceSamplesMapper> SamplesMapper;
+  vtkSmartPointer<vtkActor> SamplesActor;
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkRenderWindow> RenderWindow;
   vtkSmartPointer<vtkToneMappingPass> ToneMappingPass;

@@ -28,7 +28,7 @@ foreach (expected "Mode: quick" "OpenGL renderer: [^.]+[.]" "Load average" "The 
 endforeach ()
 
 set(displays "quadratic interpolants|hierarchical" "vector irradiance|facecluster"
-  "Shepard splats|meshless" "Gouraud|progressive" "vtkRadiosityPass|facecluster")
+  "Shepard splats|meshless" "element samples|progressive" "Gouraud|progressive" "vtkRadiosityPass|facecluster")
 set(sizes "640 x 480" "1280 x 720" "1920 x 1080")
 set(number "([0-9]+[.]?[0-9]*)")
 foreach (entry IN LISTS displays)
@@ -57,4 +57,4 @@ foreach (entry IN LISTS displays)
     expect_within("${what} lit pixels (%)" "${lit}" 30 100)
   endforeach ()
 endforeach ()
-message(STATUS "bench_render --quick: 5 displays x 3 sizes checked")
+message(STATUS "bench_render --quick: 6 displays x 3 sizes checked")

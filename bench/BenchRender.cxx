@@ -6,12 +6,14 @@
 //   - the vector irradiance mapper on face cluster radiosity's surface,
 //   - the splat mapper on meshless radiosity's Shepard field (SURFACE_TEXELS,
 //     its default),
+//   - the irradiance samples mapper on progressive radiosity's elements (on
+//     the bunny room face cluster radiosity's triangles, their samples),
 //   - the Gouraud path: the point array `Radiosity` drawn by VTK's polydata
 //     mapper (progressive radiosity's; on the bunny room face cluster
 //     radiosity's, progressive radiosity not being run on 1.5M triangles),
 //   - vtkRadiosityPass (face cluster radiosity) on the scene as actors,
 // on the Cornell box, the office and, for the displays of the methods that
-// solve it, the 1.5M-triangle bunny room. The four mappers are set up by
+// solve it, the 1.5M-triangle bunny room. The five mappers are set up by
 // vtkRadiosityPassDisplay, as the pass draws them (Reinhard, back faces
 // culled), each alone in a renderer.
 //
@@ -85,6 +87,7 @@ enum Kind
   Interpolants,
   VectorIrradiance,
   Splats,
+  Samples,
   Gouraud,
   Pass,
   ExactSplats ///< SPLATS, with Display::Culling
@@ -112,6 +115,8 @@ const Display Displays[] = {
   { VectorIrradiance, "vector irradiance", "vector irradiance", vtkRadiosityFilter::FaceCluster,
     vtkRadiosityFilter::FaceCluster },
   { Splats, "Shepard splats", "splats", vtkRadiosityFilter::Meshless, vtkRadiosityFilter::Meshless },
+  { Samples, "element samples", "irradiance samples", vtkRadiosityFilter::Progressive,
+    vtkRadiosityFilter::FaceCluster },
   { Gouraud, "Gouraud", "radiosity per vertex", vtkRadiosityFilter::Progressive,
     vtkRadiosityFilter::FaceCluster },
   { Pass, "vtkRadiosityPass", "vector irradiance", vtkRadiosityFilter::FaceCluster,
@@ -266,11 +271,16 @@ bool SetUp(const Display& d, int method, const SceneCase& sc, Solutions& solutio
   vtkPolyData* surface = solved->Filter->GetOutput(0);
   vtkPolyData* product = solved->Filter->GetOutput(1);
   vtkNew<vtkPolyData> vertices;
-  if (d.Which == Gouraud)
+  if (d.Which == Gouraud || d.Which == Samples)
   {
-    // The point array Radiosity only: no product, no irradiance vectors.
+    // No product, no irradiance vectors; Gouraud: the point array Radiosity
+    // only, no samples either.
     vertices->ShallowCopy(surface);
     vertices->GetPointData()->RemoveArray("IrradianceVector");
+    if (d.Which == Gouraud)
+    {
+      vertices->GetCellData()->RemoveArray("IrradianceSamples");
+    }
     surface = vertices;
     product = nullptr;
   }

@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkCellData.h"
 #include "vtkFieldData.h"
+#include "vtkIrradianceSamplesMapper.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLPolyDataMapper.h"
@@ -20,18 +21,19 @@ vtkStandardNewMacro(vtkRadiosityPassDisplay);
 
 namespace
 {
-const char* const PathNames[5] = { "none", "interpolants", "splats", "vector irradiance",
-  "radiosity per vertex" };
+const char* const PathNames[6] = { "none", "interpolants", "splats", "vector irradiance",
+  "irradiance samples", "radiosity per vertex" };
 }
 
 vtkRadiosityPassDisplay::vtkRadiosityPassDisplay()
   : InterpolantMapper(vtkSmartPointer<vtkQuadraticInterpolantMapper>::New())
   , SplatMapper(vtkSmartPointer<vtkShepardSplatMapper>::New())
   , VectorMapper(vtkSmartPointer<vtkVectorIrradianceMapper>::New())
+  , SamplesMapper(vtkSmartPointer<vtkIrradianceSamplesMapper>::New())
   , VertexMapper(vtkSmartPointer<vtkOpenGLPolyDataMapper>::New())
 {
-  vtkMapper* mappers[5] = { nullptr, this->InterpolantMapper, this->SplatMapper,
-    this->VectorMapper, this->VertexMapper };
+  vtkMapper* mappers[6] = { nullptr, this->InterpolantMapper, this->SplatMapper,
+    this->VectorMapper, this->SamplesMapper, this->VertexMapper };
   for (int i = Interpolants; i <= Vertices; ++i)
   {
     this->Actors[i] = vtkSmartPointer<vtkActor>::New();
@@ -129,6 +131,15 @@ bool vtkRadiosityPassDisplay::SetSolution(
     this->VectorMapper->SetInputData(shaded);
     this->Active = Vectors;
   }
+  else if (surface->GetCellData()->GetAbstractArray(vtkIrradianceSamplesMapper::GetSamplesArrayName()))
+  {
+    if (!vtkIrradianceSamplesMapper::ValidateInput(surface, &error))
+    {
+      return false;
+    }
+    this->SamplesMapper->SetInputData(surface);
+    this->Active = Samples;
+  }
   else
   {
     vtkDataArray* radiosity = surface->GetPointData()->GetArray("Radiosity");
@@ -167,7 +178,8 @@ void vtkRadiosityPassDisplay::Update()
   for (vtkRadiosityCellTexelMapper* m : { static_cast<vtkRadiosityCellTexelMapper*>(
                                             this->InterpolantMapper),
          static_cast<vtkRadiosityCellTexelMapper*>(this->SplatMapper),
-         static_cast<vtkRadiosityCellTexelMapper*>(this->VectorMapper) })
+         static_cast<vtkRadiosityCellTexelMapper*>(this->VectorMapper),
+         static_cast<vtkRadiosityCellTexelMapper*>(this->SamplesMapper) })
   {
     m->SetExposure(this->Exposure);
     m->SetToneMapping(this->ToneMapping);

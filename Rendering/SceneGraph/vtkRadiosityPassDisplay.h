@@ -8,7 +8,9 @@
  * the surface (vtkShepardSplatMapper, a product of points), the vector
  * irradiance (vtkVectorIrradianceMapper, the surface's point array
  * `IrradianceVector`, glossy with the scene's `Specular` and `Shininess`),
- * and otherwise the point array `Radiosity` interpolated across each
+ * each element's own irradiance samples (vtkIrradianceSamplesMapper, the
+ * surface's cell array `IrradianceSamples` of the progressive and
+ * hierarchical methods), and otherwise the point array `Radiosity` interpolated across each
  * triangle (a vtkOpenGLPolyDataMapper with shader replacements). All write
  * the radiance B / pi x Exposure with the tone mapping operator ToneMapping
  * and the 1/2.2 encoding of the project's mappers. The actors cull back
@@ -25,6 +27,7 @@
 #include <string> // for std::string
 
 class vtkActor;
+class vtkIrradianceSamplesMapper;
 class vtkOpenGLPolyDataMapper;
 class vtkPolyData;
 class vtkQuadraticInterpolantMapper;
@@ -58,7 +61,8 @@ public:
   /// MaximumTexels are the user's to set; the others are the pass's).
   vtkShepardSplatMapper* GetSplatMapper();
 
-  /// Which path: "interpolants", "splats", "vector irradiance", "radiosity per vertex" or "none".
+  /// Which path: "interpolants", "splats", "vector irradiance", "irradiance samples",
+  /// "radiosity per vertex" or "none".
   const char* GetPathName() const;
 
   ///@{
@@ -91,14 +95,16 @@ private:
     Interpolants,
     Splats,
     Vectors,
+    Samples,
     Vertices
   };
   int Active = None;
   vtkSmartPointer<vtkQuadraticInterpolantMapper> InterpolantMapper;
   vtkSmartPointer<vtkShepardSplatMapper> SplatMapper;
   vtkSmartPointer<vtkVectorIrradianceMapper> VectorMapper;
+  vtkSmartPointer<vtkIrradianceSamplesMapper> SamplesMapper;
   vtkSmartPointer<vtkOpenGLPolyDataMapper> VertexMapper;
-  vtkSmartPointer<vtkActor> Actors[5];
+  vtkSmartPointer<vtkActor> Actors[6];
 };
 
 #endif

@@ -1,7 +1,7 @@
 """pvbatch test of the Radiosity plugin's representations: the Cornell box
 solved by each method and shown with the representation drawing it
 ("Radiosity Quadratic Interpolants", "Vector Irradiance (glossy)",
-"Meshless Field Splats"), each screenshot against its baseline; the
+"Meshless Field Splats", "Radiosity Element Samples"), each screenshot against its baseline; the
 representation properties (exposure, tone mapping) and the glossy arrays
 changing the image; input a representation cannot draw giving an error that
 names what is missing.
@@ -112,8 +112,21 @@ check(mean(darker) < mean(splats) - 5.0, "Radiance Exposure 0.5 did not darken t
 display.RadianceExposure = 1.0
 Hide(meshless, view)
 
-# What a representation cannot draw: an error naming what is missing.
+# Coombe et al.'s texel display: the progressive solution's elements, each
+# from its own corner and centroid samples.
 progressive = Radiosity(Input=box)
+progressive.Method = "Progressive"
+display = shown(progressive, "Radiosity Element Samples")
+samples = screenshot("ElementSamples")
+check_image("element samples", samples)
+display.RadianceExposure = 2.0
+brighter = screenshot("ElementSamplesExposure2")
+print("samples exposure 1 -> 2: mean %.1f -> %.1f" % (mean(samples), mean(brighter)))
+check(mean(brighter) > mean(samples) + 5.0, "Radiance Exposure 2 did not brighten the samples")
+display.RadianceExposure = 1.0
+Hide(progressive, view)
+
+# What a representation cannot draw: an error naming what is missing.
 with CapturedMessages() as messages:
     display = shown(progressive, "Radiosity Quadratic Interpolants")
     screenshot("Refused")
