@@ -46,6 +46,10 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
   , ElementRadiosity(&radiosity)
   , Triangles(scene.Triangles.size())
 {
+  this->Frames.resize(this->Triangles);
+  tbb::parallel_for(std::size_t(0), this->Triangles, [&](std::size_t t) {
+    this->Frames[t] = { scene.Centroid(t), scene.Normal(t), scene.Area(t) };
+  });
   const FaceClusterHierarchy& h = *this->Clusters;
   const std::size_t internal = h.NumberOfClusters() - this->Triangles;
   this->InternalBounds.resize(internal);
@@ -67,7 +71,7 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
       for (std::uint32_t k = c.First; k < c.First + c.Count; ++k)
       {
         const std::uint32_t t = order[k];
-        minCos = std::min(minCos, glm::dot(scene.Normal(t), b.Axis));
+        minCos = std::min(minCos, glm::dot(this->Frames[t].Normal, b.Axis));
         for (int v = 0; v < 3; ++v)
         {
           offPlane = std::max(offPlane, std::fabs(glm::dot(scene.Vertex(t, v) - origin, b.Axis)));
@@ -198,24 +202,60 @@ double ClusterLinks::Bound(const Bounds& r, const Bounds& q, std::uint32_t sourc
 void ClusterLinks::PullRadiosity()
 {
   const std::vector<RGB>& elements = *this->ElementRadiosity;
-  for (std::size_t t = 0; t < this->Triangles; ++t)
+  std::copy(elements.begin(), elements.begin() + static_cast<std::ptrdiff_t>(this->Triangles),
+    this->Radiosity.begin());
+  if (this->PullLevels.empty())
   {
-    this->Radiosity[t] = elements[t];
-  }
-  // Children have smaller ids than their parent.
-  for (std::size_t i = 0; i < this->InternalBounds.size(); ++i)
-  {
-    const auto id = static_cast<std::uint32_t>(this->Triangles + i);
-    RGB sum(0.0);
-    double area = 0.0;
-    for (std::uint32_t child : this->Clusters->InternalCluster(id)->Child)
+    // Heights: children have smaller ids than their parent.
+    const std::size_t internal = this->InternalBounds.size();
+    std::vector<std::uint32_t> height(internal, 1);
+    std::uint32_t highest = 0;
+    for (std::size_t i = 0; i < internal; ++i)
     {
-      const double a = child < this->Triangles ? this->SourceScene.Area(child)
-                                               : this->InternalBounds[child - this->Triangles].Area;
-      sum += a * this->Radiosity[child];
-      area += a;
+      for (std::uint32_t child : this->Clusters->InternalCluster(static_cast<std::uint32_t>(this->Triangles + i))->Child)
+      {
+        if (child >= this->Triangles)
+        {
+          height[i] = std::max(height[i], height[child - this->Triangles] + 1);
+        }
+      }
+      highest = std::max(highest, height[i]);
     }
-    this->Radiosity[id] = area > 0 ? sum / area : RGB(0.0);
+    this->PullLevels.assign(highest + 1, 0);
+    for (std::uint32_t h : height)
+    {
+      ++this->PullLevels[h];
+    }
+    for (std::size_t h = 1; h < this->PullLevels.size(); ++h)
+    {
+      this->PullLevels[h] += this->PullLevels[h - 1];
+    }
+    this->PullOrder.resize(internal);
+    std::vector<std::uint32_t> at(this->PullLevels.begin(), this->PullLevels.end() - 1);
+    for (std::size_t i = 0; i < internal; ++i)
+    {
+      this->PullOrder[at[height[i] - 1]++] = static_cast<std::uint32_t>(i);
+    }
+  }
+  for (std::size_t h = 0; h + 1 < this->PullLevels.size(); ++h)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(this->PullLevels[h], this->PullLevels[h + 1], 1024),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t k = range.begin(); k != range.end(); ++k)
+        {
+          const auto id = static_cast<std::uint32_t>(this->Triangles + this->PullOrder[k]);
+          RGB sum(0.0);
+          double area = 0.0;
+          for (std::uint32_t child : this->Clusters->InternalCluster(id)->Child)
+          {
+            const double a = child < this->Triangles ? this->Frames[child].Area
+                                                     : this->InternalBounds[child - this->Triangles].Area;
+            sum += a * this->Radiosity[child];
+            area += a;
+          }
+          this->Radiosity[id] = area > 0 ? sum / area : RGB(0.0);
+        }
+      });
   }
 }
 

@@ -22,7 +22,6 @@ namespace radiosity
 {
 void ClusterLinks::SamplesOf(std::uint32_t node, SamplePoints& s) const
 {
-  const Scene& scene = this->SourceScene;
   const FaceClusterHierarchy& h = *this->Clusters;
   s.Count = 0;
   auto add = [&](const Vec3& x, const Vec3& n, double w) {
@@ -48,7 +47,8 @@ void ClusterLinks::SamplesOf(std::uint32_t node, SamplePoints& s) const
   {
     for (std::uint32_t k = f.First; k < f.First + f.Count; ++k)
     {
-      add(scene.Centroid(order[k]), scene.Normal(order[k]), scene.Area(order[k]));
+      const TriangleFrame& frame = this->Frames[order[k]];
+      add(frame.Centroid, frame.Normal, frame.Area);
     }
     return;
   }
@@ -58,7 +58,7 @@ void ClusterLinks::SamplesOf(std::uint32_t node, SamplePoints& s) const
     const double target = begin + (k + 0.5) / SamplePoints::Most * area;
     const auto it = std::upper_bound(cumulative.begin() + f.First + 1, cumulative.begin() + f.First + f.Count + 1, target);
     const std::uint32_t t = order[static_cast<std::size_t>(it - cumulative.begin()) - 1];
-    add(scene.Centroid(t), scene.Normal(t), area / SamplePoints::Most);
+    add(this->Frames[t].Centroid, this->Frames[t].Normal, area / SamplePoints::Most);
   }
 }
 
@@ -225,8 +225,8 @@ void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, const st
   const Expansion& above = *static_cast<const Expansion*>(aboveExpansion);
   if (c < this->Triangles)
   {
-    const Vec3 x = this->SourceScene.Centroid(c);
-    const Vec3 n = this->SourceScene.Normal(c);
+    const Vec3& x = this->Frames[c].Centroid;
+    const Vec3& n = this->Frames[c].Normal;
     RGB v[3];
     above.At(x, v);
     RGB sum = glm::max(n.x * v[0] + n.y * v[1] + n.z * v[2], RGB(0.0));
