@@ -12,7 +12,8 @@
  * which holds every setting of the method) and draws the cached solution
  * with the method's mapper (vtkQuadraticInterpolantMapper for Hierarchical,
  * vtkShepardSplatMapper for Meshless, vtkVectorIrradianceMapper for
- * FaceCluster, the radiosity per vertex for Progressive) through private
+ * FaceCluster, vtkIrradianceSamplesMapper for Progressive and Progressive
+ * (GPU): each element from its own samples) through private
  * actors and a delegate pass (a vtkRenderStepsPass by default), so depth,
  * translucent props, 2D actors and overlays compose as usual.
  *

@@ -7,6 +7,7 @@
 #include "Radiosity/Common/ThreadLimit.h"
 
 #include <Eigen/Eigenvalues>
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -224,6 +225,7 @@ FaceClusterHierarchy::FaceClusterHierarchy(std::shared_ptr<const Scene> scene, s
     }
     this->Contract(options, progress);
     this->LayOut();
+    this->OrderByHeight();
     this->ComputeBoxes(options);
     this->Seconds = clock.Seconds();
   });
@@ -519,6 +521,41 @@ void FaceClusterHierarchy::LayOut()
 }
 
 //------------------------------------------------------------------------------
+void FaceClusterHierarchy::OrderByHeight()
+{
+  const std::size_t n = this->Triangles, internal = this->Internal.size();
+  // Children have smaller ids than their parent.
+  std::vector<std::uint32_t> height(internal, 1);
+  std::uint32_t highest = 0;
+  for (std::size_t i = 0; i < internal; ++i)
+  {
+    for (std::uint32_t child : this->Internal[i].Child)
+    {
+      if (child >= n)
+      {
+        height[i] = std::max(height[i], height[child - n] + 1);
+      }
+    }
+    highest = std::max(highest, height[i]);
+  }
+  this->HeightStart.assign(highest + 1, 0);
+  for (std::uint32_t h : height)
+  {
+    ++this->HeightStart[h];
+  }
+  for (std::size_t h = 1; h < this->HeightStart.size(); ++h)
+  {
+    this->HeightStart[h] += this->HeightStart[h - 1];
+  }
+  this->ByHeight.resize(internal);
+  std::vector<std::uint32_t> at(this->HeightStart.begin(), this->HeightStart.end() - 1);
+  for (std::size_t i = 0; i < internal; ++i)
+  {
+    this->ByHeight[at[height[i] - 1]++] = static_cast<std::uint32_t>(i);
+  }
+}
+
+//------------------------------------------------------------------------------
 void FaceClusterHierarchy::ComputeBoxes(const FaceClusterOptions&)
 {
   const Scene& scene = *this->Source;
@@ -542,10 +579,8 @@ void FaceClusterHierarchy::ComputeBoxes(const FaceClusterOptions&)
       h.shrink_to_fit();
     }
   };
-  std::vector<Vec3> points;
-  std::vector<glm::dvec2> planar;
-  for (std::size_t i = 0; i < this->Internal.size(); ++i)
-  {
+  // One height at a time (a cluster after its children), each in parallel.
+  auto merge = [&](std::size_t i, std::vector<Vec3>& points, std::vector<glm::dvec2>& planar) {
     FaceCluster& c = this->Internal[i];
     const FaceCluster a = this->Cluster(c.Child[0]);
     const FaceCluster b = this->Cluster(c.Child[1]);
@@ -589,6 +624,18 @@ void FaceClusterHierarchy::ComputeBoxes(const FaceClusterOptions&)
         }
       }
     }
+  };
+  for (std::size_t h = 0; h + 1 < this->HeightStart.size(); ++h)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(this->HeightStart[h], this->HeightStart[h + 1], 256),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        std::vector<Vec3> points;
+        std::vector<glm::dvec2> planar;
+        for (std::size_t k = range.begin(); k != range.end(); ++k)
+        {
+          merge(this->ByHeight[k], points, planar);
+        }
+      });
   }
   // Pass 2, in parallel: the box extents and the six directional samples
   // over each cluster's triangles.

@@ -139,6 +139,15 @@ public:
   const std::vector<double>& CumulativeArea() const { return this->Cumulative; }
   /// Triangles sorted so that each cluster's are [First, First + Count).
   const std::vector<std::uint32_t>& TriangleOrder() const { return this->Order; }
+  ///@{
+  /// The internal clusters (as indices id - NumberOfTriangles()) by height
+  /// above their triangles: those of height h + 1 are HeightOrder()
+  /// [HeightLevels()[h], HeightLevels()[h + 1]). A cluster's children are of
+  /// smaller height, so a bottom-up pass may take one height at a time, in
+  /// parallel (the tree is about 2 log n high: Contract merges in rounds).
+  const std::vector<std::uint32_t>& HeightOrder() const { return this->ByHeight; }
+  const std::vector<std::uint32_t>& HeightLevels() const { return this->HeightStart; }
+  ///@}
   std::uint32_t Parent(std::uint32_t id) const;
   std::uint32_t Depth(std::uint32_t id) const;
   int MaximumDepth() const { return this->MaxDepth; }
@@ -170,12 +179,14 @@ private:
   std::vector<std::uint32_t> RootIds;
   std::vector<std::uint32_t> Order;
   std::vector<double> Cumulative;
+  std::vector<std::uint32_t> ByHeight, HeightStart;
   int MaxDepth = 0;
   double Seconds = 0.0;
   std::uint64_t Key = 0;
 
   void Contract(const FaceClusterOptions& options, const ProgressCallback& progress);
   void LayOut();
+  void OrderByHeight();
   void ComputeBoxes(const FaceClusterOptions& options);
 };
 } // namespace radiosity

@@ -204,46 +204,16 @@ void ClusterLinks::PullRadiosity()
   const std::vector<RGB>& elements = *this->ElementRadiosity;
   std::copy(elements.begin(), elements.begin() + static_cast<std::ptrdiff_t>(this->Triangles),
     this->Radiosity.begin());
-  if (this->PullLevels.empty())
+  // One height at a time (a cluster after its children), each in parallel.
+  const std::vector<std::uint32_t>& order = this->Clusters->HeightOrder();
+  const std::vector<std::uint32_t>& levels = this->Clusters->HeightLevels();
+  for (std::size_t h = 0; h + 1 < levels.size(); ++h)
   {
-    // Heights: children have smaller ids than their parent.
-    const std::size_t internal = this->InternalBounds.size();
-    std::vector<std::uint32_t> height(internal, 1);
-    std::uint32_t highest = 0;
-    for (std::size_t i = 0; i < internal; ++i)
-    {
-      for (std::uint32_t child : this->Clusters->InternalCluster(static_cast<std::uint32_t>(this->Triangles + i))->Child)
-      {
-        if (child >= this->Triangles)
-        {
-          height[i] = std::max(height[i], height[child - this->Triangles] + 1);
-        }
-      }
-      highest = std::max(highest, height[i]);
-    }
-    this->PullLevels.assign(highest + 1, 0);
-    for (std::uint32_t h : height)
-    {
-      ++this->PullLevels[h];
-    }
-    for (std::size_t h = 1; h < this->PullLevels.size(); ++h)
-    {
-      this->PullLevels[h] += this->PullLevels[h - 1];
-    }
-    this->PullOrder.resize(internal);
-    std::vector<std::uint32_t> at(this->PullLevels.begin(), this->PullLevels.end() - 1);
-    for (std::size_t i = 0; i < internal; ++i)
-    {
-      this->PullOrder[at[height[i] - 1]++] = static_cast<std::uint32_t>(i);
-    }
-  }
-  for (std::size_t h = 0; h + 1 < this->PullLevels.size(); ++h)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(this->PullLevels[h], this->PullLevels[h + 1], 1024),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(levels[h], levels[h + 1], 1024),
       [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t k = range.begin(); k != range.end(); ++k)
         {
-          const auto id = static_cast<std::uint32_t>(this->Triangles + this->PullOrder[k]);
+          const auto id = static_cast<std::uint32_t>(this->Triangles + order[k]);
           RGB sum(0.0);
           double area = 0.0;
           for (std::uint32_t child : this->Clusters->InternalCluster(id)->Child)

@@ -259,10 +259,6 @@ private:
     double Area;
   };
   std::vector<TriangleFrame> Frames;
-  /// The internal clusters by height above their triangles (a cluster after
-  /// its children), PullLevels[h] .. PullLevels[h + 1] at height h + 1: the
-  /// radiosity pull takes one height at a time, each in parallel.
-  std::vector<std::uint32_t> PullOrder, PullLevels;
   std::vector<Bounds> InternalBounds; ///< per internal cluster (id - Triangles)
   std::vector<RGB> Radiosity;         ///< per cluster, area mean
   std::vector<ScalarLink> ToElements; ///< sorted by receiver after Index
