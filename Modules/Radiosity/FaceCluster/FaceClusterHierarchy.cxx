@@ -7,6 +7,7 @@
 #include "Radiosity/Common/ThreadLimit.h"
 
 #include <Eigen/Eigenvalues>
+#include <boost/container/small_vector.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -114,6 +115,11 @@ struct Link
   float Length;
   std::uint32_t Concave;
 };
+
+// A cluster's dual edges, the first few in place: most clusters of the
+// early rounds have three to five neighbours, and the contraction visits
+// every neighbour of each merged pair (one memory access, not two).
+using Adjacency = boost::container::small_vector<Link, 4>;
 
 struct Candidate
 {
@@ -243,7 +249,7 @@ void FaceClusterHierarchy::Contract(const FaceClusterOptions& options, const Pro
 
   // Cluster state lives in slots: a merged cluster takes its first child's.
   std::vector<Moments> state(n);
-  std::vector<std::vector<Link>> adjacency(n);
+  std::vector<Adjacency> adjacency(n);
   std::vector<std::uint32_t> slot(2 * n, None);
   std::vector<char> alive(2 * n, 0);
   std::vector<char> convex(2 * n, 1);
@@ -396,10 +402,10 @@ void FaceClusterHierarchy::Contract(const FaceClusterOptions& options, const Pro
       slot[k] = sa;
       adjacency[sb].clear();
       adjacency[sb].shrink_to_fit();
-      adjacency[sa] = merged;
+      adjacency[sa].assign(merged.begin(), merged.end());
       for (const Link& l : merged)
       {
-        std::vector<Link>& theirs = adjacency[slot[l.To]];
+        Adjacency& theirs = adjacency[slot[l.To]];
         theirs.erase(std::remove_if(theirs.begin(), theirs.end(),
                        [&](const Link& x) { return x.To == c.A || x.To == c.B; }),
           theirs.end());
