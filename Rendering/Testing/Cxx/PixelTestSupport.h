@@ -4,19 +4,25 @@
 #define PixelTestSupport_h
 
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkImageData.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPolyData.h"
 #include "vtkMath.h"
 #include "vtkPointData.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkToneMappingPass.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkRadiosityView.h"
 #include "vtkNew.h"
 #include "vtkTestErrorObserver.h"
 
@@ -30,6 +36,63 @@
 namespace PixelTestSupport
 {
 using Vec3 = std::array<double, 3>;
+
+// A mapper's actor alone in an offscreen window without multisampling,
+// black background, drawn through a vtkToneMappingPass (the mappers' HDR
+// radiance), the camera at (0, 0, 5) looking down -z with a 30 degree view.
+struct ToneMappedWindow
+{
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkOpenGLRenderer> Renderer;
+  vtkNew<vtkRenderStepsPass> Steps;
+  vtkNew<vtkToneMappingPass> ToneMapping;
+  vtkNew<vtkRenderWindow> Window;
+
+  ToneMappedWindow(vtkMapper* mapper, int width, int height)
+  {
+    this->Actor->SetMapper(mapper);
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Renderer->AddActor(this->Actor);
+    this->ToneMapping->SetDelegatePass(this->Steps);
+    this->Renderer->SetPass(this->ToneMapping);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(0.0, 0.0, 5.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetViewAngle(30.0);
+    camera->SetClippingRange(0.5, 20.0);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetSize(width, height);
+    this->Window->AddRenderer(this->Renderer);
+  }
+};
+
+// vtkRadiosityView, given `input` with the cell array `name` replaced by one
+// of 6 components, refuses to render with an error naming the array and the
+// count, as its mapper does.
+inline bool ViewRefusesSixComponents(vtkRadiosityView* view, vtkPolyData* input, const char* name)
+{
+  vtkNew<vtkPolyData> bad;
+  bad->DeepCopy(input);
+  vtkNew<vtkDoubleArray> six;
+  six->SetName(name);
+  six->SetNumberOfComponents(6);
+  six->SetNumberOfTuples(bad->GetNumberOfCells());
+  bad->GetCellData()->AddArray(six);
+  view->InterpolantRenderingOn();
+  view->SetInputData(bad);
+  vtkNew<vtkTest::ErrorObserver> observer;
+  view->AddObserver(vtkCommand::ErrorEvent, observer);
+  const std::string expected = std::string("'") + name + "' has 6 components";
+  if (view->Render() || observer->GetErrorMessage().find(expected) == std::string::npos)
+  {
+    std::cerr << "vtkRadiosityView accepted a 6-component " << name << " ('" << observer->GetErrorMessage()
+              << "')\n";
+    return false;
+  }
+  return true;
+}
 
 // Ray through the centre of pixel (x, y) (display coordinates, origin at the
 // lower left): a point on it and its direction, in world coordinates.

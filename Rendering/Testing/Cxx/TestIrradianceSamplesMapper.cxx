@@ -190,15 +190,6 @@ vtkSmartPointer<vtkPolyData> MakePolyData(const std::vector<Element>& scene)
   return pd;
 }
 
-void PlaceCamera(vtkCamera* camera)
-{
-  camera->SetPosition(0.0, 0.0, 5.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(30.0);
-  camera->SetClippingRange(0.5, 20.0);
-}
-
 bool ExpectError(vtkRenderWindow* window, vtkIrradianceSamplesMapper* mapper, vtkPolyData* input,
   const std::string& expected)
 {
@@ -285,25 +276,7 @@ bool TestView(vtkPolyData* input, const std::vector<Element>& scene)
     return false;
   }
   // The view refuses what the mapper refuses, naming the array.
-  vtkNew<vtkPolyData> bad;
-  bad->DeepCopy(input);
-  vtkNew<vtkDoubleArray> six;
-  six->SetName("IrradianceSamples");
-  six->SetNumberOfComponents(6);
-  six->SetNumberOfTuples(bad->GetNumberOfCells());
-  bad->GetCellData()->AddArray(six);
-  view->InterpolantRenderingOn();
-  view->SetInputData(bad);
-  vtkNew<vtkTest::ErrorObserver> observer;
-  view->AddObserver(vtkCommand::ErrorEvent, observer);
-  if (view->Render() ||
-    observer->GetErrorMessage().find("'IrradianceSamples' has 6 components") == std::string::npos)
-  {
-    std::cerr << "vtkRadiosityView accepted a 6-component IrradianceSamples ('"
-              << observer->GetErrorMessage() << "')\n";
-    return false;
-  }
-  return true;
+  return ViewRefusesSixComponents(view, input, "IrradianceSamples");
 }
 }
 
@@ -331,21 +304,10 @@ int TestIrradianceSamplesMapper(int argc, char* argv[])
 
   vtkNew<vtkIrradianceSamplesMapper> mapper;
   mapper->SetInputData(input);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkOpenGLRenderer> renderer;
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  renderer->AddActor(actor);
-  vtkNew<vtkRenderStepsPass> steps;
-  vtkNew<vtkToneMappingPass> toneMapping;
-  toneMapping->SetDelegatePass(steps);
-  renderer->SetPass(toneMapping);
-  PlaceCamera(renderer->GetActiveCamera());
-  vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
-  window->SetOffScreenRendering(1);
-  window->SetSize(400, 300);
-  window->AddRenderer(renderer);
+  ToneMappedWindow view(mapper, 400, 300);
+  vtkRenderer* renderer = view.Renderer;
+  vtkToneMappingPass* toneMapping = view.ToneMapping;
+  vtkRenderWindow* window = view.Window;
 
   if (!TestInvalidInput(window, mapper, input))
   {

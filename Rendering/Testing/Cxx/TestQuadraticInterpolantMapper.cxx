@@ -222,15 +222,6 @@ vtkSmartPointer<vtkPolyData> MakePolyData(const std::vector<Triangle>& scene)
   return pd;
 }
 
-void PlaceCamera(vtkCamera* camera)
-{
-  camera->SetPosition(0.0, 0.0, 5.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(30.0);
-  camera->SetClippingRange(0.5, 20.0);
-}
-
 // Renders `mapper` once and expects an error containing `expected`.
 bool ExpectError(vtkRenderWindow* window, vtkQuadraticInterpolantMapper* mapper,
   vtkPolyData* input, const std::string& expected)
@@ -393,26 +384,7 @@ bool TestView(vtkPolyData* input, const std::vector<Triangle>& scene)
   }
 
   // The view refuses what the mapper refuses, naming the array.
-  vtkNew<vtkPolyData> bad;
-  bad->DeepCopy(input);
-  vtkNew<vtkDoubleArray> six;
-  six->SetName("QuadraticInterpolant");
-  six->SetNumberOfComponents(6);
-  six->SetNumberOfTuples(bad->GetNumberOfCells());
-  bad->GetCellData()->AddArray(six);
-  view->InterpolantRenderingOn();
-  view->SetInputData(bad);
-  vtkNew<vtkTest::ErrorObserver> observer;
-  view->AddObserver(vtkCommand::ErrorEvent, observer);
-  if (view->Render() ||
-    observer->GetErrorMessage().find("'QuadraticInterpolant' has 6 components") ==
-      std::string::npos)
-  {
-    std::cerr << "vtkRadiosityView accepted a 6-component QuadraticInterpolant ('"
-              << observer->GetErrorMessage() << "')\n";
-    return false;
-  }
-  return true;
+  return ViewRefusesSixComponents(view, input, "QuadraticInterpolant");
 }
 }
 
@@ -461,23 +433,11 @@ int TestQuadraticInterpolantMapper(int argc, char* argv[])
 
   vtkNew<vtkQuadraticInterpolantMapper> mapper;
   mapper->SetInputData(input);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-
-  vtkNew<vtkOpenGLRenderer> renderer;
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  renderer->AddActor(actor);
-  vtkNew<vtkRenderStepsPass> steps;
-  vtkNew<vtkToneMappingPass> toneMapping;
-  toneMapping->SetDelegatePass(steps);
-  renderer->SetPass(toneMapping);
-  PlaceCamera(renderer->GetActiveCamera());
-
-  vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
-  window->SetOffScreenRendering(1);
-  window->SetSize(400, 300);
-  window->AddRenderer(renderer);
+  ToneMappedWindow view(mapper, 400, 300);
+  vtkActor* actor = view.Actor;
+  vtkRenderer* renderer = view.Renderer;
+  vtkToneMappingPass* toneMapping = view.ToneMapping;
+  vtkRenderWindow* window = view.Window;
 
   if (!TestInvalidInput(window, mapper, input))
   {
