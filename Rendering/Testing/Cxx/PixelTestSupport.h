@@ -275,6 +275,28 @@ bool CheckPixels(vtkRenderer* ren, vtkRenderWindow* window, const std::vector<Tr
   return true;
 }
 
+// Renders `window` and compares its pixels (CheckPixels: Clamp, 3/255) with
+// `scene` at `exposure`, which must be steep enough in depth that affine
+// (screen-space) barycentrics would be at least 15/255 off somewhere.
+template <typename Triangle>
+bool CheckPerspectiveCorrectPixels(
+  vtkRenderer* ren, vtkRenderWindow* window, const std::vector<Triangle>& scene, double exposure)
+{
+  window->Render();
+  double affine = 0.0;
+  if (!CheckPixels(ren, window, scene, exposure, vtkToneMappingPass::Clamp, 3.0, &affine))
+  {
+    return false;
+  }
+  if (affine < 15.0)
+  {
+    std::cerr << "The scene does not discriminate perspective-correct interpolation (" << affine
+              << ")\n";
+    return false;
+  }
+  return true;
+}
+
 // Renders `window` once after `feed` has given `mapper` its input, and
 // expects an error event whose message contains `expected`.
 template <typename Feed>
