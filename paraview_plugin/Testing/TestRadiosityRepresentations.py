@@ -58,6 +58,18 @@ def check_image(name, path):
     compare_with_baseline(path, os.path.join(baselines, os.path.basename(path)))
 
 
+def check_exposure(display, what, shot, name, exposure):
+    """Radiance Exposure `exposure` (2 or 0.5) moves the mean of `shot` by
+    more than 5 in its direction; returns the new screenshot."""
+    display.RadianceExposure = exposure
+    changed = screenshot(name)
+    print("%s exposure 1 -> %g: mean %.1f -> %.1f" % (what, exposure, mean(shot), mean(changed)))
+    moved = mean(changed) - mean(shot)
+    check(moved > 5.0 if exposure > 1.0 else moved < -5.0,
+          "Radiance Exposure %g did not %s the %s" % (exposure, "brighten" if exposure > 1.0 else "darken", what))
+    return changed
+
+
 box = CornellBox()
 
 # Hardt and Teller: the discontinuity mesh's quadratic interpolants.
@@ -69,10 +81,7 @@ check(display.RadianceExposure == 1.0 and display.RadianceToneMapping == "Clamp"
       "unexpected defaults %s %s" % (display.RadianceExposure, display.RadianceToneMapping))
 interpolants = screenshot("QuadraticInterpolants")
 check_image("quadratic interpolants", interpolants)
-display.RadianceExposure = 2.0
-brighter = screenshot("QuadraticInterpolantsExposure2")
-print("exposure 1 -> 2: mean %.1f -> %.1f" % (mean(interpolants), mean(brighter)))
-check(mean(brighter) > mean(interpolants) + 5.0, "Radiance Exposure 2 did not brighten the image")
+brighter = check_exposure(display, "interpolants", interpolants, "QuadraticInterpolantsExposure2", 2.0)
 display.RadianceToneMapping = "Reinhard"
 reinhard = screenshot("QuadraticInterpolantsReinhard")
 print("clamp -> Reinhard at exposure 2: mean difference %.1f" % mean_difference(brighter, reinhard))
@@ -105,10 +114,7 @@ meshless.Method = "Meshless"
 display = shown(meshless, "Meshless Field Splats")
 splats = screenshot("ShepardSplats")
 check_image("meshless field splats", splats)
-display.RadianceExposure = 0.5
-darker = screenshot("ShepardSplatsExposure05")
-print("splats exposure 1 -> 0.5: mean %.1f -> %.1f" % (mean(splats), mean(darker)))
-check(mean(darker) < mean(splats) - 5.0, "Radiance Exposure 0.5 did not darken the splats")
+check_exposure(display, "splats", splats, "ShepardSplatsExposure05", 0.5)
 display.RadianceExposure = 1.0
 Hide(meshless, view)
 
@@ -119,10 +125,7 @@ progressive.Method = "Progressive"
 display = shown(progressive, "Radiosity Element Samples")
 samples = screenshot("ElementSamples")
 check_image("element samples", samples)
-display.RadianceExposure = 2.0
-brighter = screenshot("ElementSamplesExposure2")
-print("samples exposure 1 -> 2: mean %.1f -> %.1f" % (mean(samples), mean(brighter)))
-check(mean(brighter) > mean(samples) + 5.0, "Radiance Exposure 2 did not brighten the samples")
+check_exposure(display, "samples", samples, "ElementSamplesExposure2", 2.0)
 display.RadianceExposure = 1.0
 Hide(progressive, view)
 
