@@ -3,7 +3,9 @@
 // bunny room at growing triangle counts (solve, discontinuity meshing, links,
 // leaves, interpolant triangles, peak memory), beside face cluster's figure 4.
 // Writes <dir>/clustered-hierarchical.md.
-//   bench_clustered_hierarchical <dir> [--quick] [--bunny index.js] [--sizes 30000,100000]
+//   bench_clustered_hierarchical <dir> [--quick] [--bunny index.js] [--sizes 30000,100000] [--phases]
+// --phases prints each progress report's phase, sweep and time to stderr, and
+// the meshing's, so that a slow row's time has names.
 #include "BenchArguments.h"
 
 #include "Radiosity/Common/ErrorMetrics.h"
@@ -31,6 +33,7 @@ int main(int argc, char* argv[])
   {
     return 2;
   }
+  bool phases = false;
   std::vector<std::size_t> sizes = args.Quick ? std::vector<std::size_t>{ 30000 }
                                               : std::vector<std::size_t>{ 30000, 100000, 400000, 1500000 };
   for (int i = 2; i + 1 < argc; ++i)
@@ -44,6 +47,10 @@ int main(int argc, char* argv[])
         sizes.push_back(static_cast<std::size_t>(std::stoull(item)));
       }
     }
+  }
+  for (int i = 2; i < argc; ++i)
+  {
+    phases = phases || std::string(argv[i]) == "--phases";
   }
   std::ostringstream md;
   args.WriteHeading(md, "Clustered hierarchical radiosity");
@@ -106,11 +113,21 @@ int main(int argc, char* argv[])
     {
       const Scene room = MakeBunnyRoomWithTriangles(bunny, size);
       const Stopwatch clock;
+      std::string last;
+      const auto trace = [&](const ProgressStatus& status) {
+        const std::string now = status.Phase + " " + std::to_string(status.Iteration);
+        if (phases && now != last)
+        {
+          std::fprintf(stderr, "%8.2f s  %s\n", clock.Seconds(), now.c_str());
+          last = now;
+        }
+        return true;
+      };
       HierarchicalRadiosity solver(room, HierarchicalOptions());
-      const SolverStatistics stats = solver.Solve();
+      const SolverStatistics stats = solver.Solve(trace);
       const double solve = clock.Seconds();
       const Stopwatch meshClock;
-      const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions());
+      const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions(), trace);
       const double meshing = meshClock.Seconds();
       char row[512];
       std::snprintf(row, sizeof row, "| %zu | %.1f | %lld | %zu | %zu | %zu | %zu | %.1f | %zu | %.0f MB |\n",

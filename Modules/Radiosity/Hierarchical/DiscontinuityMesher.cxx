@@ -1,7 +1,7 @@
 #include "Radiosity/Hierarchical/DiscontinuityMesher.h"
 
-#include "Radiosity/Hierarchical/ConstrainedTriangulation.h"
 #include "Radiosity/Hierarchical/CriticalSurfaces.h"
+#include "Radiosity/Hierarchical/DiscontinuityMeshWork.h"
 #include "Radiosity/Hierarchical/HardShadowEdges.h"
 #include "Radiosity/Hierarchical/LinkChain.h"
 #include "Radiosity/Common/FormFactor.h"
@@ -11,16 +11,18 @@
 #include "Radiosity/Common/ThreadLimit.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
-#include <unordered_map>
 
 namespace radiosity
 {
+using namespace discontinuity_mesh_detail;
+
 namespace
 {
 std::uint64_t EdgeKey(std::uint32_t a, std::uint32_t b)
@@ -45,14 +47,16 @@ class EdgeTopology
 public:
   explicit EdgeTopology(const Scene& scene)
     : SourceScene(scene)
+    , Edges(3 * scene.Triangles.size())
   {
-    for (std::uint32_t t = 0; t < scene.Triangles.size(); ++t)
-    {
+    tbb::parallel_for(std::size_t(0), scene.Triangles.size(), [&](std::size_t t) {
       for (int k = 0; k < 3; ++k)
       {
-        this->Edges[EdgeKey(scene.Triangles[t].V[k], scene.Triangles[t].V[(k + 1) % 3])].push_back(t);
+        this->Edges[3 * t + k] = { EdgeKey(scene.Triangles[t].V[k], scene.Triangles[t].V[(k + 1) % 3]),
+          static_cast<std::uint32_t>(t) };
       }
-    }
+    });
+    tbb::parallel_sort(this->Edges.begin(), this->Edges.end());
   }
 
   bool Coplanar(std::uint32_t a, std::uint32_t b) const
@@ -65,8 +69,7 @@ public:
   bool InteriorEmitterEdge(std::uint32_t t, int k) const
   {
     const Triangle& tri = this->SourceScene.Triangles[t];
-    const auto it = this->Edges.find(EdgeKey(tri.V[k], tri.V[(k + 1) % 3]));
-    for (std::uint32_t o : it->second)
+    for (std::uint32_t o : this->Sharing(EdgeKey(tri.V[k], tri.V[(k + 1) % 3])))
     {
       if (o != t && this->Coplanar(o, t) &&
         this->SourceScene.Materials[o].Emission == this->SourceScene.Materials[t].Emission)
@@ -86,9 +89,8 @@ public:
       const Triangle& tri = this->SourceScene.Triangles[b];
       for (int k = 0; k < 3; ++k)
       {
-        const auto& sharing = this->Edges.at(EdgeKey(tri.V[k], tri.V[(k + 1) % 3]));
         bool interior = false;
-        for (std::uint32_t o : sharing)
+        for (std::uint32_t o : this->Sharing(EdgeKey(tri.V[k], tri.V[(k + 1) % 3])))
         {
           interior = interior ||
             (o != b && this->Coplanar(o, b) &&
@@ -104,8 +106,20 @@ public:
   }
 
 private:
+  /// The triangles that have the edge (in triangle order).
+  std::vector<std::uint32_t> Sharing(std::uint64_t edge) const
+  {
+    std::vector<std::uint32_t> out;
+    for (auto it = std::lower_bound(this->Edges.begin(), this->Edges.end(), std::make_pair(edge, std::uint32_t(0)));
+         it != this->Edges.end() && it->first == edge; ++it)
+    {
+      out.push_back(it->second);
+    }
+    return out;
+  }
+
   const Scene& SourceScene;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> Edges;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> Edges; ///< (edge key, triangle), sorted
 };
 
 /// The kept discontinuity segments of one leaf (section 4.2).
@@ -115,6 +129,20 @@ std::vector<std::array<Vec3, 2>> LeafDiscontinuities(const HierarchicalRadiosity
 {
   const ElementMesh& mesh = s.Mesh();
   const Scene& scene = s.GetScene();
+  // Most leaves of a large scene have no partial link in their chain: no map.
+  bool partial = false;
+  for (std::int32_t a = static_cast<std::int32_t>(leaf); a >= 0 && !partial;
+       a = mesh[static_cast<std::uint32_t>(a)].Parent)
+  {
+    for (std::uint32_t i : s.LinksOf(static_cast<std::uint32_t>(a)))
+    {
+      partial = partial || s.Links()[i].Kind == HierarchicalLink::Partial;
+    }
+  }
+  if (!partial)
+  {
+    return {};
+  }
   // Sources are the input triangles behind partial links (a subdivided light
   // casts its discontinuities from its own edges, not from its quadtree's).
   std::map<std::uint32_t, std::pair<double, std::vector<std::uint32_t>>> sources;
@@ -180,177 +208,6 @@ std::vector<std::array<Vec3, 2>> LeafDiscontinuities(const HierarchicalRadiosity
   return kept;
 }
 
-/// A sample of one leaf's triangulation: shared (a leaf corner or the
-/// midpoint of a whole leaf edge, index into the shared samples) or local.
-struct SampleRef
-{
-  bool Shared;
-  std::uint32_t Index;
-};
-
-struct LeafWork
-{
-  std::vector<std::array<Vec3, 2>> Segments;
-  std::vector<std::array<Vec3, 2>> HardSegments; ///< D0: the lights' shadow boundaries
-  std::vector<RGB> PunctualNodes;    ///< the punctual lights at each triangle's six nodes, from inside it
-  std::vector<RGB> PunctualVertices; ///< and at each vertex (the point output)
-  PlanarTriangulation Mesh;
-  std::vector<Vec3> LocalPoints;
-  std::vector<RGB> LocalValues;
-  std::vector<std::array<SampleRef, 6>> TriangleSamples; ///< r0..r5 per triangle
-  std::vector<SampleRef> VertexSamples;
-};
-/// Distance from p to the segment ab, and whether p projects strictly inside it.
-double EdgeDistance(const Vec3& p, const Vec3& a, const Vec3& b, bool& inside, double margin)
-{
-  const Vec3 ab = b - a;
-  const double len2 = glm::dot(ab, ab);
-  const double t = len2 > 0 ? glm::dot(p - a, ab) / len2 : 0.0;
-  const double m = len2 > 0 ? margin / std::sqrt(len2) : 1.0;
-  inside = t > m && t < 1.0 - m;
-  return glm::length(p - (a + std::clamp(t, 0.0, 1.0) * ab));
-}
-
-/**
- * Neighbouring leaves of different levels, or with discontinuity segments
- * ending on their common edge, do not share their boundary vertices: the
- * T-junctions leave pixel cracks when the meshes are rasterised. Every vertex
- * that lies on a leaf's edge is inserted into that leaf's triangulation (a
- * spatial hash of all boundary vertices, walked along each edge), so the
- * hybrid mesh is conforming.
- */
-std::size_t ConformBoundaries(
-  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, std::vector<LeafWork>& work)
-{
-  const ElementMesh& mesh = s.Mesh();
-  if (leaves.empty())
-  {
-    return 0;
-  }
-  double meanEdge = 0.0;
-  for (std::uint32_t leaf : leaves)
-  {
-    meanEdge += mesh.LongestEdge(leaf);
-  }
-  const double h = meanEdge / static_cast<double>(leaves.size());
-  if (!(h > 0))
-  {
-    return 0;
-  }
-  auto cellOf = [h](const Vec3& p) {
-    return std::array<std::int64_t, 3>{ static_cast<std::int64_t>(std::floor(p.x / h)),
-      static_cast<std::int64_t>(std::floor(p.y / h)), static_cast<std::int64_t>(std::floor(p.z / h)) };
-  };
-  auto keyOf = [](const std::array<std::int64_t, 3>& c) {
-    return static_cast<std::uint64_t>(c[0]) * 73856093u ^ static_cast<std::uint64_t>(c[1]) * 19349663u ^
-      static_cast<std::uint64_t>(c[2]) * 83492791u;
-  };
-  // Boundary vertices of every leaf's current triangulation.
-  std::vector<Vec3> points;
-  std::vector<std::uint32_t> owner;
-  for (std::size_t i = 0; i < leaves.size(); ++i)
-  {
-    const TriangleCorners c = s.Corners(leaves[i]);
-    const double tol = 1e-7 * mesh.LongestEdge(leaves[i]);
-    for (std::size_t v = 0; v < work[i].Mesh.Points.size(); ++v)
-    {
-      const Vec3& p = work[i].Mesh.Points[v];
-      bool inside = false, onEdge = v < 3;
-      for (int k = 0; k < 3 && !onEdge; ++k)
-      {
-        onEdge = EdgeDistance(p, c[k], c[(k + 1) % 3], inside, 0.0) < tol;
-      }
-      if (onEdge)
-      {
-        points.push_back(p);
-        owner.push_back(static_cast<std::uint32_t>(i));
-      }
-    }
-  }
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
-  for (std::uint32_t k = 0; k < points.size(); ++k)
-  {
-    grid[keyOf(cellOf(points[k]))].push_back(k);
-  }
-  std::vector<unsigned char> conformed(leaves.size(), 0);
-  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
-    const TriangleCorners c = s.Corners(leaves[i]);
-    const double longest = mesh.LongestEdge(leaves[i]);
-    const double tol = 1e-7 * longest;
-    std::vector<Vec3> extra;
-    std::vector<std::uint64_t> cells;
-    for (int e = 0; e < 3; ++e)
-    {
-      const Vec3& a = c[e];
-      const Vec3& b = c[(e + 1) % 3];
-      const double length = glm::length(b - a);
-      // The cells that a point within tol of the edge can lie in: those
-      // meeting the boxes of the edge's pieces no longer than a cell, each
-      // at most two cells wide per axis.
-      const int pieces = 1 + static_cast<int>(length / h);
-      cells.clear();
-      for (int t = 0; t < pieces; ++t)
-      {
-        const Vec3 p = a + (static_cast<double>(t) / pieces) * (b - a);
-        const Vec3 q = a + (static_cast<double>(t + 1) / pieces) * (b - a);
-        const auto lo = cellOf(glm::min(p, q) - Vec3(tol));
-        const auto hi = cellOf(glm::max(p, q) + Vec3(tol));
-        for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-        {
-          for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-          {
-            for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
-            {
-              cells.push_back(keyOf({ x, y, z }));
-            }
-          }
-        }
-      }
-      std::sort(cells.begin(), cells.end());
-      cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-      for (const std::uint64_t key : cells)
-      {
-        const auto it = grid.find(key);
-        if (it == grid.end())
-        {
-          continue;
-        }
-        for (std::uint32_t k : it->second)
-        {
-          bool inside = false;
-          if (owner[k] != i && EdgeDistance(points[k], a, b, inside, 10.0 * tol) < tol && inside)
-          {
-            extra.push_back(points[k]);
-          }
-        }
-      }
-    }
-    // Only points the leaf does not have yet.
-    std::vector<Vec3> missing;
-    for (const Vec3& p : extra)
-    {
-      bool known = false;
-      for (const Vec3& q : work[i].Mesh.Points)
-      {
-        known = known || glm::length(p - q) < tol;
-      }
-      for (const Vec3& q : missing)
-      {
-        known = known || glm::length(p - q) < tol;
-      }
-      if (!known)
-      {
-        missing.push_back(p);
-      }
-    }
-    if (!missing.empty())
-    {
-      work[i].Mesh = TriangulateWithConstraints(c, work[i].Segments, missing);
-      conformed[i] = 1;
-    }
-  });
-  return static_cast<std::size_t>(std::count(conformed.begin(), conformed.end(), 1));
-}
 } // namespace
 
 RGB AccuratePointIrradiance(
@@ -468,119 +325,33 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       return out;
     }
 
-    // Phase 2: sample keys. Every sample on a leaf's boundary (corners, edge
-    // midpoints, vertices of neighbours inserted by the conforming step) is
-    // shared by position between the leaves that meet there: computed once, and
-    // neighbouring interpolants agree along their common edges.
-    const double quantum = 1e-9 * std::max(s.Analysis().Diagonal, 1e-300);
-    // The key is the position and the surface's normal: a point on a contact
-    // line belongs to both surfaces, with a different irradiance on each.
-    using SampleKey = std::array<std::int64_t, 6>;
-    struct PositionHash
-    {
-      std::size_t operator()(const SampleKey& k) const
-      {
-        std::size_t h = 0;
-        for (std::int64_t v : k)
-        {
-          h = h * 1000003u ^ static_cast<std::size_t>(v);
-        }
-        return h;
-      }
-    };
-    std::unordered_map<SampleKey, std::uint32_t, PositionHash> sharedIndex;
-    std::vector<Vec3> sharedPoints;
-    std::vector<std::uint32_t> sharedOwner; ///< the leaf whose links evaluate it
+    // Phase 2: sample keys (DiscontinuityMeshSamples.cxx).
     for (std::size_t i = 0; i < leaves.size(); ++i)
     {
-      LeafWork& w = work[i];
-      const TriangleCorners corners = s.Corners(leaves[i]);
-      const double tolerance = 1e-7 * mesh.LongestEdge(leaves[i]);
       out.SegmentsFound += found[i];
       out.SegmentsKept += kept[i];
       out.LeavesMeshed += kept[i] > 0;
-      out.LeavesTriangulationFailed += w.Mesh.ConstraintsDropped;
-      const Vec3& normal = mesh[leaves[i]].Normal;
-      auto shared = [&](const Vec3& x) {
-        const SampleKey key = { std::llround(x.x / quantum), std::llround(x.y / quantum),
-          std::llround(x.z / quantum), std::llround(normal.x * 1e6), std::llround(normal.y * 1e6),
-          std::llround(normal.z * 1e6) };
-        auto it = sharedIndex.find(key);
-        if (it == sharedIndex.end())
-        {
-          it = sharedIndex.emplace(key, static_cast<std::uint32_t>(sharedPoints.size())).first;
-          sharedPoints.push_back(x);
-          sharedOwner.push_back(static_cast<std::uint32_t>(i));
-        }
-        return SampleRef{ true, it->second };
-      };
-      // The leaf edge a point lies on, or -1.
-      auto edgeOf = [&](const Vec3& x) {
-        for (int k = 0; k < 3; ++k)
-        {
-          bool inside = false;
-          if (EdgeDistance(x, corners[k], corners[(k + 1) % 3], inside, 0.0) < tolerance)
-          {
-            return k;
-          }
-        }
-        return -1;
-      };
-      std::vector<int> edge(w.Mesh.Points.size(), -1);
-      std::map<std::uint64_t, std::uint32_t> localMid;
-      w.VertexSamples.resize(w.Mesh.Points.size());
-      for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
-      {
-        const Vec3& x = w.Mesh.Points[v];
-        edge[v] = v < 3 ? 3 : edgeOf(x); // corners are on two edges: 3 marks them
-        if (edge[v] >= 0)
-        {
-          w.VertexSamples[v] = shared(x);
-        }
-        else
-        {
-          w.VertexSamples[v] = { false, static_cast<std::uint32_t>(w.LocalPoints.size()) };
-          w.LocalPoints.push_back(x);
-        }
-      }
-      for (const auto& t : w.Mesh.Triangles)
-      {
-        std::array<SampleRef, 6> r{};
-        for (int k = 0; k < 3; ++k)
-        {
-          const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-          r[2 * k] = w.VertexSamples[a];
-          const Vec3 mid = 0.5 * (w.Mesh.Points[a] + w.Mesh.Points[b]);
-          if (edge[a] >= 0 && edge[b] >= 0 && edgeOf(mid) >= 0)
-          {
-            r[2 * k + 1] = shared(mid); // a piece of the leaf's boundary
-          }
-          else
-          {
-            auto it = localMid.find(EdgeKey(a, b));
-            if (it == localMid.end())
-            {
-              it = localMid.emplace(EdgeKey(a, b), static_cast<std::uint32_t>(w.LocalPoints.size())).first;
-              w.LocalPoints.push_back(mid);
-            }
-            r[2 * k + 1] = { false, it->second };
-          }
-        }
-        w.TriangleSamples.push_back(r);
-      }
+      out.LeavesTriangulationFailed += work[i].Mesh.ConstraintsDropped;
     }
+    const SharedSamples shared = ReferenceSamples(s, leaves, work);
+    const std::vector<Vec3>& sharedPoints = shared.Points;
 
     // Phase 3: accurate point irradiance, shared samples grouped by owner leaf.
     const double samplesStart = clock.Seconds();
-    std::vector<std::vector<std::uint32_t>> owned(leaves.size());
-    for (std::uint32_t k = 0; k < sharedOwner.size(); ++k)
+    // The shared samples of each owner: a run of them, as they are numbered in leaf order.
+    std::vector<std::uint32_t> ownedStart(leaves.size() + 1, 0);
+    for (std::uint32_t owner : shared.Owner)
     {
-      owned[sharedOwner[k]].push_back(k);
+      ++ownedStart[owner + 1];
+    }
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+    {
+      ownedStart[i + 1] += ownedStart[i];
     }
     std::vector<RGB> sharedValues(sharedPoints.size());
     std::atomic<std::size_t> pastLimit{ 0 };
     tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
-      if (owned[i].empty() && work[i].LocalPoints.empty() && !(lights && lights->HasPunctualLights()))
+      if (ownedStart[i] == ownedStart[i + 1] && work[i].LocalPoints.empty() && !(lights && lights->HasPunctualLights()))
       {
         return;
       }
@@ -591,7 +362,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       const Vec3& c = mesh[leaves[i]].Centroid;
       // Clustered: what the cluster links bring, a constant per input triangle.
       const RGB clustered = s.ClusterIrradiance(leaves[i]);
-      for (std::uint32_t k : owned[i])
+      for (std::uint32_t k = ownedStart[i]; k < ownedStart[i + 1]; ++k)
       {
         const Vec3 x = Inside(sharedPoints[k], c);
         // In an umbra the signed contour integrals cancel to a rounding, which may be below 0.
@@ -649,30 +420,47 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     auto value = [&](const LeafWork& w, const SampleRef& r) {
       return r.Shared ? sharedValues[r.Index] : w.LocalValues[r.Index];
     };
+    // Each leaf's points and triangles at their offsets in leaf order, in parallel.
+    std::vector<std::size_t> pointStart(leaves.size() + 1, 0), triangleStart(leaves.size() + 1, 0),
+      punctualStart(leaves.size() + 1, 0);
     for (std::size_t i = 0; i < leaves.size(); ++i)
     {
       const LeafWork& w = work[i];
-      const Element& el = mesh[leaves[i]];
       out.PointSamples += w.LocalPoints.size();
-      const auto base = static_cast<std::uint32_t>(out.Points.size());
+      pointStart[i + 1] = pointStart[i] + w.Mesh.Points.size();
+      triangleStart[i + 1] = triangleStart[i] + w.Mesh.Triangles.size();
+      punctualStart[i + 1] = punctualStart[i] + (w.PunctualNodes.empty() ? 0 : w.Mesh.Triangles.size());
+    }
+    out.Points.resize(pointStart.back());
+    out.PointIrradiance.resize(pointStart.back());
+    out.Triangles.resize(triangleStart.back());
+    out.Interpolants.resize(triangleStart.back());
+    out.PunctualInterpolants.resize(punctualStart.back());
+    out.Leaf.resize(triangleStart.back());
+    out.SourceTriangle.resize(triangleStart.back());
+    out.Level.resize(triangleStart.back());
+    out.Normals.resize(triangleStart.back());
+    tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+      LeafWork& w = work[i];
+      const Element& el = mesh[leaves[i]];
+      const auto base = static_cast<std::uint32_t>(pointStart[i]);
       for (std::uint32_t v = 0; v < w.Mesh.Points.size(); ++v)
       {
-        out.Points.push_back(w.Mesh.Points[v]);
-        out.PointIrradiance.push_back(
-          value(w, w.VertexSamples[v]) + (w.PunctualVertices.empty() ? RGB(0.0) : w.PunctualVertices[v]));
+        out.Points[base + v] = w.Mesh.Points[v];
+        out.PointIrradiance[base + v] =
+          value(w, w.VertexSamples[v]) + (w.PunctualVertices.empty() ? RGB(0.0) : w.PunctualVertices[v]);
       }
       for (std::size_t t = 0; t < w.Mesh.Triangles.size(); ++t)
       {
+        const std::size_t o = triangleStart[i] + t;
         const auto& tri = w.Mesh.Triangles[t];
-        Triangle cell;
-        cell.V = { base + tri[0], base + tri[1], base + tri[2] };
-        out.Triangles.push_back(cell);
+        out.Triangles[o].V = { base + tri[0], base + tri[1], base + tri[2] };
         std::array<RGB, 6> r;
         for (int k = 0; k < 6; ++k)
         {
           r[k] = value(w, w.TriangleSamples[t][k]) + (w.PunctualNodes.empty() ? RGB(0.0) : w.PunctualNodes[6 * t + k]);
         }
-        out.Interpolants.push_back(QuadraticInterpolant::FromSamples(r));
+        out.Interpolants[o] = QuadraticInterpolant::FromSamples(r);
         if (!w.PunctualNodes.empty())
         {
           std::array<RGB, 6> p;
@@ -680,14 +468,15 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
           {
             p[k] = w.PunctualNodes[6 * t + k];
           }
-          out.PunctualInterpolants.push_back(QuadraticInterpolant::FromSamples(p));
+          out.PunctualInterpolants[punctualStart[i] + t] = QuadraticInterpolant::FromSamples(p);
         }
-        out.Leaf.push_back(leaves[i]);
-        out.SourceTriangle.push_back(el.Source);
-        out.Level.push_back(el.Level);
-        out.Normals.push_back(el.Normal);
+        out.Leaf[o] = leaves[i];
+        out.SourceTriangle[o] = el.Source;
+        out.Level[o] = el.Level;
+        out.Normals[o] = el.Normal;
       }
-    }
+      w = LeafWork(); // freed here, in parallel, not by one thread at the end
+    });
     out.Seconds = clock.Seconds();
     report("interpolants", 1.0);
     return out;

@@ -273,17 +273,10 @@ void HierarchicalRadiosity::IndexLinks()
 }
 
 
-std::vector<std::uint32_t> HierarchicalRadiosity::LinksOf(std::uint32_t e) const
+boost::integer_range<std::uint32_t> HierarchicalRadiosity::LinksOf(std::uint32_t e) const
 {
-  std::vector<std::uint32_t> out;
-  if (e + 1 < this->LinkOffsets.size())
-  {
-    for (std::uint32_t i = this->LinkOffsets[e]; i < this->LinkOffsets[e + 1]; ++i)
-    {
-      out.push_back(i);
-    }
-  }
-  return out;
+  return e + 1 < this->LinkOffsets.size() ? boost::irange(this->LinkOffsets[e], this->LinkOffsets[e + 1])
+                                          : boost::irange(0u, 0u);
 }
 
 RGB HierarchicalRadiosity::PushPull(std::uint32_t e, const RGB& downVisible, const RGB& downOther,

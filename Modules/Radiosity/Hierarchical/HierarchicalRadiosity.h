@@ -50,6 +50,8 @@
 
 #include "Radiosity/Common/DirectLighting.h"
 
+#include <boost/range/irange.hpp>
+
 #include <functional>
 #include <memory>
 #include <vector>
@@ -147,8 +149,9 @@ public:
   {
     return this->BlockerPool.data() + link.FirstBlocker;
   }
-  /// Links received by node e (indices into Links()); ancestors' links apply to e too.
-  std::vector<std::uint32_t> LinksOf(std::uint32_t e) const;
+  /// Links received by node e (indices into Links(), consecutive: the links
+  /// are sorted by receiver); ancestors' links apply to e too.
+  boost::integer_range<std::uint32_t> LinksOf(std::uint32_t e) const;
   /// Area-mean radiosity B of a node, W/m^2.
   const RGB& Radiosity(std::uint32_t e) const { return this->NodeRadiosity[e]; }
   /// Total irradiance of a node (its own links and its ancestors'), W/m^2.

@@ -1,0 +1,78 @@
+// The discontinuity mesher's per-leaf work and its phases that span leaves
+// (internal to BuildDiscontinuityMesh, DiscontinuityMesher.cxx): the
+// conforming of neighbouring leaves' boundaries and the numbering of the
+// samples they share. Hardt & Teller 1996, sections 4.2 and 5; the phases are
+// in Hierarchical/README.md.
+#ifndef Radiosity_DiscontinuityMeshWork_h
+#define Radiosity_DiscontinuityMeshWork_h
+
+#include "Radiosity/Hierarchical/ConstrainedTriangulation.h"
+#include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
+
+#include <boost/container/small_vector.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace radiosity
+{
+namespace discontinuity_mesh_detail
+{
+/// A sample of one leaf's triangulation: shared (a leaf corner or the
+/// midpoint of a whole leaf edge, index into the shared samples) or local.
+struct SampleRef
+{
+  bool Shared;
+  std::uint32_t Index;
+};
+
+/// A shared sample as its leaf lists it before numbering: vertex A of the
+/// leaf's triangulation (A == B) or the midpoint of its edge A-B.
+using SampleCandidate = std::array<std::uint32_t, 2>;
+
+/// One leaf's discontinuities, triangulation and samples. The small vectors
+/// hold an undivided leaf (3 vertices, 1 triangle, 6 shared samples) without
+/// a heap allocation: a million-leaf scene is mostly such leaves.
+struct LeafWork
+{
+  std::vector<std::array<Vec3, 2>> Segments;
+  std::vector<std::array<Vec3, 2>> HardSegments; ///< D0: the lights' shadow boundaries
+  std::vector<RGB> PunctualNodes;    ///< the punctual lights at each triangle's six nodes, from inside it
+  std::vector<RGB> PunctualVertices; ///< and at each vertex (the point output)
+  PlanarTriangulation Mesh;
+  std::vector<Vec3> LocalPoints;
+  std::vector<RGB> LocalValues;
+  boost::container::small_vector<std::array<SampleRef, 6>, 1> TriangleSamples; ///< r0..r5 per triangle
+  boost::container::small_vector<SampleRef, 3> VertexSamples;
+  boost::container::small_vector<SampleCandidate, 6> SharedCandidates; ///< until numbered
+};
+
+/// Distance from p to the segment ab, and whether p projects strictly inside it
+/// (more than `margin` from either end).
+double EdgeDistance(const Vec3& p, const Vec3& a, const Vec3& b, bool& inside, double margin);
+
+/// Inserts into each leaf's triangulation the neighbours' boundary vertices
+/// that lie on its edges (no T-junctions); returns the leaves changed.
+std::size_t ConformBoundaries(
+  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, std::vector<LeafWork>& work);
+
+/// The samples that leaves share by position: one value per point and
+/// surface, evaluated once by its owner.
+struct SharedSamples
+{
+  std::vector<Vec3> Points;
+  std::vector<std::uint32_t> Owner; ///< index into the leaves: the first leaf that lists the point
+};
+
+/// Each leaf's vertex and triangle sample references (VertexSamples,
+/// TriangleSamples, LocalPoints). A sample on the leaf's boundary is shared by
+/// position and surface normal with the leaves that meet there, so that
+/// neighbouring interpolants agree along their common edges; the shared
+/// samples are numbered in the order of their first appearance in leaf order.
+SharedSamples ReferenceSamples(
+  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, std::vector<LeafWork>& work);
+} // namespace discontinuity_mesh_detail
+} // namespace radiosity
+
+#endif
