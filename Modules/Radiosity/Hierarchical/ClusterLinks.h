@@ -202,6 +202,9 @@ private:
   /// the row normalisation: irradiance 0.93 to 1.16 at 0.5, 0.96 to 1.10 at
   /// 0.35, 0.985 to 1.029 at 0.25 (exact 1).
   static constexpr double SampledOpening = 0.25;
+  /// A distant pair with more rays than this tests a stratified quarter of
+  /// them first (Compute).
+  static constexpr std::size_t QuarterRays = 16;
   std::uint32_t NodeOf(std::uint32_t cluster) const;
   static bool IsElement(std::uint32_t node) { return (node & ElementBit) != 0; }
   static std::uint32_t ElementOf(std::uint32_t node) { return node & ~ElementBit; }
