@@ -88,6 +88,43 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
     }
   });
   this->Radiosity.assign(h.NumberOfClusters(), RGB(0.0));
+  // Depth first, the first child's subtree before the second's (Descend).
+  this->Preorder.reserve(h.NumberOfClusters());
+  std::vector<std::uint32_t> stack;
+  for (std::uint32_t root : h.Roots())
+  {
+    this->RootPositions.push_back(static_cast<std::uint32_t>(this->Preorder.size()));
+    stack.assign(1, root);
+    while (!stack.empty())
+    {
+      const std::uint32_t c = stack.back();
+      stack.pop_back();
+      const auto position = static_cast<std::uint32_t>(this->Preorder.size());
+      if (c < this->Triangles)
+      {
+        this->Preorder.push_back({ this->Frames[c].Centroid, this->Frames[c].Normal, c, position + 1 });
+      }
+      else
+      {
+        const FaceCluster& f = *h.InternalCluster(c);
+        this->Preorder.push_back({ Vec3(f.Centroid), Vec3(0.0), c, 0 });
+        stack.push_back(f.Child[1]);
+        stack.push_back(f.Child[0]);
+      }
+    }
+    // Each subtree's end, from the last position back: a node's subtree ends
+    // where its second child's does.
+    const std::uint32_t first = this->RootPositions.back();
+    for (std::uint32_t p = static_cast<std::uint32_t>(this->Preorder.size()); p-- > first;)
+    {
+      DescentNode& node = this->Preorder[p];
+      if (node.Id >= this->Triangles)
+      {
+        const std::uint32_t second = this->Preorder[p + 1].End; // the first child's subtree ends at the second
+        node.End = this->Preorder[second].End;
+      }
+    }
+  }
 }
 
 ClusterLinks::~ClusterLinks() = default;
@@ -108,6 +145,7 @@ std::size_t ClusterLinks::MemoryBytes() const
   return this->ToElements.capacity() * sizeof(ScalarLink) + this->ToClusters.capacity() * sizeof(VectorLink) +
     this->Deferred.capacity() * sizeof(Pair) +
     (this->ElementOffsets.capacity() + this->ClusterOffsets.capacity()) * sizeof(std::uint32_t) +
+    this->Preorder.capacity() * sizeof(DescentNode) +
     this->InternalBounds.capacity() * sizeof(Bounds) + this->Radiosity.capacity() * sizeof(RGB) +
     this->Clusters->MemoryBytes();
 }

@@ -237,10 +237,11 @@ private:
     Vec3 Origin;
   };
   /// Pushes the expansion from above (a cluster_detail::Expansion,
-  /// ClusterExpansion.h) down to the triangles, with the links `carried`
+  /// ClusterExpansion.h) down the subtree at `position` of Preorder to the
+  /// triangles, with the links `carried`
   /// from a curved leaf above: each is summed where every triangle below
   /// faces it, dropped where none does, and clamped per triangle on the rest.
-  void Descend(std::uint32_t cluster, const void* above, const std::vector<Carried>& carried,
+  void Descend(std::uint32_t position, const void* above, const std::vector<Carried>& carried,
     std::vector<RGB>& out) const;
 
   const Scene& SourceScene;
@@ -262,6 +263,18 @@ private:
     double Area;
   };
   std::vector<TriangleFrame> Frames;
+  /// The hierarchy in depth-first order, each root's tree in turn: what a
+  /// sweep's descent reads of every node, in the order it reads it (the
+  /// clusters' own records are scattered in memory by their creation order).
+  struct DescentNode
+  {
+    Vec3 Point;          ///< a cluster's centroid, a triangle's
+    Vec3 Normal;         ///< a triangle's
+    std::uint32_t Id;    ///< cluster id (a triangle below Triangles)
+    std::uint32_t End;   ///< the position after its subtree
+  };
+  std::vector<DescentNode> Preorder;
+  std::vector<std::uint32_t> RootPositions; ///< per root, its position in Preorder
   std::vector<Bounds> InternalBounds; ///< per internal cluster (id - Triangles)
   std::vector<RGB> Radiosity;         ///< per cluster, area mean
   std::vector<ScalarLink> ToElements; ///< sorted by receiver after Index

@@ -242,14 +242,16 @@ bool ClusterLinks::Compute(const std::vector<Pair>& pending, const std::function
 
 using cluster_detail::Expansion;
 
-void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, const std::vector<Carried>& carried,
+void ClusterLinks::Descend(std::uint32_t position, const void* aboveExpansion, const std::vector<Carried>& carried,
   std::vector<RGB>& out) const
 {
   const Expansion& above = *static_cast<const Expansion*>(aboveExpansion);
+  const DescentNode& node = this->Preorder[position];
+  const std::uint32_t c = node.Id;
   if (c < this->Triangles)
   {
-    const Vec3& x = this->Frames[c].Centroid;
-    const Vec3& n = this->Frames[c].Normal;
+    const Vec3& x = node.Point;
+    const Vec3& n = node.Normal;
     RGB v[3];
     above.At(x, v);
     RGB sum = glm::max(n.x * v[0] + n.y * v[1] + n.z * v[2], RGB(0.0));
@@ -265,10 +267,9 @@ void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, const st
     out[c] = sum;
     return;
   }
-  const FaceCluster& f = *this->Clusters->InternalCluster(c);
   const std::size_t i = c - this->Triangles;
   Expansion here;
-  here.Centre = Vec3(f.Centroid);
+  here.Centre = node.Point;
   above.At(here.Centre, here.E);
   std::copy(std::begin(above.G), std::end(above.G), std::begin(here.G));
   // Links carried from a curved leaf above (ClusterLinksCurvedLeaves.cxx):
@@ -303,15 +304,18 @@ void ClusterLinks::Descend(std::uint32_t c, const void* aboveExpansion, const st
       here.Add(Vec3(l.Factor), l.Gradient, this->RadiosityOf(l.Source));
     }
   }
-  if (down.empty() && f.Count > 4096)
+  // The first child follows its parent; the second, the first's subtree.
+  const std::uint32_t first = position + 1, second = this->Preorder[first].End;
+  // A subtree of n triangles has 2 n - 1 nodes.
+  if (down.empty() && node.End - position > 2 * 4096)
   {
-    tbb::parallel_invoke([&]() { this->Descend(f.Child[0], &here, down, out); },
-      [&]() { this->Descend(f.Child[1], &here, down, out); });
+    tbb::parallel_invoke([&]() { this->Descend(first, &here, down, out); },
+      [&]() { this->Descend(second, &here, down, out); });
   }
   else
   {
-    this->Descend(f.Child[0], &here, down, out);
-    this->Descend(f.Child[1], &here, down, out);
+    this->Descend(first, &here, down, out);
+    this->Descend(second, &here, down, out);
   }
 }
 
@@ -323,9 +327,8 @@ void ClusterLinks::Gather(std::vector<RGB>& triangleIrradiance, std::vector<RGB>
   if (!this->ToClusters.empty())
   {
     const Expansion none;
-    const std::vector<std::uint32_t>& roots = this->Clusters->Roots();
-    tbb::parallel_for(
-      std::size_t(0), roots.size(), [&](std::size_t r) { this->Descend(roots[r], &none, {}, triangleIrradiance); });
+    tbb::parallel_for(std::size_t(0), this->RootPositions.size(),
+      [&](std::size_t r) { this->Descend(this->RootPositions[r], &none, {}, triangleIrradiance); });
   }
   const std::size_t indexed = std::min(elements, this->ElementOffsets.empty() ? 0 : this->ElementOffsets.size() - 1);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, indexed, 256), [&](const tbb::blocked_range<std::size_t>& range) {
