@@ -11,6 +11,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -55,6 +56,14 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
   this->InternalBounds.resize(internal);
   const std::vector<double>& cumulative = h.CumulativeArea();
   const std::vector<std::uint32_t>& order = h.TriangleOrder();
+  // Each cluster's triangles are a run of TriangleOrder: their normals and
+  // corners copied in that order, so that a cluster reads one run of memory
+  // (its triangles are scattered in the scene's order).
+  std::vector<std::array<Vec3, 4>> laidOut(order.size());
+  tbb::parallel_for(std::size_t(0), order.size(), [&](std::size_t k) {
+    const std::uint32_t t = order[k];
+    laidOut[k] = { this->Frames[t].Normal, scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) };
+  });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, internal, 64), [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i)
     {
@@ -70,11 +79,11 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
       const Vec3 origin(c.Centroid);
       for (std::uint32_t k = c.First; k < c.First + c.Count; ++k)
       {
-        const std::uint32_t t = order[k];
-        minCos = std::min(minCos, glm::dot(this->Frames[t].Normal, b.Axis));
-        for (int v = 0; v < 3; ++v)
+        const std::array<Vec3, 4>& t = laidOut[k];
+        minCos = std::min(minCos, glm::dot(t[0], b.Axis));
+        for (int v = 1; v <= 3; ++v)
         {
-          offPlane = std::max(offPlane, std::fabs(glm::dot(scene.Vertex(t, v) - origin, b.Axis)));
+          offPlane = std::max(offPlane, std::fabs(glm::dot(t[v] - origin, b.Axis)));
         }
       }
       b.ConeAngle = std::acos(std::clamp(minCos, -1.0, 1.0));
@@ -102,12 +111,14 @@ ClusterLinks::ClusterLinks(const Scene& scene, std::shared_ptr<const FaceCluster
       const auto position = static_cast<std::uint32_t>(this->Preorder.size());
       if (c < this->Triangles)
       {
-        this->Preorder.push_back({ this->Frames[c].Centroid, this->Frames[c].Normal, c, position + 1 });
+        this->Preorder.push_back(
+          { this->Frames[c].Centroid, this->Frames[c].Normal, this->Frames[c].Area, c, position + 1 });
       }
       else
       {
         const FaceCluster& f = *h.InternalCluster(c);
-        this->Preorder.push_back({ Vec3(f.Centroid), Vec3(0.0), c, 0 });
+        this->Preorder.push_back(
+          { Vec3(f.Centroid), Vec3(0.0), this->InternalBounds[c - this->Triangles].Area, c, 0 });
         stack.push_back(f.Child[1]);
         stack.push_back(f.Child[0]);
       }
@@ -242,29 +253,35 @@ void ClusterLinks::PullRadiosity()
   const std::vector<RGB>& elements = *this->ElementRadiosity;
   std::copy(elements.begin(), elements.begin() + static_cast<std::ptrdiff_t>(this->Triangles),
     this->Radiosity.begin());
-  // One height at a time (a cluster after its children), each in parallel.
-  const std::vector<std::uint32_t>& order = this->Clusters->HeightOrder();
-  const std::vector<std::uint32_t>& levels = this->Clusters->HeightLevels();
-  for (std::size_t h = 0; h + 1 < levels.size(); ++h)
+  tbb::parallel_for(std::size_t(0), this->RootPositions.size(), [&](std::size_t r) { this->Pull(this->RootPositions[r]); });
+}
+
+void ClusterLinks::Pull(std::uint32_t position)
+{
+  const DescentNode& node = this->Preorder[position];
+  if (node.Id < this->Triangles)
   {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(levels[h], levels[h + 1], 1024),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t k = range.begin(); k != range.end(); ++k)
-        {
-          const auto id = static_cast<std::uint32_t>(this->Triangles + order[k]);
-          RGB sum(0.0);
-          double area = 0.0;
-          for (std::uint32_t child : this->Clusters->InternalCluster(id)->Child)
-          {
-            const double a = child < this->Triangles ? this->Frames[child].Area
-                                                     : this->InternalBounds[child - this->Triangles].Area;
-            sum += a * this->Radiosity[child];
-            area += a;
-          }
-          this->Radiosity[id] = area > 0 ? sum / area : RGB(0.0);
-        }
-      });
+    return;
   }
+  const std::uint32_t first = position + 1, second = this->Preorder[first].End;
+  if (node.End - position > 2 * 4096)
+  {
+    tbb::parallel_invoke([&]() { this->Pull(first); }, [&]() { this->Pull(second); });
+  }
+  else
+  {
+    this->Pull(first);
+    this->Pull(second);
+  }
+  RGB sum(0.0);
+  double area = 0.0;
+  for (std::uint32_t child : { first, second })
+  {
+    const double a = this->Preorder[child].Area;
+    sum += a * this->Radiosity[this->Preorder[child].Id];
+    area += a;
+  }
+  this->Radiosity[node.Id] = area > 0 ? sum / area : RGB(0.0);
 }
 
 void ClusterLinks::Refine(

@@ -270,9 +270,13 @@ private:
   {
     Vec3 Point;          ///< a cluster's centroid, a triangle's
     Vec3 Normal;         ///< a triangle's
+    double Area;
     std::uint32_t Id;    ///< cluster id (a triangle below Triangles)
     std::uint32_t End;   ///< the position after its subtree
   };
+  /// The area-mean radiosity of the clusters of the subtree at `position`
+  /// of Preorder, its children's first (PullRadiosity).
+  void Pull(std::uint32_t position);
   std::vector<DescentNode> Preorder;
   std::vector<std::uint32_t> RootPositions; ///< per root, its position in Preorder
   std::vector<Bounds> InternalBounds; ///< per internal cluster (id - Triangles)
