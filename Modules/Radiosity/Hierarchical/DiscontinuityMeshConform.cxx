@@ -56,7 +56,7 @@ void BoundaryVertices(const HierarchicalRadiosity& s, std::uint32_t leaf, const 
 } // namespace
 
 std::size_t ConformBoundaries(
-  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, std::vector<LeafWork>& work)
+  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, LeafWorks& work)
 {
   const ElementMesh& mesh = s.Mesh();
   if (leaves.empty())

@@ -129,7 +129,7 @@ Vec3 CandidatePoint(const LeafWork& w, const SampleCandidate& c)
 } // namespace
 
 SharedSamples ReferenceSamples(
-  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, std::vector<LeafWork>& work)
+  const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, LeafWorks& work)
 {
   const ElementMesh& mesh = s.Mesh();
   const double quantum = 1e-9 * std::max(s.Analysis().Diagonal, 1e-300);

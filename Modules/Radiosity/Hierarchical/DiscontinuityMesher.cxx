@@ -210,6 +210,19 @@ std::vector<std::array<Vec3, 2>> LeafDiscontinuities(const HierarchicalRadiosity
 
 } // namespace
 
+discontinuity_mesh_detail::LeafWorks::LeafWorks(std::size_t n)
+  : Chunks((n + ChunkSize - 1) / ChunkSize)
+  , Size(n)
+{
+  tbb::parallel_for(std::size_t(0), this->Chunks.size(),
+    [&](std::size_t c) { this->Chunks[c] = std::make_unique<LeafWork[]>(ChunkSize); });
+}
+
+discontinuity_mesh_detail::LeafWorks::~LeafWorks()
+{
+  tbb::parallel_for(std::size_t(0), this->Chunks.size(), [&](std::size_t c) { this->Chunks[c].reset(); });
+}
+
 RGB AccuratePointIrradiance(
   const HierarchicalRadiosity& solution, std::uint32_t leaf, const Vec3& x, const Vec3& n)
 {
@@ -254,7 +267,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     };
 
     // Phase 1: discontinuities and triangulations, per leaf.
-    std::vector<LeafWork> work(leaves.size());
+    LeafWorks work(leaves.size());
     std::vector<std::size_t> found(leaves.size(), 0), kept(leaves.size(), 0);
     // In blocks of leaves, so that progress and an abort are seen between
     // them (on this thread) and not only after the whole phase.
