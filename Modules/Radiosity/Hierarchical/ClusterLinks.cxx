@@ -153,7 +153,12 @@ std::size_t ClusterLinks::NumberOfLinks() const
 
 std::size_t ClusterLinks::MemoryBytes() const
 {
-  return this->ToElements.capacity() * sizeof(ScalarLink) + this->ToClusters.capacity() * sizeof(VectorLink) +
+  std::size_t decisions = this->FacingCursor.capacity() * sizeof(std::uint32_t);
+  for (const std::vector<Facing>& d : this->FacingDecisions)
+  {
+    decisions += sizeof(d) + d.capacity() * sizeof(Facing);
+  }
+  return decisions + this->ToElements.capacity() * sizeof(ScalarLink) + this->ToClusters.capacity() * sizeof(VectorLink) +
     this->Deferred.capacity() * sizeof(Pair) +
     (this->ElementOffsets.capacity() + this->ClusterOffsets.capacity()) * sizeof(std::uint32_t) +
     this->Preorder.capacity() * sizeof(DescentNode) +
@@ -510,6 +515,15 @@ void ClusterLinks::Index()
   {
     this->ElementOffsets[i + 1] += this->ElementOffsets[i];
   }
+  // The links changed: their FacingOf decisions are recorded again.
+  std::uint32_t straddling = 0;
+  for (VectorLink& l : this->ToClusters)
+  {
+    l.Straddling = l.Straddles ? straddling++ : 0;
+  }
+  this->FacingDecisions.assign(straddling, {});
+  this->FacingCursor.assign(straddling, 0);
+  this->FacingRecorded = false;
   const std::size_t internal = this->InternalBounds.size();
   this->ClusterOffsets.assign(internal + 1, 0);
   for (const VectorLink& l : this->ToClusters)

@@ -165,6 +165,9 @@ private:
     /// To a curved leaf (Leaf, cone over NearlyFlatCone) some of whose
     /// triangles face away from it: clamped per triangle (Descend).
     bool Straddles;
+    /// Its index among the straddling links (Index), for its recorded
+    /// FacingOf decisions.
+    std::uint32_t Straddling;
   };
   /// Sample points of a node: its triangles' centroids at area quantiles
   /// (every triangle when it has at most Most), an element's four points.
@@ -221,7 +224,7 @@ private:
   /// irradiance (its first-order expansion about `origin`, taken at the
   /// node's centre): by the normal cone, or by the axis alone when the node
   /// is nearly flat.
-  enum class Facing
+  enum class Facing : unsigned char
   {
     All,
     None,
@@ -236,6 +239,15 @@ private:
     RGB B;
     Vec3 Origin;
   };
+  /// How the nodes below a curved leaf face one of its straddling links: the
+  /// first descent after the links change (Index) records each FacingOf
+  /// decision in the order it makes them (depth first; a link's subtree is
+  /// walked by one thread), the next descents replay them. They are fixed
+  /// while the links are, and they were a third of a sweep's descent.
+  mutable std::vector<std::vector<Facing>> FacingDecisions;
+  mutable std::vector<std::uint32_t> FacingCursor; ///< per straddling link, its next decision (replay)
+  mutable bool FacingRecorded = false;
+  Facing FacingAt(const Carried& l, std::size_t internal) const;
   /// Pushes the expansion from above (a cluster_detail::Expansion,
   /// ClusterExpansion.h) down the subtree at `position` of Preorder to the
   /// triangles, with the links `carried`

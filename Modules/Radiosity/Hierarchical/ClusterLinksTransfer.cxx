@@ -277,7 +277,7 @@ void ClusterLinks::Descend(std::uint32_t position, const void* aboveExpansion, c
   std::vector<Carried> down;
   for (const Carried& l : carried)
   {
-    switch (FacingOf(*l.Link, l.Origin, this->InternalBounds[i]))
+    switch (this->FacingAt(l, i))
     {
       case Facing::All:
         here.Add(cluster_detail::FactorAt(l.Link->Factor, l.Link->Gradient, here.Centre - l.Origin), l.Link->Gradient,
@@ -319,6 +319,17 @@ void ClusterLinks::Descend(std::uint32_t position, const void* aboveExpansion, c
   }
 }
 
+ClusterLinks::Facing ClusterLinks::FacingAt(const Carried& l, std::size_t internal) const
+{
+  std::vector<Facing>& decisions = this->FacingDecisions[l.Link->Straddling];
+  if (this->FacingRecorded)
+  {
+    return decisions[this->FacingCursor[l.Link->Straddling]++];
+  }
+  decisions.push_back(FacingOf(*l.Link, l.Origin, this->InternalBounds[internal]));
+  return decisions.back();
+}
+
 void ClusterLinks::Gather(std::vector<RGB>& triangleIrradiance, std::vector<RGB>& elementIrradiance) const
 {
   const std::size_t elements = this->Mesh.Elements().size();
@@ -327,8 +338,10 @@ void ClusterLinks::Gather(std::vector<RGB>& triangleIrradiance, std::vector<RGB>
   if (!this->ToClusters.empty())
   {
     const Expansion none;
+    std::fill(this->FacingCursor.begin(), this->FacingCursor.end(), 0u);
     tbb::parallel_for(std::size_t(0), this->RootPositions.size(),
       [&](std::size_t r) { this->Descend(this->RootPositions[r], &none, {}, triangleIrradiance); });
+    this->FacingRecorded = true;
   }
   const std::size_t indexed = std::min(elements, this->ElementOffsets.empty() ? 0 : this->ElementOffsets.size() - 1);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, indexed, 256), [&](const tbb::blocked_range<std::size_t>& range) {
