@@ -268,19 +268,10 @@ void ClusterLinks::Pull(std::uint32_t position)
   {
     return;
   }
-  const std::uint32_t first = position + 1, second = this->Preorder[first].End;
-  if (node.End - position > 2 * 4096)
-  {
-    tbb::parallel_invoke([&]() { this->Pull(first); }, [&]() { this->Pull(second); });
-  }
-  else
-  {
-    this->Pull(first);
-    this->Pull(second);
-  }
+  this->VisitChildren(position, true, [this](std::uint32_t child) { this->Pull(child); });
   RGB sum(0.0);
   double area = 0.0;
-  for (std::uint32_t child : { first, second })
+  for (std::uint32_t child : this->ChildPositions(position))
   {
     const double a = this->Preorder[child].Area;
     sum += a * this->Radiosity[this->Preorder[child].Id];

@@ -68,6 +68,7 @@
 #include "Radiosity/Common/SolverTypes.h"
 
 #include <glm/vec3.hpp>
+#include <tbb/parallel_invoke.h>
 
 #include <array>
 #include <cstdint>
@@ -289,6 +290,29 @@ private:
   /// The area-mean radiosity of the clusters of the subtree at `position`
   /// of Preorder, its children's first (PullRadiosity).
   void Pull(std::uint32_t position);
+  /// The positions of the two children of the internal node at `position`
+  /// of Preorder: the first follows its parent, the second the first's subtree.
+  std::array<std::uint32_t, 2> ChildPositions(std::uint32_t position) const
+  {
+    return { position + 1, this->Preorder[position + 1].End };
+  }
+  /// `visit` on both children of the internal node at `position`, in
+  /// parallel where `parallel` and its subtree has over 4096 triangles (a
+  /// subtree of n triangles has 2 n - 1 nodes).
+  template <typename Visit>
+  void VisitChildren(std::uint32_t position, bool parallel, const Visit& visit) const
+  {
+    const std::array<std::uint32_t, 2> c = this->ChildPositions(position);
+    if (parallel && this->Preorder[position].End - position > 2 * 4096)
+    {
+      tbb::parallel_invoke([&]() { visit(c[0]); }, [&]() { visit(c[1]); });
+    }
+    else
+    {
+      visit(c[0]);
+      visit(c[1]);
+    }
+  }
   std::vector<DescentNode> Preorder;
   std::vector<std::uint32_t> RootPositions; ///< per root, its position in Preorder
   std::vector<Bounds> InternalBounds; ///< per internal cluster (id - Triangles)

@@ -304,19 +304,10 @@ void ClusterLinks::Descend(std::uint32_t position, const void* aboveExpansion, c
       here.Add(Vec3(l.Factor), l.Gradient, this->RadiosityOf(l.Source));
     }
   }
-  // The first child follows its parent; the second, the first's subtree.
-  const std::uint32_t first = position + 1, second = this->Preorder[first].End;
-  // A subtree of n triangles has 2 n - 1 nodes.
-  if (down.empty() && node.End - position > 2 * 4096)
-  {
-    tbb::parallel_invoke([&]() { this->Descend(first, &here, down, out); },
-      [&]() { this->Descend(second, &here, down, out); });
-  }
-  else
-  {
-    this->Descend(first, &here, down, out);
-    this->Descend(second, &here, down, out);
-  }
+  // In parallel only without carried links: a link's subtree is walked by
+  // one thread, in the order its recorded decisions replay (FacingAt).
+  this->VisitChildren(
+    position, down.empty(), [&](std::uint32_t child) { this->Descend(child, &here, down, out); });
 }
 
 ClusterLinks::Facing ClusterLinks::FacingAt(const Carried& l, std::size_t internal) const

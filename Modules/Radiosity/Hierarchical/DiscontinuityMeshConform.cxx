@@ -31,6 +31,19 @@ double EdgeDistance(const Vec3& p, const Vec3& a, const Vec3& b, bool& inside, d
   return glm::length(p - (a + std::clamp(t, 0.0, 1.0) * ab));
 }
 
+int LeafEdgeOf(const TriangleCorners& corners, double tolerance, const Vec3& x)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    bool inside = false;
+    if (EdgeDistance(x, corners[k], corners[(k + 1) % 3], inside, 0.0) < tolerance)
+    {
+      return k;
+    }
+  }
+  return -1;
+}
+
 namespace
 {
 /// The vertices of leaf i's triangulation on its boundary (its corners first).
@@ -42,12 +55,7 @@ void BoundaryVertices(const HierarchicalRadiosity& s, std::uint32_t leaf, const 
   for (std::size_t v = 0; v < w.Mesh.Points.size(); ++v)
   {
     const Vec3& p = w.Mesh.Points[v];
-    bool inside = false, onEdge = v < 3;
-    for (int k = 0; k < 3 && !onEdge; ++k)
-    {
-      onEdge = EdgeDistance(p, c[k], c[(k + 1) % 3], inside, 0.0) < tol;
-    }
-    if (onEdge)
+    if (v < 3 || LeafEdgeOf(c, tol, p) >= 0)
     {
       visit(p);
     }

@@ -26,11 +26,6 @@ namespace discontinuity_mesh_detail
 {
 namespace
 {
-std::uint64_t EdgeKey(std::uint32_t a, std::uint32_t b)
-{
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
-
 /// The key is the position and the surface's normal: a point on a contact
 /// line belongs to both surfaces, with a different irradiance on each.
 using SampleKey = std::array<std::int64_t, 6>;
@@ -62,18 +57,7 @@ void ListSamples(const HierarchicalRadiosity& s, std::uint32_t leaf, LeafWork& w
 {
   const TriangleCorners corners = s.Corners(leaf);
   const double tolerance = 1e-7 * s.Mesh().LongestEdge(leaf);
-  // The leaf edge a point lies on, or -1.
-  auto edgeOf = [&](const Vec3& x) {
-    for (int k = 0; k < 3; ++k)
-    {
-      bool inside = false;
-      if (EdgeDistance(x, corners[k], corners[(k + 1) % 3], inside, 0.0) < tolerance)
-      {
-        return k;
-      }
-    }
-    return -1;
-  };
+  auto edgeOf = [&](const Vec3& x) { return LeafEdgeOf(corners, tolerance, x); };
   auto shared = [&](std::uint32_t a, std::uint32_t b) {
     w.SharedCandidates.push_back({ a, b });
     return SampleRef{ true, static_cast<std::uint32_t>(w.SharedCandidates.size() - 1) };

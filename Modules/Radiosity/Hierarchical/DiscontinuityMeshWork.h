@@ -71,6 +71,16 @@ private:
 /// (more than `margin` from either end).
 double EdgeDistance(const Vec3& p, const Vec3& a, const Vec3& b, bool& inside, double margin);
 
+/// The edge (a, b) of a triangulation as one key, whichever way it runs.
+inline std::uint64_t EdgeKey(std::uint32_t a, std::uint32_t b)
+{
+  return (static_cast<std::uint64_t>(a < b ? a : b) << 32) | (a < b ? b : a);
+}
+
+/// The edge of the leaf triangle `corners` that x lies on (within
+/// 1e-7 of the leaf's longest edge, `tolerance`), or -1.
+int LeafEdgeOf(const TriangleCorners& corners, double tolerance, const Vec3& x);
+
 /// Inserts into each leaf's triangulation the neighbours' boundary vertices
 /// that lie on its edges (no T-junctions); returns the leaves changed.
 std::size_t ConformBoundaries(

@@ -25,11 +25,6 @@ using namespace discontinuity_mesh_detail;
 
 namespace
 {
-std::uint64_t EdgeKey(std::uint32_t a, std::uint32_t b)
-{
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
-
 /// On a leaf's boundary a sample can lie in a neighbour's plane (a contact
 /// edge, the shared edge of a tessellated sphere), where the form factor of
 /// that neighbour jumps to 0; the interpolant needs the limit from inside the
