@@ -28,6 +28,7 @@ DirectLighting::DirectLighting(const Scene& scene, int skySamples, const Visibil
   , Occluders(occluders)
 {
   this->SkySampleCount = std::max(skySamples, 4);
+  this->SkyLattice = MakeSkyLattice(this->SkySampleCount);
   if (!scene.Triangles.empty())
   {
     Vec3 lo, hi;
@@ -90,18 +91,30 @@ RGB DirectLighting::Punctual(const Vec3& x, const Vec3& n) const
 
 namespace
 {
-/// Direction i of m of the sky quadrature about normal n (frame t, b).
+/// Direction i of m of the sky quadrature in the frame (t, b, n): its
+/// coordinates there are SkyLattice's entry i.
+Vec3 SkyDirection(const Vec3& local, const Vec3& t, const Vec3& b, const Vec3& n)
+{
+  return local.x * t + local.y * b + local.z * n;
+}
+}
+
 /// Malley: a point of the Fibonacci lattice of the unit square -> the disc
 /// -> the hemisphere. A lattice, not a grid of stratum centres: a grid's rows
 /// and columns alias with straight aperture edges (a window seen from inside
-/// was 15% off at 1024 samples, converging erratically).
-Vec3 SkyDirection(int i, int m, const Vec3& t, const Vec3& b, const Vec3& n)
+/// was 15% off at 1024 samples, converging erratically). Tabulated once:
+/// every sky point of a solve turns the same m directions into its frame.
+std::vector<Vec3> DirectLighting::MakeSkyLattice(int m)
 {
-  const double u1 = (i + 0.5) / m;
-  const double u2 = std::fmod(i * 0.6180339887498949, 1.0);
-  const double r = std::sqrt(u1), phi = 2.0 * Pi * u2;
-  return r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(1.0 - u1) * n;
-}
+  std::vector<Vec3> lattice(static_cast<std::size_t>(m));
+  for (int i = 0; i < m; ++i)
+  {
+    const double u1 = (i + 0.5) / m;
+    const double u2 = std::fmod(i * 0.6180339887498949, 1.0);
+    const double r = std::sqrt(u1), phi = 2.0 * Pi * u2;
+    lattice[static_cast<std::size_t>(i)] = Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0 - u1));
+  }
+  return lattice;
 }
 
 void DirectLighting::SkyVisibility(const Vec3& x, const Vec3& n, std::uint64_t* mask) const
@@ -115,7 +128,7 @@ void DirectLighting::SkyVisibility(const Vec3& x, const Vec3& n, std::uint64_t* 
   std::vector<Vec3> from(m, origin), to(m);
   for (int i = 0; i < m; ++i)
   {
-    to[i] = x + far * SkyDirection(i, m, t, b, n);
+    to[i] = x + far * SkyDirection(this->SkyLattice[static_cast<std::size_t>(i)], t, b, n);
   }
   std::vector<unsigned char> visible(m, 0);
   this->Occluders->TestSegments(from.data(), to.data(), from.size(), visible.data());
@@ -138,7 +151,7 @@ DirectLighting::SkyMoments DirectLighting::SkyMomentsOf(const Vec3& n, const std
   {
     if (mask[i / 64] >> (i % 64) & 1)
     {
-      const double c = glm::dot(SkyDirection(i, m, t, b, n), this->Set.SkyLight.Up);
+      const double c = glm::dot(SkyDirection(this->SkyLattice[static_cast<std::size_t>(i)], t, b, n), this->Set.SkyLight.Up);
       if (c > 0.0)
       {
         out.Count += 1.0;
@@ -177,14 +190,16 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
   const int m = this->SkySampleCount;
   const double far = this->FarDistance(x);
   const Vec3 origin = this->RayOrigin(x, n);
-  std::vector<Vec3> from, to;
-  std::vector<RGB> radiance;
-  from.reserve(m);
-  to.reserve(m);
-  radiance.reserve(m);
+  // Per thread, kept between calls: the mesher asks this of every sample.
+  thread_local std::vector<Vec3> from, to;
+  thread_local std::vector<RGB> radiance;
+  thread_local std::vector<unsigned char> visible;
+  from.clear();
+  to.clear();
+  radiance.clear();
   for (int i = 0; i < m; ++i)
   {
-    const Vec3 w = SkyDirection(i, m, t, b, n);
+    const Vec3 w = SkyDirection(this->SkyLattice[static_cast<std::size_t>(i)], t, b, n);
     const RGB l = SkyRadiance(sky, w);
     if (MaxComponent(l) > 0.0)
     {
@@ -193,7 +208,7 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
       radiance.push_back(l);
     }
   }
-  std::vector<unsigned char> visible(from.size(), 0);
+  visible.assign(from.size(), 0);
   this->Occluders->TestSegments(from.data(), to.data(), from.size(), visible.data());
   RGB sum(0.0);
   for (std::size_t k = 0; k < from.size(); ++k)

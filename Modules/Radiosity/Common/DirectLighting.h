@@ -153,6 +153,9 @@ private:
   const Scene& SourceScene;
   LightSet Set;
   int SkySampleCount = 256;
+  /// The sky quadrature's directions in a normal's frame (MakeSkyLattice).
+  std::vector<Vec3> SkyLattice;
+  static std::vector<Vec3> MakeSkyLattice(int m);
   Vec3 Centre{ 0.0 };
   double Extent = 1.0;
   std::unique_ptr<Visibility> OwnOccluders;

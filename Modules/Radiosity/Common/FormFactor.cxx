@@ -116,29 +116,42 @@ double PointToPolygonFormFactor(const Vec3& p, const Vec3& n, const Vec3* poly, 
   {
     return 0.0;
   }
-  ClipBuffer buffer(count);
-  Vec3* clipped = buffer.data();
-  const std::size_t m = ClipToHemisphere(p, n, poly, count, clipped);
+  // A polygon wholly above the receiver's horizon is its own clip (the
+  // mesher's samples see hundreds of such sources each): no copy then.
+  bool above = true;
+  for (std::size_t i = 0; i < count && above; ++i)
+  {
+    above = glm::dot(poly[i] - p, n) >= 0;
+  }
+  ClipBuffer buffer(above ? 0 : count);
+  const Vec3* clipped = poly;
+  std::size_t m = count;
+  if (!above)
+  {
+    m = ClipToHemisphere(p, n, poly, count, buffer.data());
+    clipped = buffer.data();
+  }
   if (m < 3)
   {
     return 0.0;
   }
   // Lambert's contour integral: F = 1/(2 pi) sum_i theta_i n . unit(R_i x R_i+1).
   double sum = 0.0;
+  Vec3 a = clipped[0] - p;
+  const Vec3 first = a;
   for (std::size_t i = 0; i < m; ++i)
   {
-    const Vec3 a = clipped[i] - p;
-    const Vec3 b = clipped[(i + 1) % m] - p;
+    const Vec3 b = i + 1 < m ? clipped[i + 1] - p : first;
     const Vec3 c = glm::cross(a, b);
     const double cl = glm::length(c);
-    if (cl <= 0.0)
+    if (cl > 0.0)
     {
-      // The receiver lies on this edge's line: approached from the receiver's
-      // side the edge's plane contains n, so the edge contributes nothing.
-      continue;
+      const double theta = std::atan2(cl, glm::dot(a, b));
+      sum += theta * glm::dot(n, c) / cl;
     }
-    const double theta = std::atan2(cl, glm::dot(a, b));
-    sum += theta * glm::dot(n, c) / cl;
+    // else: the receiver lies on this edge's line; approached from the
+    // receiver's side the edge's plane contains n, so it contributes nothing.
+    a = b;
   }
   return std::fabs(sum) / (2.0 * Pi);
 }

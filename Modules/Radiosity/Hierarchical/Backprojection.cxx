@@ -36,7 +36,7 @@ double SignedArea(const Polygon2& p)
   for (int i = 0; i < p.N; ++i)
   {
     const Point2& u = p.V[i];
-    const Point2& v = p.V[(i + 1) % p.N];
+    const Point2& v = p.V[i + 1 < p.N ? i + 1 : 0];
     a += u.X * v.Y - v.X * u.Y;
   }
   return 0.5 * a;
@@ -44,15 +44,23 @@ double SignedArea(const Polygon2& p)
 
 // Sutherland-Hodgman split by the line a->b into its left and right parts in
 // one pass; false when a part would not fit (the caller stops subtracting).
+// Each corner's side is computed once (the pass visits it as both ends of
+// an edge).
 bool SplitByLine(const Polygon2& in, const Point2& a, const Point2& b, Polygon2& left, Polygon2& right)
 {
   left.N = right.N = 0;
+  double side[Polygon2::Capacity];
   for (int i = 0; i < in.N; ++i)
   {
+    side[i] = Cross(a, b, in.V[i]);
+  }
+  for (int i = 0; i < in.N; ++i)
+  {
+    const int j = i + 1 < in.N ? i + 1 : 0;
     const Point2& p = in.V[i];
-    const Point2& q = in.V[(i + 1) % in.N];
-    const double dp = Cross(a, b, p);
-    const double dq = Cross(a, b, q);
+    const Point2& q = in.V[j];
+    const double dp = side[i];
+    const double dq = side[j];
     if (left.N + 2 > Polygon2::Capacity || right.N + 2 > Polygon2::Capacity)
     {
       return false;
@@ -123,12 +131,16 @@ struct Box2
 bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::vector<Polygon2>& out)
 {
   const std::size_t first = out.size();
-  Polygon2 rest = piece, inside, outside;
-  for (int i = 0; i < hole.N && rest.N >= 3; ++i)
+  // What is left inside the hole's edges so far: the piece, then one of two
+  // buffers in turn (no copy per edge).
+  Polygon2 buffers[2], outside;
+  const Polygon2* rest = &piece;
+  for (int i = 0; i < hole.N && rest->N >= 3; ++i)
   {
     const Point2& a = hole.V[i];
-    const Point2& b = hole.V[(i + 1) % hole.N];
-    if (!SplitByLine(rest, a, b, inside, outside))
+    const Point2& b = hole.V[i + 1 < hole.N ? i + 1 : 0];
+    Polygon2& inside = buffers[i & 1];
+    if (!SplitByLine(*rest, a, b, inside, outside))
     {
       out.resize(first);
       out.push_back(piece);
@@ -138,7 +150,7 @@ bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::
     {
       out.push_back(outside);
     }
-    rest = inside;
+    rest = &inside;
   }
   return true;
 }

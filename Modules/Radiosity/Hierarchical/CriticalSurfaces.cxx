@@ -61,6 +61,9 @@ struct Receiver
   Vec3 Normal;                ///< unit normal of the receiver plane
   std::array<HalfPlane, 3> Edge;
   double Tolerance; ///< a length small against the scene
+  /// A plane farther than this from every corner misses the receiver, however
+  /// the trace rounds (far above Tolerance, far below any element).
+  double PlaneMargin;
 };
 
 bool IsFinite(const Vec3& v)
@@ -164,12 +167,24 @@ double GeometricFactor(const Receiver& r, const Vec3& s0, const Vec3& b0, const 
 }
 
 /// The cone with apex `apex` spanned by d0 and d1, as a plane and two
-/// half-planes; false when it is degenerate.
-bool ConeHalfPlanes(const Vec3& apex, const Vec3& d0, const Vec3& d1, Vec3& normal, HalfPlane* hp)
+/// half-planes; false when it is degenerate or its plane misses the receiver.
+bool ConeHalfPlanes(
+  const Receiver& r, const Vec3& apex, const Vec3& d0, const Vec3& d1, Vec3& normal, HalfPlane* hp)
 {
   const Vec3 m = glm::cross(d0, d1);
   const double ml = glm::length(m);
   if (!(ml > kDegenerateSine * glm::length(d0) * glm::length(d1)))
+  {
+    return false;
+  }
+  // Most wedges pass beside the receiver: its three corners on one side of
+  // the wedge's plane, farther than any rounding of the trace, leave nothing
+  // to trace (the half-planes below are not needed then).
+  const double margin = r.PlaneMargin * ml;
+  const double s0 = glm::dot(m, r.Corner[0] - apex);
+  const double s1 = glm::dot(m, r.Corner[1] - apex);
+  const double s2 = glm::dot(m, r.Corner[2] - apex);
+  if ((s0 > margin && s1 > margin && s2 > margin) || (s0 < -margin && s1 < -margin && s2 < -margin))
   {
     return false;
   }
@@ -254,6 +269,7 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
   const double givenLength = glm::length(receiverNormal);
   r.Normal = (givenLength > 0.0 && std::isfinite(givenLength)) ? receiverNormal / givenLength : nT;
   r.Tolerance = 1e-12 * scale;
+  r.PlaneMargin = 1e-9 * scale;
   for (int i = 0; i < 3; ++i)
   {
     const Vec3 edge = r.Corner[(i + 1) % 3] - r.Corner[i];
@@ -308,7 +324,7 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
     const Vec3 edgeDir = e[1] - e[0];
     for (const Vec3& v : src)
     {
-      if (!detail::ConeHalfPlanes(v, e[0] - v, e[1] - v, planeNormal, hp))
+      if (!detail::ConeHalfPlanes(r, v, e[0] - v, e[1] - v, planeNormal, hp))
       {
         continue;
       }
@@ -338,7 +354,7 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
       }
       const Vec3& p = src[i];
       const Vec3& q = src[(i + 1) % 3];
-      if (!detail::ConeHalfPlanes(bv, bv - p, bv - q, planeNormal, hp))
+      if (!detail::ConeHalfPlanes(r, bv, bv - p, bv - q, planeNormal, hp))
       {
         continue;
       }
