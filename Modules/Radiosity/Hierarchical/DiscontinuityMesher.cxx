@@ -101,16 +101,35 @@ public:
   }
 
 private:
-  /// The triangles that have the edge (in triangle order).
-  std::vector<std::uint32_t> Sharing(std::uint64_t edge) const
+  /// The triangles that have the edge (in triangle order), as a range of
+  /// Edges (no allocation: the silhouettes ask this for every blocker edge).
+  struct Range
   {
-    std::vector<std::uint32_t> out;
-    for (auto it = std::lower_bound(this->Edges.begin(), this->Edges.end(), std::make_pair(edge, std::uint32_t(0)));
-         it != this->Edges.end() && it->first == edge; ++it)
+    using Iterator = std::vector<std::pair<std::uint64_t, std::uint32_t>>::const_iterator;
+    Iterator First, Last;
+    struct Triangles
     {
-      out.push_back(it->second);
+      Iterator It;
+      std::uint32_t operator*() const { return this->It->second; }
+      Triangles& operator++()
+      {
+        ++this->It;
+        return *this;
+      }
+      bool operator!=(const Triangles& o) const { return this->It != o.It; }
+    };
+    Triangles begin() const { return { this->First }; }
+    Triangles end() const { return { this->Last }; }
+  };
+  Range Sharing(std::uint64_t edge) const
+  {
+    const auto first = std::lower_bound(this->Edges.begin(), this->Edges.end(), std::make_pair(edge, std::uint32_t(0)));
+    auto last = first;
+    while (last != this->Edges.end() && last->first == edge)
+    {
+      ++last;
     }
-    return out;
+    return { first, last };
   }
 
   const Scene& SourceScene;
