@@ -2,6 +2,7 @@
 
 #include "Radiosity/Hierarchical/CriticalSurfaces.h"
 #include "Radiosity/Hierarchical/DiscontinuityMeshWork.h"
+#include "Radiosity/Hierarchical/EdgeTopology.h"
 #include "Radiosity/Hierarchical/HardShadowEdges.h"
 #include "Radiosity/Hierarchical/LinkChain.h"
 #include "Radiosity/Common/FormFactor.h"
@@ -34,107 +35,6 @@ Vec3 Inside(const Vec3& x, const Vec3& centroid)
   return x + 1e-7 * (centroid - x);
 }
 
-
-/// Which edges of the input are silhouettes: an edge shared with a coplanar
-/// triangle of the same emission (the diagonal of a quad) bounds nothing.
-class EdgeTopology
-{
-public:
-  explicit EdgeTopology(const Scene& scene)
-    : SourceScene(scene)
-    , Edges(3 * scene.Triangles.size())
-  {
-    tbb::parallel_for(std::size_t(0), scene.Triangles.size(), [&](std::size_t t) {
-      for (int k = 0; k < 3; ++k)
-      {
-        this->Edges[3 * t + k] = { EdgeKey(scene.Triangles[t].V[k], scene.Triangles[t].V[(k + 1) % 3]),
-          static_cast<std::uint32_t>(t) };
-      }
-    });
-    tbb::parallel_sort(this->Edges.begin(), this->Edges.end());
-  }
-
-  bool Coplanar(std::uint32_t a, std::uint32_t b) const
-  {
-    const Vec3 na = this->SourceScene.Normal(a), nb = this->SourceScene.Normal(b);
-    return glm::dot(na, nb) > 1.0 - 1e-9;
-  }
-
-  /// Edge k of source triangle t lies inside a larger emitting polygon.
-  bool InteriorEmitterEdge(std::uint32_t t, int k) const
-  {
-    const Triangle& tri = this->SourceScene.Triangles[t];
-    for (std::uint32_t o : this->Sharing(EdgeKey(tri.V[k], tri.V[(k + 1) % 3])))
-    {
-      if (o != t && this->Coplanar(o, t) &&
-        this->SourceScene.Materials[o].Emission == this->SourceScene.Materials[t].Emission)
-      {
-        return true;
-      }
-    }
-    return false;
-  }
-
-  /// The edges of a blocker set that are not shared by two coplanar members.
-  std::vector<BlockerEdge> Silhouette(const std::vector<std::uint32_t>& blockers) const
-  {
-    std::vector<BlockerEdge> out;
-    for (std::uint32_t b : blockers)
-    {
-      const Triangle& tri = this->SourceScene.Triangles[b];
-      for (int k = 0; k < 3; ++k)
-      {
-        bool interior = false;
-        for (std::uint32_t o : this->Sharing(EdgeKey(tri.V[k], tri.V[(k + 1) % 3])))
-        {
-          interior = interior ||
-            (o != b && this->Coplanar(o, b) &&
-              std::binary_search(blockers.begin(), blockers.end(), o));
-        }
-        if (!interior)
-        {
-          out.push_back({ this->SourceScene.Points[tri.V[k]], this->SourceScene.Points[tri.V[(k + 1) % 3]] });
-        }
-      }
-    }
-    return out;
-  }
-
-private:
-  /// The triangles that have the edge (in triangle order), as a range of
-  /// Edges (no allocation: the silhouettes ask this for every blocker edge).
-  struct Range
-  {
-    using Iterator = std::vector<std::pair<std::uint64_t, std::uint32_t>>::const_iterator;
-    Iterator First, Last;
-    struct Triangles
-    {
-      Iterator It;
-      std::uint32_t operator*() const { return this->It->second; }
-      Triangles& operator++()
-      {
-        ++this->It;
-        return *this;
-      }
-      bool operator!=(const Triangles& o) const { return this->It != o.It; }
-    };
-    Triangles begin() const { return { this->First }; }
-    Triangles end() const { return { this->Last }; }
-  };
-  Range Sharing(std::uint64_t edge) const
-  {
-    const auto first = std::lower_bound(this->Edges.begin(), this->Edges.end(), std::make_pair(edge, std::uint32_t(0)));
-    auto last = first;
-    while (last != this->Edges.end() && last->first == edge)
-    {
-      ++last;
-    }
-    return { first, last };
-  }
-
-  const Scene& SourceScene;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> Edges; ///< (edge key, triangle), sorted
-};
 
 /// The kept discontinuity segments of one leaf (section 4.2).
 std::vector<std::array<Vec3, 2>> LeafDiscontinuities(const HierarchicalRadiosity& s,
