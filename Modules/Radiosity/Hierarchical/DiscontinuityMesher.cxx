@@ -12,6 +12,7 @@
 #include "Radiosity/Common/ThreadLimit.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
@@ -358,15 +359,25 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       triangleStart[i + 1] = triangleStart[i] + w.Mesh.Triangles.size();
       punctualStart[i + 1] = punctualStart[i] + (w.PunctualNodes.empty() ? 0 : w.Mesh.Triangles.size());
     }
-    out.Points.resize(pointStart.back());
-    out.PointIrradiance.resize(pointStart.back());
-    out.Triangles.resize(triangleStart.back());
-    out.Interpolants.resize(triangleStart.back());
-    out.PunctualInterpolants.resize(punctualStart.back());
-    out.Leaf.resize(triangleStart.back());
-    out.SourceTriangle.resize(triangleStart.back());
-    out.Level.resize(triangleStart.back());
-    out.Normals.resize(triangleStart.back());
+    // Each array's first touch (page faults and zeroing: 1.2 s on one
+    // thread for the 1.5M bunny room) beside the others; the interpolants
+    // are the largest.
+    const std::size_t points = pointStart.back(), triangles = triangleStart.back();
+    tbb::parallel_invoke([&] { out.Interpolants.resize(triangles); },
+      [&] { out.PunctualInterpolants.resize(punctualStart.back()); },
+      [&] {
+        out.Points.resize(points);
+        out.PointIrradiance.resize(points);
+      },
+      [&] {
+        out.Triangles.resize(triangles);
+        out.Normals.resize(triangles);
+      },
+      [&] {
+        out.Leaf.resize(triangles);
+        out.SourceTriangle.resize(triangles);
+        out.Level.resize(triangles);
+      });
     tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
       LeafWork& w = work[i];
       const Element& el = mesh[leaves[i]];
