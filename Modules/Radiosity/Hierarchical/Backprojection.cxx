@@ -8,22 +8,52 @@
 
 namespace radiosity
 {
+namespace backprojection_detail
+{
+SourceFrame::SourceFrame(const TriangleCorners& source)
+  : Source(source)
+{
+  const Vec3 e1 = source[1] - source[0];
+  const Vec3 e2 = source[2] - source[0];
+  const Vec3 cross = glm::cross(e1, e2);
+  const double twiceArea = glm::length(cross);
+  if (!(twiceArea > 0))
+  {
+    return;
+  }
+  this->Valid = true;
+  this->M = cross / twiceArea;
+  this->PlaneOffset = glm::dot(source[0], this->M);
+  this->U = e1 / glm::length(e1);
+  this->V = glm::cross(this->M, this->U);
+  const double sourceArea = 0.5 * twiceArea;
+  this->MinArea = 1e-14 * sourceArea;
+  for (const Vec3& p : source)
+  {
+    this->Whole.Push(this->To2(p));
+  }
+}
+
+void BlockerLevels::FindLevels(const Vec3& m)
+{
+  double lowest = 1e300, highest = -1e300;
+  for (int i = 0; i < this->Size; ++i)
+  {
+    const double l = glm::dot(this->Corner[i], m);
+    lowest = std::min(lowest, l);
+    highest = std::max(highest, l);
+  }
+  this->Lowest = lowest;
+  this->Highest = highest;
+}
+} // namespace backprojection_detail
+
 namespace
 {
-struct Point2
-{
-  double X, Y;
-};
-
-/// A convex polygon in the source plane with a fixed capacity: fragments are
-/// clipped millions of times, and heap allocation dominated the cost.
-struct Polygon2
-{
-  static constexpr int Capacity = 16;
-  Point2 V[Capacity];
-  int N = 0;
-  void Push(const Point2& p) { V[N++] = p; }
-};
+using backprojection_detail::BlockerLevels;
+using backprojection_detail::Point2;
+using backprojection_detail::Polygon2;
+using backprojection_detail::SourceFrame;
 
 double Cross(const Point2& o, const Point2& a, const Point2& b)
 {
@@ -154,26 +184,22 @@ bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::
   }
   return true;
 }
-// The backprojection for blockers of up to four corners; corners(b, out)
-// writes blocker b's corners to out and returns how many.
-template <typename Corners>
-double VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& source,
-  std::size_t blockerCount, const Corners& corners, bool* exact, std::size_t fragmentsLimit)
+// The visible form factor at x through the blockers that blockerAt(b)
+// returns (BlockerLevels), for the source of `frame`.
+template <typename BlockerAt>
+double VisibleFromPoint(const SourceFrame& frame, const Vec3& x, const Vec3& n, std::size_t blockerCount,
+  const BlockerAt& blockerAt, bool* exact, std::size_t fragmentsLimit)
 {
   if (exact)
   {
     *exact = true;
   }
-  const Vec3 e1 = source[1] - source[0];
-  const Vec3 e2 = source[2] - source[0];
-  const Vec3 cross = glm::cross(e1, e2);
-  const double twiceArea = glm::length(cross);
-  if (!(twiceArea > 0))
+  if (!frame.Valid)
   {
     return 0.0;
   }
-  const Vec3 m = cross / twiceArea;
-  const double planeOffset = glm::dot(source[0], m);
+  const Vec3& m = frame.M;
+  const double planeOffset = frame.PlaneOffset;
   const double height = glm::dot(x, m) - planeOffset;
   if (!(height > 0))
   {
@@ -181,29 +207,13 @@ double VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& 
   }
   if (blockerCount == 0)
   {
-    return PointToPolygonFormFactor(x, n, source.data(), 3);
+    return PointToPolygonFormFactor(x, n, frame.Source.data(), 3);
   }
 
-  // 2D frame in the source plane.
-  const Vec3 u = e1 / glm::length(e1);
-  const Vec3 v = glm::cross(m, u);
-  auto to2 = [&](const Vec3& p) {
-    const Vec3 d = p - source[0];
-    return Point2{ glm::dot(d, u), glm::dot(d, v) };
-  };
-  auto to3 = [&](const Point2& p) { return source[0] + p.X * u + p.Y * v; };
-
-  const double sourceArea = 0.5 * twiceArea;
-  const double minArea = 1e-14 * sourceArea;
+  const double minArea = frame.MinArea;
   thread_local std::vector<Polygon2> visible, next;
   visible.clear();
-  {
-    Polygon2 whole;
-    whole.Push(to2(source[0]));
-    whole.Push(to2(source[1]));
-    whole.Push(to2(source[2]));
-    visible.push_back(whole);
-  }
+  visible.push_back(frame.Whole);
   // Blocker parts within this distance of either plane cast no shadow worth
   // a fragment (and would project to infinity at the receiver's plane).
   const double slack = 1e-9 * height;
@@ -211,32 +221,32 @@ double VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& 
 
   for (std::size_t b = 0; b < blockerCount && !visible.empty(); ++b)
   {
-    // Up to four corners, two more after each of the two clips.
-    Vec3 corner[4], poly[8], clipped[8];
-    const int size = corners(b, corner);
-    double lowest = 1e300, highest = -1e300;
-    for (int i = 0; i < size; ++i)
-    {
-      const double l = glm::dot(corner[i], m);
-      lowest = std::min(lowest, l);
-      highest = std::max(highest, l);
-    }
+    const BlockerLevels& blocker = blockerAt(b);
     const double lo = planeOffset + slack, hi = xLevel - slack;
-    if (highest <= lo || lowest >= hi)
+    if (blocker.Highest <= lo || blocker.Lowest >= hi)
     {
       continue; // wholly behind the source or behind the point
     }
-    int n = ClipPlane(corner, size, m, lo, clipped);
-    n = ClipPlane(clipped, n, -m, -hi, poly);
-    if (n < 3)
+    // Up to four corners, two more after each of the two clips; a blocker
+    // wholly between the planes is its own clip.
+    Vec3 clipped[8], poly[8];
+    const Vec3* shadowCorners = blocker.Corner;
+    int n3 = blocker.Size;
+    if (!(blocker.Lowest > lo && blocker.Highest < hi))
+    {
+      n3 = ClipPlane(blocker.Corner, blocker.Size, m, lo, clipped);
+      n3 = ClipPlane(clipped, n3, -m, -hi, poly);
+      shadowCorners = poly;
+    }
+    if (n3 < 3)
     {
       continue;
     }
     Polygon2 shadow;
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < n3; ++i)
     {
-      const double t = height / (xLevel - glm::dot(poly[i], m));
-      shadow.Push(to2(x + t * (poly[i] - x)));
+      const double t = height / (xLevel - glm::dot(shadowCorners[i], m));
+      shadow.Push(frame.To2(x + t * (shadowCorners[i] - x)));
     }
     const double area = SignedArea(shadow);
     if (std::abs(area) <= minArea)
@@ -278,7 +288,7 @@ double VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& 
   {
     for (int i = 0; i < piece.N; ++i)
     {
-      poly3[i] = to3(piece.V[i]);
+      poly3[i] = frame.To3(piece.V[i]);
     }
     // The contour kernel takes up to 8 vertices; larger convex fragments as fans.
     if (piece.N <= 8)
@@ -295,7 +305,45 @@ double VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& 
   }
   return std::max(0.0, factor);
 }
+
+// The backprojection for blockers of up to four corners; corners(b, out)
+// writes blocker b's corners to out and returns how many. Each blocker's
+// levels are found when the loop reaches it (it stops once nothing is left).
+template <typename Corners>
+double VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+  std::size_t blockerCount, const Corners& corners, bool* exact, std::size_t fragmentsLimit)
+{
+  const SourceFrame frame(source);
+  BlockerLevels current;
+  return VisibleFromPoint(frame, x, n, blockerCount,
+    [&](std::size_t b) -> const BlockerLevels& {
+      current.Size = corners(b, current.Corner);
+      current.FindLevels(frame.M);
+      return current;
+    },
+    exact, fragmentsLimit);
+}
 } // namespace
+
+PreparedVisibleFormFactor::PreparedVisibleFormFactor(
+  const TriangleCorners& source, const BlockerPolygon* blockers, std::size_t count)
+  : Frame(source)
+  , Blockers(count)
+{
+  for (std::size_t b = 0; b < count; ++b)
+  {
+    BlockerLevels& levels = this->Blockers[b];
+    std::copy(blockers[b].Corners.begin(), blockers[b].Corners.begin() + blockers[b].Size, levels.Corner);
+    levels.Size = blockers[b].Size;
+    levels.FindLevels(this->Frame.M);
+  }
+}
+
+double PreparedVisibleFormFactor::operator()(const Vec3& x, const Vec3& n) const
+{
+  return VisibleFromPoint(this->Frame, x, n, this->Blockers.size(),
+    [this](std::size_t b) -> const BlockerLevels& { return this->Blockers[b]; }, nullptr, 4096);
+}
 
 double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
   const TriangleCorners* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)

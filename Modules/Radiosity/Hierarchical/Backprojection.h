@@ -50,6 +50,72 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
   const BlockerPolygon* blockers, std::size_t blockerCount, bool* exact = nullptr,
   std::size_t fragmentsLimit = 4096);
 
+namespace backprojection_detail
+{
+struct Point2
+{
+  double X, Y;
+};
+
+/// A convex polygon in the source plane with a fixed capacity: fragments are
+/// clipped millions of times, and heap allocation dominated the cost.
+struct Polygon2
+{
+  static constexpr int Capacity = 16;
+  Point2 V[Capacity];
+  int N = 0;
+  void Push(const Point2& p) { V[N++] = p; }
+};
+
+/// What the backprojection needs of a source whatever the point: its plane
+/// (unit normal M, offset), a 2D frame in it (U along its first edge) and
+/// its outline there.
+struct SourceFrame
+{
+  explicit SourceFrame(const TriangleCorners& source);
+  TriangleCorners Source;
+  Vec3 M{ 0.0 }, U{ 0.0 }, V{ 0.0 };
+  double PlaneOffset = 0.0;
+  double MinArea = 0.0; ///< fragments below it are dropped
+  bool Valid = false;   ///< a source of positive area
+  Polygon2 Whole;
+  Point2 To2(const Vec3& p) const
+  {
+    const Vec3 d = p - this->Source[0];
+    return Point2{ glm::dot(d, this->U), glm::dot(d, this->V) };
+  }
+  Vec3 To3(const Point2& p) const { return this->Source[0] + p.X * this->U + p.Y * this->V; }
+};
+
+/// A blocker's corners with their lowest and highest level along a
+/// source's normal (which blockers lie between a point and the source).
+struct BlockerLevels
+{
+  Vec3 Corner[4];
+  int Size = 0;
+  double Lowest = 0.0, Highest = 0.0;
+  void FindLevels(const Vec3& m);
+};
+} // namespace backprojection_detail
+
+/**
+ * VisibleFormFactor for many points against one source and its blockers
+ * (the discontinuity mesher's samples on one leaf): the source's plane,
+ * frame and outline and the blockers' levels are found once, not per point.
+ * The value is VisibleFormFactor's to the last bit.
+ */
+class PreparedVisibleFormFactor
+{
+public:
+  PreparedVisibleFormFactor(const TriangleCorners& source, const BlockerPolygon* blockers, std::size_t count);
+  double operator()(const Vec3& x, const Vec3& n) const;
+  std::size_t BlockerCount() const { return this->Blockers.size(); }
+
+private:
+  backprojection_detail::SourceFrame Frame;
+  std::vector<backprojection_detail::BlockerLevels> Blockers;
+};
+
 /**
  * Blocker triangles (`corners`, with `vertexIds` their shared point indices)
  * as convex polygons: each pair that shares an edge, lies in one plane

@@ -21,7 +21,7 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
       {
         continue;
       }
-      ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), {}, &l, l.VisibleFraction };
+      ChainSource c{ s.Corners(l.Source), s.Radiosity(l.Source), nullptr, &l, l.VisibleFraction };
       if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut && constantPartial)
       {
         c.Constant = true;
@@ -41,7 +41,11 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
             ids.push_back(scene.Triangles[b].V);
           }
         }
-        c.Blockers = MergeCoplanarPairs(corners, ids);
+        const std::vector<BlockerPolygon> merged = MergeCoplanarPairs(corners, ids);
+        if (!merged.empty())
+        {
+          c.Blockers = std::make_unique<const PreparedVisibleFormFactor>(c.Polygon, merged.data(), merged.size());
+        }
       }
       chain.push_back(std::move(c));
     }
@@ -59,9 +63,7 @@ RGB ChainIrradiance(const std::vector<ChainSource>& chain, const Vec3& x, const 
       e += c.Link->Factor * c.Radiosity;
       continue;
     }
-    const double f = c.Blockers.empty()
-      ? PointToPolygonFormFactor(x, n, c.Polygon.data(), 3)
-      : VisibleFormFactor(x, n, c.Polygon, c.Blockers.data(), c.Blockers.size());
+    const double f = c.Blockers ? (*c.Blockers)(x, n) : PointToPolygonFormFactor(x, n, c.Polygon.data(), 3);
     e += (c.Visible * f) * c.Radiosity;
   }
   return e;

@@ -10,6 +10,7 @@
 #include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace radiosity
@@ -19,7 +20,10 @@ struct ChainSource
 {
   TriangleCorners Polygon;
   RGB Radiosity;
-  std::vector<BlockerPolygon> Blockers; ///< empty for unoccluded links; coplanar pairs merged
+  /// The backprojection through the link's blockers inside its shaft,
+  /// coplanar pairs merged, prepared for the leaf's points; null for an
+  /// unoccluded link (and when no blocker is left in the shaft).
+  std::unique_ptr<const PreparedVisibleFormFactor> Blockers;
   const HierarchicalLink* Link;
   /// A link whose blockers were cut: its sampled visible fraction scales the
   /// unoccluded form factor (HierarchicalLink::BlockersCut).
