@@ -40,18 +40,22 @@ public:
           {
             continue;
           }
-          n /= len;
+          // Which side each corner is on, against the unit normal's
+          // tolerance scaled by |n|: most of the 20 planes through three
+          // corners are not faces, and are dropped before the division.
+          const double scaledTolerance = tolerance * len;
           int above = 0, below = 0;
           for (const Vec3& v : p)
           {
             const double d = glm::dot(v - p[i], n);
-            above += d > tolerance;
-            below += d < -tolerance;
+            above += d > scaledTolerance;
+            below += d < -scaledTolerance;
           }
           if (above > 0 && below > 0)
           {
             continue;
           }
+          n /= len;
           if (above > 0)
           {
             n = -n; // outward
