@@ -173,18 +173,19 @@ bool ConeHalfPlanes(
 {
   const Vec3 m = glm::cross(d0, d1);
   const double ml = glm::length(m);
-  if (!(ml > kDegenerateSine * glm::length(d0) * glm::length(d1)))
-  {
-    return false;
-  }
   // Most wedges pass beside the receiver: its three corners on one side of
   // the wedge's plane, farther than any rounding of the trace, leave nothing
-  // to trace (the half-planes below are not needed then).
+  // to trace (the half-planes below are not needed then). Tested first: a
+  // degenerate wedge (m near 0) passes this test and fails the next.
   const double margin = r.PlaneMargin * ml;
   const double s0 = glm::dot(m, r.Corner[0] - apex);
   const double s1 = glm::dot(m, r.Corner[1] - apex);
   const double s2 = glm::dot(m, r.Corner[2] - apex);
   if ((s0 > margin && s1 > margin && s2 > margin) || (s0 < -margin && s1 < -margin && s2 < -margin))
+  {
+    return false;
+  }
+  if (!(ml > kDegenerateSine * glm::length(d0) * glm::length(d1)))
   {
     return false;
   }
@@ -281,10 +282,11 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
   {
     src[i] = source[i] - origin;
   }
-  std::vector<std::array<Vec3, 2>> edges;
-  std::vector<Vec3> vertices;
-  edges.reserve(blockerEdges.size());
-  vertices.reserve(2 * blockerEdges.size());
+  // Per thread, kept between calls (one per leaf and source).
+  thread_local std::vector<std::array<Vec3, 2>> edges;
+  thread_local std::vector<Vec3> vertices;
+  edges.clear();
+  vertices.clear();
   for (const BlockerEdge& e : blockerEdges)
   {
     if (detail::IsFinite(e.A) && detail::IsFinite(e.B))
