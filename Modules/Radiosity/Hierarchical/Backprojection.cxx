@@ -32,6 +32,7 @@ SourceFrame::SourceFrame(const TriangleCorners& source)
   {
     this->Whole.Push(this->To2(p));
   }
+  this->Size = std::max({ glm::length(e1), glm::length(e2), glm::length(source[2] - source[1]) });
 }
 
 void BlockerLevels::FindLevels(const Vec3& m)
@@ -184,8 +185,212 @@ bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::
   }
   return true;
 }
+// Blocker parts within this distance of either plane cast no shadow worth a
+// fragment (and would project to infinity at the receiver's plane): 1e-9 of
+// x's height, and no less than a clip's rounding far above the coordinates'
+// (a corner clipped 1e-14 below x's level at a height of 1e-5 and 5e3 from
+// the origin came out above it and was projected behind x).
+double SlabSlack(const SourceFrame& frame, const Vec3& x, double height)
+{
+  const double coordinates = glm::length(x) + glm::length(frame.Source[0]) + frame.Size;
+  return std::max(1e-9 * height, 1e-13 * coordinates);
+}
+
+// The shadow of `blocker` on the source's plane seen from x (at `height`
+// above it, at `xLevel` along its normal), counter-clockwise in the source's frame: the blocker clipped to
+// the slab between the two planes (less `slack`) and projected centrally from
+// x. False when it casts none (outside the slab, or seen edge-on).
+bool ShadowOf(const SourceFrame& frame, const Vec3& x, double height, double xLevel, double slack,
+  const BlockerLevels& blocker, Polygon2& shadow)
+{
+  const Vec3& m = frame.M;
+  const double lo = frame.PlaneOffset + slack, hi = xLevel - slack;
+  if (blocker.Highest <= lo || blocker.Lowest >= hi)
+  {
+    return false; // wholly behind the source or behind the point
+  }
+  // Up to four corners, two more after each of the two clips; a blocker
+  // wholly between the planes is its own clip.
+  Vec3 clipped[8], poly[8];
+  const Vec3* shadowCorners = blocker.Corner;
+  int n3 = blocker.Size;
+  if (!(blocker.Lowest > lo && blocker.Highest < hi))
+  {
+    n3 = ClipPlane(blocker.Corner, blocker.Size, m, lo, clipped);
+    n3 = ClipPlane(clipped, n3, -m, -hi, poly);
+    shadowCorners = poly;
+  }
+  if (n3 < 3)
+  {
+    return false;
+  }
+  shadow.N = 0;
+  for (int i = 0; i < n3; ++i)
+  {
+    const double t = height / (xLevel - glm::dot(shadowCorners[i], m));
+    shadow.Push(frame.To2(x + t * (shadowCorners[i] - x)));
+  }
+  const double area = SignedArea(shadow);
+  if (std::abs(area) <= frame.MinArea)
+  {
+    return false; // seen edge-on from x
+  }
+  if (area < 0)
+  {
+    std::reverse(shadow.V, shadow.V + shadow.N);
+  }
+  return true;
+}
+
+// p clipped to the left of the line a->b (Sutherland-Hodgman); false when
+// the result would not fit.
+bool ClipLeft(const Polygon2& in, const Point2& a, const Point2& b, Polygon2& out)
+{
+  out.N = 0;
+  double side[Polygon2::Capacity];
+  for (int i = 0; i < in.N; ++i)
+  {
+    side[i] = Cross(a, b, in.V[i]);
+  }
+  for (int i = 0; i < in.N; ++i)
+  {
+    const int j = i + 1 < in.N ? i + 1 : 0;
+    if (out.N + 2 > Polygon2::Capacity)
+    {
+      return false;
+    }
+    if (side[i] >= 0)
+    {
+      out.Push(in.V[i]);
+    }
+    if ((side[i] > 0 && side[j] < 0) || (side[i] < 0 && side[j] > 0))
+    {
+      const double t = side[i] / (side[i] - side[j]);
+      out.Push({ in.V[i].X + t * (in.V[j].X - in.V[i].X), in.V[i].Y + t * (in.V[j].Y - in.V[i].Y) });
+    }
+  }
+  return true;
+}
+
+// The intersection of p and the convex counter-clockwise polygon q; false
+// when it would not fit. An empty intersection has fewer than 3 corners.
+bool Intersect(const Polygon2& p, const Polygon2& q, Polygon2& out)
+{
+  Polygon2 buffers[2];
+  const Polygon2* in = &p;
+  for (int i = 0; i < q.N && in->N >= 3; ++i)
+  {
+    Polygon2& next = buffers[i & 1];
+    if (!ClipLeft(*in, q.V[i], q.V[i + 1 < q.N ? i + 1 : 0], next))
+    {
+      return false;
+    }
+    in = &next;
+  }
+  out = *in;
+  return true;
+}
+
+// Lambert's contour formula over a convex polygon of the source's plane
+// (fans beyond 8 corners, the contour kernel's stack size).
+double FormFactorOf(const SourceFrame& frame, const Vec3& x, const Vec3& n, const Polygon2& piece)
+{
+  Vec3 poly3[Polygon2::Capacity];
+  for (int i = 0; i < piece.N; ++i)
+  {
+    poly3[i] = frame.To3(piece.V[i]);
+  }
+  if (piece.N <= 8)
+  {
+    return PointToPolygonFormFactor(x, n, poly3, static_cast<std::size_t>(piece.N));
+  }
+  double factor = 0.0;
+  for (int i = 1; i + 1 < piece.N; ++i)
+  {
+    factor += PointToTriangleFormFactor(x, n, poly3[0], poly3[i], poly3[i + 1]);
+  }
+  return factor;
+}
+
+// The visible form factor as the source's less that of the union of the
+// shadows on it, the union as disjoint convex pieces: shadow j's part on the
+// source less the shadows before it,
+//   F(S - U A_i) = F(S) - sum_j F((A_j n S) - A_1 - ... - A_(j-1)).
+// Equal to VisibleFromPoint's sum over the visible fragments (the form
+// factor is additive over regions), but better conditioned where x nearly
+// touches the source's plane: there the form factor gathers at the foot of
+// x, and cutting the whole source along the lines of the shadows' edges
+// (which pass through that foot when a blocker stands on the source's
+// plane) moved it by 1e-3 at 1e-8 above the plane, where the shadows change
+// it by 2e-9. Here only the shadows are cut, and they lie away from the
+// foot. False when a piece outgrew Polygon2's capacity (then nothing is
+// computed).
+bool SourceLessShadows(const SourceFrame& frame, const Vec3& x, const Vec3& n,
+  const std::vector<BlockerLevels>& blockers, double& factor)
+{
+  const double height = glm::dot(x, frame.M) - frame.PlaneOffset;
+  const double slack = SlabSlack(frame, x, height);
+  const double xLevel = glm::dot(x, frame.M);
+  thread_local std::vector<Polygon2> shadows, pieces, next;
+  shadows.clear();
+  const Box2 sourceBox(frame.Whole);
+  factor = PointToPolygonFormFactor(x, n, frame.Source.data(), 3);
+  for (const BlockerLevels& blocker : blockers)
+  {
+    Polygon2 shadow, part;
+    if (!ShadowOf(frame, x, height, xLevel, slack, blocker, shadow) || !Box2(shadow).Overlaps(sourceBox))
+    {
+      continue;
+    }
+    if (!Intersect(frame.Whole, shadow, part))
+    {
+      return false;
+    }
+    if (part.N < 3 || !(SignedArea(part) > frame.MinArea))
+    {
+      continue; // beside the source
+    }
+    // What of this part the shadows before it have not covered yet.
+    pieces.assign(1, part);
+    for (const Polygon2& earlier : shadows)
+    {
+      const Box2 earlierBox(earlier);
+      next.clear();
+      for (const Polygon2& piece : pieces)
+      {
+        if (!Box2(piece).Overlaps(earlierBox))
+        {
+          next.push_back(piece);
+        }
+        else if (!Subtract(piece, earlier, frame.MinArea, next))
+        {
+          return false;
+        }
+      }
+      pieces.swap(next);
+      if (pieces.empty())
+      {
+        break;
+      }
+    }
+    for (const Polygon2& piece : pieces)
+    {
+      factor -= FormFactorOf(frame, x, n, piece);
+    }
+    shadows.push_back(part);
+  }
+  return true;
+}
+
+/// Below this height above the source's plane, relative to the source's
+/// size, the visible part is found as the source less the shadows
+/// (SourceLessShadows), not as fragments cut from the whole source.
+constexpr double NearPlane = 1e-3;
+
 // The visible form factor at x through the blockers that blockerAt(b)
-// returns (BlockerLevels), for the source of `frame`.
+// returns (BlockerLevels), for the source of `frame`: the source less each
+// shadow in turn, as disjoint convex fragments (and near its plane,
+// SourceLessShadows).
 template <typename BlockerAt>
 double VisibleFromPoint(const SourceFrame& frame, const Vec3& x, const Vec3& n, std::size_t blockerCount,
   const BlockerAt& blockerAt, bool* exact, std::size_t fragmentsLimit)
@@ -210,52 +415,34 @@ double VisibleFromPoint(const SourceFrame& frame, const Vec3& x, const Vec3& n, 
     return PointToPolygonFormFactor(x, n, frame.Source.data(), 3);
   }
 
+  if (height < NearPlane * frame.Size)
+  {
+    thread_local std::vector<BlockerLevels> near;
+    near.clear();
+    for (std::size_t b = 0; b < blockerCount; ++b)
+    {
+      near.push_back(blockerAt(b));
+    }
+    double factor = 0.0;
+    if (SourceLessShadows(frame, x, n, near, factor))
+    {
+      return std::max(0.0, factor);
+    }
+  }
+
   const double minArea = frame.MinArea;
   thread_local std::vector<Polygon2> visible, next;
   visible.clear();
   visible.push_back(frame.Whole);
-  // Blocker parts within this distance of either plane cast no shadow worth
-  // a fragment (and would project to infinity at the receiver's plane).
-  const double slack = 1e-9 * height;
+  const double slack = SlabSlack(frame, x, height);
   const double xLevel = glm::dot(x, m);
 
   for (std::size_t b = 0; b < blockerCount && !visible.empty(); ++b)
   {
-    const BlockerLevels& blocker = blockerAt(b);
-    const double lo = planeOffset + slack, hi = xLevel - slack;
-    if (blocker.Highest <= lo || blocker.Lowest >= hi)
-    {
-      continue; // wholly behind the source or behind the point
-    }
-    // Up to four corners, two more after each of the two clips; a blocker
-    // wholly between the planes is its own clip.
-    Vec3 clipped[8], poly[8];
-    const Vec3* shadowCorners = blocker.Corner;
-    int n3 = blocker.Size;
-    if (!(blocker.Lowest > lo && blocker.Highest < hi))
-    {
-      n3 = ClipPlane(blocker.Corner, blocker.Size, m, lo, clipped);
-      n3 = ClipPlane(clipped, n3, -m, -hi, poly);
-      shadowCorners = poly;
-    }
-    if (n3 < 3)
+    Polygon2 shadow;
+    if (!ShadowOf(frame, x, height, xLevel, slack, blockerAt(b), shadow))
     {
       continue;
-    }
-    Polygon2 shadow;
-    for (int i = 0; i < n3; ++i)
-    {
-      const double t = height / (xLevel - glm::dot(shadowCorners[i], m));
-      shadow.Push(frame.To2(x + t * (shadowCorners[i] - x)));
-    }
-    const double area = SignedArea(shadow);
-    if (std::abs(area) <= minArea)
-    {
-      continue; // seen edge-on from x
-    }
-    if (area < 0)
-    {
-      std::reverse(shadow.V, shadow.V + shadow.N);
     }
     const Box2 shadowBox(shadow);
     next.clear();

@@ -77,6 +77,7 @@ struct SourceFrame
   Vec3 M{ 0.0 }, U{ 0.0 }, V{ 0.0 };
   double PlaneOffset = 0.0;
   double MinArea = 0.0; ///< fragments below it are dropped
+  double Size = 0.0;    ///< the longest edge
   bool Valid = false;   ///< a source of positive area
   Polygon2 Whole;
   Point2 To2(const Vec3& p) const
