@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace radiosity
 {
@@ -114,7 +113,32 @@ std::size_t ConformBoundaries(
     });
   });
   tbb::parallel_sort(byCell.begin(), byCell.end());
-  std::unordered_map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> grid;
+  // Each key's run in an open-addressing table (linear probing, at most half
+  // full): the leaves look up some 40 cells each, and a node-based map's
+  // lookups were most of this step at a million leaves.
+  struct Run
+  {
+    std::uint64_t Key = 0;
+    std::uint32_t Begin = 0, End = 0; ///< End 0: an empty slot
+  };
+  std::size_t runs = 0;
+  for (std::size_t k = 0; k < byCell.size(); ++k)
+  {
+    runs += k == 0 || byCell[k].first != byCell[k - 1].first;
+  }
+  std::size_t capacity = 16;
+  while (capacity < 2 * runs)
+  {
+    capacity *= 2;
+  }
+  const std::uint64_t mask = capacity - 1;
+  auto slotOf = [mask](std::uint64_t key) {
+    key ^= key >> 33; // the cell keys' low bits alone cluster
+    key *= 0xff51afd7ed558ccdull;
+    key ^= key >> 33;
+    return key & mask;
+  };
+  std::vector<Run> grid(capacity);
   for (std::size_t k = 0; k < byCell.size();)
   {
     std::size_t end = k + 1;
@@ -122,9 +146,27 @@ std::size_t ConformBoundaries(
     {
       ++end;
     }
-    grid.emplace(byCell[k].first, std::make_pair(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(end)));
+    std::uint64_t slot = slotOf(byCell[k].first);
+    while (grid[slot].End != 0)
+    {
+      slot = (slot + 1) & mask;
+    }
+    grid[slot] = { byCell[k].first, static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(end) };
     k = end;
   }
+  auto find = [&](std::uint64_t key) -> const Run* {
+    for (std::uint64_t slot = slotOf(key);; slot = (slot + 1) & mask)
+    {
+      if (grid[slot].End == 0)
+      {
+        return nullptr;
+      }
+      if (grid[slot].Key == key)
+      {
+        return &grid[slot];
+      }
+    }
+  };
   std::vector<unsigned char> conformed(leaves.size(), 0);
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
     const TriangleCorners c = s.Corners(leaves[i]);
@@ -166,12 +208,12 @@ std::size_t ConformBoundaries(
       const Vec3 boxLo = glm::min(a, b) - Vec3(2.0 * tol), boxHi = glm::max(a, b) + Vec3(2.0 * tol);
       for (const std::uint64_t key : cells)
       {
-        const auto it = grid.find(key);
-        if (it == grid.end())
+        const Run* run = find(key);
+        if (!run)
         {
           continue;
         }
-        for (std::uint32_t r = it->second.first; r < it->second.second; ++r)
+        for (std::uint32_t r = run->Begin; r < run->End; ++r)
         {
           const std::uint32_t k = byCell[r].second;
           bool inside = false;
