@@ -193,25 +193,48 @@ SharedSamples ReferenceSamples(
   });
 
   // Numbered by first appearance; first[] becomes each candidate's number.
-  SharedSamples out;
+  // Each first appearance's number is the count of first appearances before
+  // it: per leaf, then a prefix over the leaves, then written in parallel.
+  std::vector<std::uint32_t> firstsBefore(leaves.size() + 1, 0);
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+    std::uint32_t count = 0;
+    for (std::size_t g = start[i]; g < start[i + 1]; ++g)
+    {
+      count += first[g] == g;
+    }
+    firstsBefore[i + 1] = count;
+  });
   for (std::size_t i = 0; i < leaves.size(); ++i)
   {
+    firstsBefore[i + 1] += firstsBefore[i];
+  }
+  SharedSamples out;
+  out.Points.resize(firstsBefore.back());
+  out.Owner.resize(firstsBefore.back());
+  std::vector<std::uint32_t> number(total);
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
     const LeafWork& w = work[i];
+    std::uint32_t next = firstsBefore[i];
     for (std::size_t j = 0; j < w.SharedCandidates.size(); ++j)
     {
       const std::size_t g = start[i] + j;
       if (first[g] == g)
       {
-        first[g] = static_cast<std::uint32_t>(out.Points.size());
-        out.Points.push_back(CandidatePoint(w, w.SharedCandidates[j]));
-        out.Owner.push_back(static_cast<std::uint32_t>(i));
-      }
-      else
-      {
-        first[g] = first[first[g]];
+        number[g] = next;
+        out.Points[next] = CandidatePoint(w, w.SharedCandidates[j]);
+        out.Owner[next] = static_cast<std::uint32_t>(i);
+        ++next;
       }
     }
-  }
+  });
+  // A later appearance takes its first's number (first[g] < g, numbered above).
+  tbb::parallel_for(std::size_t(0), total, [&](std::size_t g) {
+    if (first[g] != g)
+    {
+      number[g] = number[first[g]];
+    }
+  });
+  first.swap(number);
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
     LeafWork& w = work[i];
     for (SampleRef& r : w.VertexSamples)
