@@ -10,6 +10,7 @@
 #include <boost/container/small_vector.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -265,17 +266,17 @@ void FaceClusterHierarchy::Contract(const FaceClusterOptions& options, const Pro
 
   // The dual graph: triangles of one object sharing a mesh edge.
   {
-    std::vector<std::array<std::uint32_t, 3>> edges; // (v0, v1, triangle), v0 < v1
-    edges.reserve(3 * n);
-    for (std::size_t t = 0; t < n; ++t)
-    {
+    // (v0, v1, triangle), v0 < v1: listed and sorted in parallel (the
+    // entries are distinct, so any sort gives the same order).
+    std::vector<std::array<std::uint32_t, 3>> edges(3 * n);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t t) {
       for (int k = 0; k < 3; ++k)
       {
         std::uint32_t a = scene.Triangles[t].V[k], b = scene.Triangles[t].V[(k + 1) % 3];
-        edges.push_back({ std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t) });
+        edges[3 * t + k] = { std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t) };
       }
-    }
-    std::sort(edges.begin(), edges.end());
+    });
+    tbb::parallel_sort(edges.begin(), edges.end());
     for (std::size_t i = 0; i < edges.size();)
     {
       std::size_t j = i;
@@ -314,17 +315,37 @@ void FaceClusterHierarchy::Contract(const FaceClusterOptions& options, const Pro
                    options.ShapeWeight)),
       a, b });
   };
-  for (std::uint32_t t = 0; t < n; ++t)
   {
-    for (const Link& l : adjacency[t])
+    // The first round's costs in parallel, pushed in the same order as one
+    // at a time (the heap's order among equal costs depends on it).
+    std::vector<std::size_t> first(n + 1, 0);
+    for (std::uint32_t t = 0; t < n; ++t)
     {
-      if (l.To > t)
+      std::size_t count = 0;
+      for (const Link& l : adjacency[t])
       {
-        push(t, l.To, l.Length);
+        count += l.To > t;
       }
+      first[t + 1] = first[t] + count;
+    }
+    std::vector<Candidate> initial(first[n]);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t t) {
+      std::size_t i = first[t];
+      for (const Link& l : adjacency[t])
+      {
+        if (l.To > t)
+        {
+          initial[i++] = { static_cast<float>(ContractionCost(state[slot[t]], state[slot[l.To]], l.Length,
+                             options.ShapeWeight)),
+            static_cast<std::uint32_t>(t), l.To };
+        }
+      }
+    });
+    for (const Candidate& c : initial)
+    {
+      queue.push(c);
     }
   }
-  std::swap(queue, nextRound);
 
   std::uint32_t next = static_cast<std::uint32_t>(n);
   this->Internal.reserve(n);
