@@ -197,9 +197,10 @@ double SlabSlack(const SourceFrame& frame, const Vec3& x, double height)
 }
 
 // The shadow of `blocker` on the source's plane seen from x (at `height`
-// above it, at `xLevel` along its normal), counter-clockwise in the source's frame: the blocker clipped to
-// the slab between the two planes (less `slack`) and projected centrally from
-// x. False when it casts none (outside the slab, or seen edge-on).
+// above it, at `xLevel` along its normal), counter-clockwise in the source's
+// frame: the blocker clipped to the slab between the two planes (less
+// `slack`) and projected centrally from x. False when it casts none
+// (outside the slab, or seen edge-on).
 bool ShadowOf(const SourceFrame& frame, const Vec3& x, double height, double xLevel, double slack,
   const BlockerLevels& blocker, Polygon2& shadow)
 {
