@@ -151,7 +151,8 @@ DirectLighting::SkyMoments DirectLighting::SkyMomentsOf(const Vec3& n, const std
   {
     if (mask[i / 64] >> (i % 64) & 1)
     {
-      const double c = glm::dot(SkyDirection(this->SkyLattice[static_cast<std::size_t>(i)], t, b, n), this->Set.SkyLight.Up);
+      const Vec3 w = SkyDirection(this->SkyLattice[static_cast<std::size_t>(i)], t, b, n);
+      const double c = glm::dot(w, this->Set.SkyLight.Up);
       if (c > 0.0)
       {
         out.Count += 1.0;

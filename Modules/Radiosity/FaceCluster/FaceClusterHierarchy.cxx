@@ -310,11 +310,11 @@ void FaceClusterHierarchy::Contract(const FaceClusterOptions& options, const Pro
   // greedy queue lets a large cluster absorb its neighbours one by one (a
   // tree thousands of levels deep); rounds keep the depth logarithmic.
   std::priority_queue<Candidate> queue, nextRound;
-  auto push = [&](std::uint32_t a, std::uint32_t b, double shared) {
-    nextRound.push({ static_cast<float>(ContractionCost(state[slot[a]], state[slot[b]], shared,
-                   options.ShapeWeight)),
-      a, b });
+  auto candidate = [&](std::uint32_t a, std::uint32_t b, double shared) {
+    return Candidate{ static_cast<float>(ContractionCost(state[slot[a]], state[slot[b]], shared, options.ShapeWeight)),
+      a, b };
   };
+  auto push = [&](std::uint32_t a, std::uint32_t b, double shared) { nextRound.push(candidate(a, b, shared)); };
   {
     // The first round's costs in parallel, pushed in the same order as one
     // at a time (the heap's order among equal costs depends on it).
@@ -335,9 +335,7 @@ void FaceClusterHierarchy::Contract(const FaceClusterOptions& options, const Pro
       {
         if (l.To > t)
         {
-          initial[i++] = { static_cast<float>(ContractionCost(state[slot[t]], state[slot[l.To]], l.Length,
-                             options.ShapeWeight)),
-            static_cast<std::uint32_t>(t), l.To };
+          initial[i++] = candidate(static_cast<std::uint32_t>(t), l.To, l.Length);
         }
       }
     });

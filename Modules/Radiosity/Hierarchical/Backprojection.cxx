@@ -243,46 +243,16 @@ bool ShadowOf(const SourceFrame& frame, const Vec3& x, double height, double xLe
   return true;
 }
 
-// p clipped to the left of the line a->b (Sutherland-Hodgman); false when
-// the result would not fit.
-bool ClipLeft(const Polygon2& in, const Point2& a, const Point2& b, Polygon2& out)
-{
-  out.N = 0;
-  double side[Polygon2::Capacity];
-  for (int i = 0; i < in.N; ++i)
-  {
-    side[i] = Cross(a, b, in.V[i]);
-  }
-  for (int i = 0; i < in.N; ++i)
-  {
-    const int j = i + 1 < in.N ? i + 1 : 0;
-    if (out.N + 2 > Polygon2::Capacity)
-    {
-      return false;
-    }
-    if (side[i] >= 0)
-    {
-      out.Push(in.V[i]);
-    }
-    if ((side[i] > 0 && side[j] < 0) || (side[i] < 0 && side[j] > 0))
-    {
-      const double t = side[i] / (side[i] - side[j]);
-      out.Push({ in.V[i].X + t * (in.V[j].X - in.V[i].X), in.V[i].Y + t * (in.V[j].Y - in.V[i].Y) });
-    }
-  }
-  return true;
-}
-
 // The intersection of p and the convex counter-clockwise polygon q; false
 // when it would not fit. An empty intersection has fewer than 3 corners.
 bool Intersect(const Polygon2& p, const Polygon2& q, Polygon2& out)
 {
-  Polygon2 buffers[2];
+  Polygon2 buffers[2], outside;
   const Polygon2* in = &p;
   for (int i = 0; i < q.N && in->N >= 3; ++i)
   {
     Polygon2& next = buffers[i & 1];
-    if (!ClipLeft(*in, q.V[i], q.V[i + 1 < q.N ? i + 1 : 0], next))
+    if (!SplitByLine(*in, q.V[i], q.V[i + 1 < q.N ? i + 1 : 0], next, outside))
     {
       return false;
     }
@@ -471,25 +441,9 @@ double VisibleFromPoint(const SourceFrame& frame, const Vec3& x, const Vec3& n, 
   }
 
   double factor = 0.0;
-  Vec3 poly3[Polygon2::Capacity];
   for (const Polygon2& piece : visible)
   {
-    for (int i = 0; i < piece.N; ++i)
-    {
-      poly3[i] = frame.To3(piece.V[i]);
-    }
-    // The contour kernel takes up to 8 vertices; larger convex fragments as fans.
-    if (piece.N <= 8)
-    {
-      factor += PointToPolygonFormFactor(x, n, poly3, static_cast<std::size_t>(piece.N));
-    }
-    else
-    {
-      for (int i = 1; i + 1 < piece.N; ++i)
-      {
-        factor += PointToTriangleFormFactor(x, n, poly3[0], poly3[i], poly3[i + 1]);
-      }
-    }
+    factor += FormFactorOf(frame, x, n, piece);
   }
   return std::max(0.0, factor);
 }
