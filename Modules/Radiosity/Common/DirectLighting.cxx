@@ -23,8 +23,14 @@ void FrameAround(const Vec3& n, Vec3& t, Vec3& b)
 }
 
 DirectLighting::DirectLighting(const Scene& scene, int skySamples, const Visibility* occluders)
+  : DirectLighting(scene, scene.Lighting, skySamples, occluders)
+{
+}
+
+DirectLighting::DirectLighting(
+  const Scene& scene, const LightSet& lighting, int skySamples, const Visibility* occluders)
   : SourceScene(scene)
-  , Set(scene.Lighting)
+  , Set(lighting)
   , Occluders(occluders)
 {
   this->SkySampleCount = std::max(skySamples, 4);

@@ -34,6 +34,9 @@ public:
   /// relight of a solved scene reuses its solver's), kept alive by the
   /// caller; null: built here when there is a light.
   explicit DirectLighting(const Scene& scene, int skySamples = 256, const Visibility* occluders = nullptr);
+  /// The lights and sky of `lighting` over the surfaces of `scene` (a
+  /// solver's own lights where its scene is shared with another's).
+  DirectLighting(const Scene& scene, const LightSet& lighting, int skySamples, const Visibility* occluders = nullptr);
   ~DirectLighting();
   DirectLighting(const DirectLighting&) = delete;
   DirectLighting& operator=(const DirectLighting&) = delete;

@@ -67,4 +67,17 @@ SolverProduct FaceClusterMethod::Product(const ProgressCallback&) const
   product.CellArrays = { std::move(leaf), std::move(cluster), std::move(level), std::move(vector) };
   return product;
 }
+bool FaceClusterMethod::PrecomputeRelighting(const ProgressCallback& progress)
+{
+  return this->Solver.PrecomputeTransfer(progress);
+}
+
+SolverStatistics FaceClusterMethod::Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress)
+{
+  // The solver checks the scene and keeps it for its lights; the surfaces
+  // it reads are the hierarchy's, the same (SameSurfaces).
+  SolverStatistics stats = this->Solver.Relight(scene, progress);
+  this->SceneRef = std::move(scene);
+  return stats;
+}
 } // namespace radiosity

@@ -28,6 +28,12 @@ public:
   /// depth, as the surface's) and
   /// `IrradianceVector` at the triangle's centroid.
   SolverProduct Product(const ProgressCallback& progress) const override;
+  /// Relighting of lights and sky over the kept transfers
+  /// (FaceClusterRadiosity::PrecomputeTransfer and Relight).
+  bool SupportsRelighting() const override { return true; }
+  bool HasRelighting() const override { return this->Solver.HasTransfer(); }
+  bool PrecomputeRelighting(const ProgressCallback& progress) override;
+  SolverStatistics Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress) override;
 };
 } // namespace radiosity
 

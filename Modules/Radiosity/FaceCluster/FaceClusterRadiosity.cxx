@@ -32,6 +32,7 @@ FaceClusterRadiosity::FaceClusterRadiosity(const Scene& scene, const FaceCluster
         ? settings.RadiosityBasis
         : settings.IrradianceBasis)
   , IrradianceBasis(settings.IrradianceBasis)
+  , Lighting(scene.Lighting)
 {
   const Stopwatch clock;
   this->Budget = ResolveMemoryBudget(settings.MemoryBudgetBytes);
@@ -53,7 +54,7 @@ FaceClusterRadiosity::FaceClusterRadiosity(const Scene& scene, const FaceCluster
 }
 
 std::int32_t FaceClusterRadiosity::NewElement(
-  std::uint32_t cluster, std::int32_t parent, const Vec3* corners)
+  std::uint32_t cluster, std::int32_t parent, const Vec3* corners, int half)
 {
   const int ne = this->IrradianceBasis.Size(), nb = this->RadiosityBasis.Size();
   const auto id = static_cast<std::int32_t>(this->Nodes.size());
@@ -67,6 +68,7 @@ std::int32_t FaceClusterRadiosity::NewElement(
   FaceClusterElement& e = this->Nodes.back();
   e.Cluster = cluster;
   e.Parent = parent;
+  e.Key = corners ? this->PartKeyOf(this->Nodes[parent].Key, half) : cluster;
   if (corners)
   {
     const Scene& scene = this->GetScene();
@@ -173,6 +175,16 @@ std::int32_t FaceClusterRadiosity::NewElement(
   return id;
 }
 
+std::uint64_t FaceClusterRadiosity::PartKeyOf(std::uint64_t parent, int half)
+{
+  // Clusters' keys are their ids (below 2^32); parts are numbered from
+  // 2^32 on, in the order they are first made, the same in every solve.
+  const auto [at, made] =
+    this->PartKeys.try_emplace(2 * parent + static_cast<std::uint64_t>(half), (std::uint64_t(1) << 32) + this->PartKeys.size());
+  (void)made;
+  return at->second;
+}
+
 bool FaceClusterRadiosity::CanSubdivide(const FaceClusterElement& e) const
 {
   // The lights' direct light (the first iteration) may halve receivers as
@@ -213,8 +225,8 @@ void FaceClusterRadiosity::Subdivide(std::int32_t e)
     const Vec3 m = 0.5 * (a + b);
     const Vec3 first[3] = { a, m, o }, second[3] = { m, b, o };
     const std::uint32_t triangle = this->Nodes[e].Cluster;
-    k0 = this->NewElement(triangle, e, first);
-    k1 = this->NewElement(triangle, e, second);
+    k0 = this->NewElement(triangle, e, first, 0);
+    k1 = this->NewElement(triangle, e, second, 1);
   }
   else
   {
@@ -352,9 +364,9 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       brightest = std::max(brightest, Mean(scene.Materials[t].Emission));
     }
     this->Lights.reset();
-    if (!scene.Lighting.Empty())
+    if (!this->Lighting.Empty())
     {
-      this->Lights = std::make_unique<DirectLighting>(scene, this->Settings.SkySamples);
+      this->Lights = std::make_unique<DirectLighting>(scene, this->Lighting, this->Settings.SkySamples);
       const DirectLighting::PowerEstimate light = this->Lights->EstimatePower();
       stats.LightPowerW = light.Power;
       emitted += light.Power;
@@ -364,6 +376,12 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     this->Nodes.clear();
     this->Top.clear();
     this->Iteration = 0;
+    this->Stats.Transfers = this->Stats.Refinements = 0;
+    this->Stats.CouplingsReused = this->Stats.CouplingsComputed = this->Stats.CouplingsNotKept = 0;
+    if (this->Settings.KeepTransfers && !this->Couplings)
+    {
+      this->Couplings = std::make_unique<std::unordered_map<PairKey, TransferCoupling, PairKeyHash>>();
+    }
     this->NextPowerRGB = RGB(0.0);
     if (!(emitted > 0.0))
     {

@@ -35,6 +35,7 @@
 #include <array>
 #include <deque>
 #include <memory>
+#include <unordered_map>
 
 namespace radiosity
 {
@@ -86,6 +87,14 @@ struct FaceClusterSettings
   /// multiplies that by 1 / (1 - rho): the inside of a 1280-facet sphere at
   /// reflectance 0.99 came out 3.0% low (3e-4 lost per bounce).
   bool BalanceEnclosedScenes = true;
+  /// Relighting: keep every transfer's coupling (TransferCoupling: what a
+  /// transfer owes to its two elements, not to the light) as the solve
+  /// computes it, so that a later solve of new lights or sky on the same
+  /// surfaces (Relight) casts no ray and computes no form factor for a pair
+  /// it had already. Memory: about 0.5 to 1 kB per pair (the statistics
+  /// say how much), at most half of MemoryBudgetBytes; the rest is
+  /// computed again when needed. One rank only.
+  bool KeepTransfers = false;
   /// MPI ranks: every rank holds the whole hierarchy and computes its share
   /// of each round's transfers and of the lights at the leaves; the shares
   /// are exchanged (WorkShare.h) and the time limit agreed, so every rank
@@ -119,6 +128,10 @@ struct FaceClusterElement
   /// A single triangle's corners (an input triangle, or a part of one).
   std::array<Vec3, 3> Corners{};
   int Bisections = 0; ///< halvings below the input triangle
+  /// The same for the same element in every solve on the hierarchy: its
+  /// cluster, or for a part of a triangle its parent's key and which half
+  /// (the kept transfers' key).
+  std::uint64_t Key = 0;
   bool IsLeaf() const { return this->Child[0] < 0; }
   /// An input triangle or a part of one (its cluster data is a leaf's).
   bool IsTriangle() const { return this->Data.IsLeaf(); }
@@ -137,6 +150,14 @@ struct FaceClusterStatistics
   /// The smallest and largest scale BalanceEnergy applied (1: none).
   double EnergyScaleMin = 1.0, EnergyScaleMax = 1.0;
   double EnclosureSeconds = 0.0; ///< the enclosure test
+  /// Relighting (KeepTransfers): the couplings kept, their memory, and in
+  /// the last solve how many transfers reused a kept coupling and how many
+  /// were computed (kept, unless the memory for them was spent).
+  std::size_t KeptCouplings = 0;
+  std::size_t KeptBytes = 0;
+  std::size_t CouplingsReused = 0;
+  std::size_t CouplingsComputed = 0;
+  std::size_t CouplingsNotKept = 0;
 };
 
 class FaceClusterRadiosity
@@ -147,6 +168,30 @@ public:
     std::shared_ptr<const FaceClusterHierarchy> hierarchy = nullptr);
 
   SolverStatistics Solve(const ProgressCallback& progress = {});
+
+  ///@{
+  /**
+   * Relighting (Lehtinen et al. 2007, section 6.5, for this method): the
+   * transfers kept (KeepTransfers) make a solve of new lighting a replay
+   * of the oracle and the push-pull over kept couplings: the rays and form
+   * factors of every pair seen before are not computed again, and a pair
+   * the new light needs (an element it halves, a coarser or finer
+   * transfer) is computed then and kept. The answer is the fresh solve's
+   * of the new lighting, to the bit: the same code runs, on the same
+   * couplings.
+   *
+   * PrecomputeTransfer: keeps the transfers, solving again to collect them
+   * unless this solve kept them already; false when aborted.
+   * Relight: solves for the lights and sky of `scene`, whose surfaces
+   * (SameSurfaces) and emission must be those of the solver's scene
+   * (SceneError naming the difference otherwise: the face clusters carry
+   * their emission, so an emitting triangle's change needs a new
+   * hierarchy).
+   */
+  bool PrecomputeTransfer(const ProgressCallback& progress = {});
+  bool HasTransfer() const { return this->Couplings != nullptr && !this->Couplings->empty(); }
+  SolverStatistics Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress = {});
+  ///@}
 
   /// The irradiance vector at x on triangle t, from the leaf element there.
   IrradianceVector IrradianceVectorAt(std::uint32_t t, const Vec3& x) const;
@@ -188,6 +233,28 @@ private:
   PolynomialBasis RadiosityBasis;
   PolynomialBasis IrradianceBasis;
   std::deque<FaceClusterElement> Nodes;
+  /// The lights and sky: the scene's given to the constructor, then each
+  /// Relight's. Not the hierarchy's scene's: a hierarchy is shared by every
+  /// scene of the same surfaces (FaceClusterHierarchy::Shared), whatever
+  /// their lights.
+  LightSet Lighting;
+  /// Relighting: kept couplings by (receiver, emitter) key, and the keys
+  /// of the parts below input triangles by (parent key, half).
+  struct PairKey
+  {
+    std::uint64_t Receiver, Emitter;
+    bool operator==(const PairKey& o) const { return this->Receiver == o.Receiver && this->Emitter == o.Emitter; }
+  };
+  struct PairKeyHash
+  {
+    std::size_t operator()(const PairKey& k) const
+    {
+      return std::hash<std::uint64_t>()(k.Receiver * 0x9E3779B97F4A7C15ull ^ k.Emitter);
+    }
+  };
+  std::unique_ptr<std::unordered_map<PairKey, TransferCoupling, PairKeyHash>> Couplings;
+  std::unordered_map<std::uint64_t, std::uint64_t> PartKeys;
+  std::uint64_t PartKeyOf(std::uint64_t parent, int half);
   std::vector<std::int32_t> Top;
   FaceClusterStatistics Stats;
   int Iteration = 0;
@@ -210,7 +277,7 @@ private:
   void BoundLeafExpansions();
   /// An element of `cluster`, or with `corners`, of a part of that
   /// triangle (cluster) below the input.
-  std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent, const Vec3* corners = nullptr);
+  std::int32_t NewElement(std::uint32_t cluster, std::int32_t parent, const Vec3* corners = nullptr, int half = 0);
   /// Whether e may be subdivided: a cluster always; a triangle or a part
   /// of one up to MaxBisections halvings, MaxLightBisections for the
   /// lights' direct light (the first iteration of a scene with lights).
@@ -230,8 +297,10 @@ private:
   /// A pending pair when the two elements face each other and the emitter
   /// has unshot radiosity (ASSIGN-SHOOTER).
   void AddShooter(std::int32_t receiver, std::int32_t emitter, std::vector<PendingTransfer>& pending) const;
-  /// Coupling and error of 3.3.2 for receiver i and emitter j.
-  Transfer TransferOf(std::int32_t i, std::int32_t j) const;
+  /// Coupling and error of 3.3.2 for receiver i and emitter j; from the
+  /// kept coupling when there is one, else computed (and handed to `keep`
+  /// when given and transfers are kept).
+  Transfer TransferOf(std::int32_t i, std::int32_t j, std::unique_ptr<TransferCoupling>* keep = nullptr) const;
   /// TransferOf for n pairs: in parallel, each rank its share (WorkShare).
   std::vector<Transfer> ComputeTransfers(const PendingTransfer* pairs, std::size_t n);
   /// Accepts the pair's transfer into Accepted, or subdivides an end and

@@ -166,8 +166,7 @@ bool ExactFractionBlockers(const TransferEnd& receiver, const TransferEnd& emitt
 }
 }
 
-Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter,
-  const std::vector<RGB>& radiosity, double radiosityMin, double radiosityMax,
+TransferCoupling ComputeCoupling(const TransferEnd& receiver, const TransferEnd& emitter,
   const FaceClusterVisibility& visibility, const TransferRule& rule)
 {
   const FaceCluster& ri = *receiver.Cluster;
@@ -175,7 +174,7 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
   const SurfaceRule& rr = *receiver.Rule;
   const SurfaceRule& er = *emitter.Rule;
   const int ne = receiver.Functions, nb = emitter.Functions;
-  Transfer out;
+  TransferCoupling out;
   out.Receivers = ne;
   out.Emitters = nb;
   out.K.assign(static_cast<std::size_t>(ne) * nb, Vec3(0.0));
@@ -230,9 +229,12 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
 
   // The receiver's nodes, then its control points.
   const std::size_t np = rr.Size(), nc = rr.Controls.size(), nq = er.Size();
-  double departure = 0.0;
-  std::vector<Vec3> atNode((np + nc) * nb, Vec3(0.0)); // sum_q Phi_b(y_q) g_pq
-  std::vector<double> upper(np + nc, 0.0), lower(np + nc, std::numeric_limits<double>::infinity());
+  std::vector<Vec3>& atNode = out.AtPoint; // sum_q Phi_b(y_q) g_pq
+  atNode.assign((np + nc) * nb, Vec3(0.0));
+  std::vector<double>& upper = out.UpperScale;
+  std::vector<double>& lower = out.LowerScale;
+  upper.assign(np, 0.0);
+  lower.assign(np, std::numeric_limits<double>::infinity());
   std::vector<char> shadowed(np + nc, 0);
   // The constant part's exact vector form factor at each point (unoccluded).
   std::vector<Vec3> exactAt(exactConstant ? np + nc : 0);
@@ -280,10 +282,14 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
       {
         atNode[p * nb + b] += (er.Phi[q * er.Functions + b] * g) * dir;
       }
-      // 3.3.2: bounds on B F A over the emitter's nodes.
-      const double scale = v / (Pi * d2);
-      upper[p] = std::max(upper[p], radiosityMax * scale * ri.MaxProjectedArea(dir) * ej.MaxProjectedArea(-dir));
-      lower[p] = std::min(lower[p], radiosityMin * scale * ri.MinProjectedArea(dir) * ej.MinProjectedArea(-dir));
+      // 3.3.2: bounds on B F A over the emitter's nodes, per unit
+      // radiosity (EvaluateCoupling scales them by the radiosity's bounds).
+      if (p < np)
+      {
+        const double scale = v / (Pi * d2);
+        upper[p] = std::max(upper[p], scale * ri.MaxProjectedArea(dir) * ej.MaxProjectedArea(-dir));
+        lower[p] = std::min(lower[p], scale * ri.MinProjectedArea(dir) * ej.MinProjectedArea(-dir));
+      }
     }
     if (exactConstant)
     {
@@ -357,9 +363,28 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
       }
     }
   }
+  out.ExactConstant = exactConstant;
+  out.Shadowed = std::any_of(shadowed.begin(), shadowed.end(), [](char c) { return c != 0; });
+  out.Residuals = receiver.Corners || ri.IsLeaf();
+  return out;
+}
+
+Transfer EvaluateCoupling(const TransferCoupling& coupling, const TransferEnd& receiver,
+  const std::vector<RGB>& radiosity, double radiosityMin, double radiosityMax)
+{
+  const FaceCluster& ri = *receiver.Cluster;
+  const SurfaceRule& rr = *receiver.Rule;
+  const int ne = coupling.Receivers, nb = coupling.Emitters;
+  const std::size_t np = rr.Size(), nc = rr.Controls.size();
+  const std::vector<Vec3>& atNode = coupling.AtPoint;
+  Transfer out;
+  out.Receivers = ne;
+  out.Emitters = nb;
+  out.K = coupling.K;
+  double departure = 0.0;
   // 3.3.2, "the value interpolated using the element basis" against direct
   // integration, at the nodes and at the control points.
-  if (receiver.Corners || ri.IsLeaf())
+  if (coupling.Residuals)
   {
     out.Residual.assign(np + nc, 0.0);
   }
@@ -390,12 +415,12 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
   // tracks it). An unoccluded uniform emitter's direct values are exact
   // (vector form factors), and its parts' bounds, which never tighten next
   // to a shared edge, would refine it for nothing.
-  bool uniform = exactConstant && radiosityMax - radiosityMin <= 1e-6 * radiosityMax;
+  bool uniform = coupling.ExactConstant && radiosityMax - radiosityMin <= 1e-6 * radiosityMax;
   for (int b = 1; b < nb && uniform; ++b)
   {
     uniform = MaxComponent(glm::abs(radiosity[b])) <= 1e-9 * MaxComponent(glm::abs(radiosity[0]));
   }
-  const bool exact = uniform && std::none_of(shadowed.begin(), shadowed.end(), [](char c) { return c != 0; });
+  const bool exact = uniform && !coupling.Shadowed;
   for (std::size_t p = 0; p < np && !exact; ++p)
   {
     Vec3 e(0.0);
@@ -407,10 +432,25 @@ Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter
       }
     }
     const double bfa = ri.Area * std::max(glm::dot(rr.Normals[p], e), 0.0);
-    const double lo = std::isfinite(lower[p]) ? lower[p] : 0.0;
-    departure = std::max({ departure, std::abs(bfa - upper[p]), std::abs(bfa - lo) });
+    const double up = radiosityMax * coupling.UpperScale[p];
+    const double lo = std::isfinite(coupling.LowerScale[p]) ? radiosityMin * coupling.LowerScale[p] : 0.0;
+    departure = std::max({ departure, std::abs(bfa - up), std::abs(bfa - lo) });
   }
   out.Error = std::max(departure, out.FitError);
   return out;
+}
+
+Transfer ComputeTransfer(const TransferEnd& receiver, const TransferEnd& emitter,
+  const std::vector<RGB>& radiosity, double radiosityMin, double radiosityMax,
+  const FaceClusterVisibility& visibility, const TransferRule& rule)
+{
+  return EvaluateCoupling(
+    ComputeCoupling(receiver, emitter, visibility, rule), receiver, radiosity, radiosityMin, radiosityMax);
+}
+
+std::size_t TransferCoupling::Bytes() const
+{
+  return sizeof(TransferCoupling) + (this->K.capacity() + this->AtPoint.capacity()) * sizeof(Vec3) +
+    (this->UpperScale.capacity() + this->LowerScale.capacity()) * sizeof(double);
 }
 } // namespace radiosity

@@ -76,6 +76,37 @@ struct Transfer
   std::vector<double> Residual;
 };
 
+/// What a transfer owes to its two ends alone, not to the emitter's
+/// radiosity: K, the irradiance vector per unit of each emitter function
+/// at every receiver point, and the bounds of 3.3.2 per unit radiosity.
+/// A solve keeps it to relight: the same pair in a later solve is then
+/// evaluated (EvaluateCoupling) without a ray or a form factor.
+struct TransferCoupling
+{
+  int Receivers = 0; ///< irradiance functions N_e
+  int Emitters = 0;  ///< radiosity functions N_b
+  std::vector<Vec3> K; ///< eq. 7, as Transfer::K
+  /// Per receiver point (its nodes, then its control points) and emitter
+  /// function b: the irradiance vector per unit of b (sum_q Phi_b(y_q) g_pq).
+  std::vector<Vec3> AtPoint;
+  /// Per receiver node: the largest and smallest B F A per unit radiosity
+  /// over the emitter's nodes (3.3.2); +inf where no node lies above it.
+  std::vector<double> UpperScale, LowerScale;
+  bool ExactConstant = false; ///< the constant part by exact vector form factors
+  bool Shadowed = false;      ///< some receiver point saw an emitter node hidden
+  bool Residuals = false;     ///< the receiver is one triangle (Transfer::Residual kept)
+  std::size_t Bytes() const;
+};
+
+/// The coupling of receiver i and emitter j: the rays and form factors.
+TransferCoupling ComputeCoupling(const TransferEnd& receiver, const TransferEnd& emitter,
+  const FaceClusterVisibility& visibility, const TransferRule& rule);
+
+/// K and delta_ij from a coupling (computed for `receiver`) and the
+/// emitter's radiosity, as ComputeTransfer (which is this of ComputeCoupling).
+Transfer EvaluateCoupling(const TransferCoupling& coupling, const TransferEnd& receiver,
+  const std::vector<RGB>& radiosity, double radiosityMin, double radiosityMax);
+
 /**
  * K and delta_ij for receiver i and emitter j whose radiosity is
  * `radiosity` (coefficients of the emitter's first Functions basis

@@ -93,7 +93,8 @@ void FaceClusterRadiosity::AddShooter(
   }
 }
 
-Transfer FaceClusterRadiosity::TransferOf(std::int32_t i, std::int32_t j) const
+Transfer FaceClusterRadiosity::TransferOf(
+  std::int32_t i, std::int32_t j, std::unique_ptr<TransferCoupling>* keep) const
 {
   const FaceClusterElement& receiver = this->Nodes[i];
   const FaceClusterElement& emitter = this->Nodes[j];
@@ -107,10 +108,25 @@ Transfer FaceClusterRadiosity::TransferOf(std::int32_t i, std::int32_t j) const
   const double mean = Mean(emitter.Unshot[0]);
   const double bMin = std::max(0.0, std::min(emitter.UnshotMin, mean - BasisBound * higher));
   const double bMax = std::max(emitter.UnshotMax, mean + BasisBound * higher);
-  return ComputeTransfer({ &receiver.Data, receiver.Cluster, &receiver.Rule, this->IrradianceBasis.Size() },
+  const TransferEnd to{ &receiver.Data, receiver.Cluster, &receiver.Rule, this->IrradianceBasis.Size() };
+  if (this->Couplings)
+  {
+    const auto kept = this->Couplings->find({ receiver.Key, emitter.Key });
+    if (kept != this->Couplings->end())
+    {
+      return EvaluateCoupling(kept->second, to, emitter.Unshot, bMin, bMax);
+    }
+  }
+  TransferCoupling coupling = ComputeCoupling(to,
     { &emitter.Data, emitter.Cluster, &emitter.Rule, this->RadiosityBasis.Size(),
       emitter.IsTriangle() ? emitter.Corners.data() : nullptr },
-    emitter.Unshot, bMin, bMax, *this->Visibility, this->Settings.Rule);
+    *this->Visibility, this->Settings.Rule);
+  Transfer t = EvaluateCoupling(coupling, to, emitter.Unshot, bMin, bMax);
+  if (keep)
+  {
+    *keep = std::make_unique<TransferCoupling>(std::move(coupling));
+  }
+  return t;
 }
 
 std::vector<Transfer> FaceClusterRadiosity::ComputeTransfers(const PendingTransfer* pairs, std::size_t n)
@@ -118,6 +134,37 @@ std::vector<Transfer> FaceClusterRadiosity::ComputeTransfers(const PendingTransf
   std::vector<Transfer> out(n);
   WorkShare& share = ShareOrAlone(this->Settings.Share);
   const auto mine = share.Range(n);
+  if (this->Couplings && share.Ranks() == 1)
+  {
+    // Relighting: the pairs seen before from their kept couplings; the
+    // others computed and kept (in order, after the parallel part) while
+    // the memory lasts.
+    std::vector<std::unique_ptr<TransferCoupling>> computed(n);
+    tbb::parallel_for(std::size_t(0), n,
+      [&](std::size_t k) { out[k] = this->TransferOf(pairs[k].Receiver, pairs[k].Emitter, &computed[k]); });
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      if (!computed[k])
+      {
+        ++this->Stats.CouplingsReused;
+        continue;
+      }
+      ++this->Stats.CouplingsComputed;
+      const std::size_t bytes = computed[k]->Bytes() + 2 * sizeof(PairKey);
+      if (static_cast<double>(this->Stats.KeptBytes + bytes) > 0.5 * this->Budget)
+      {
+        ++this->Stats.CouplingsNotKept;
+        continue;
+      }
+      const PairKey key{ this->Nodes[pairs[k].Receiver].Key, this->Nodes[pairs[k].Emitter].Key };
+      if (this->Couplings->emplace(key, std::move(*computed[k])).second)
+      {
+        this->Stats.KeptBytes += bytes;
+        ++this->Stats.KeptCouplings;
+      }
+    }
+    return out;
+  }
   tbb::parallel_for(mine.first, mine.second,
     [&](std::size_t k) { out[k] = this->TransferOf(pairs[k].Receiver, pairs[k].Emitter); });
   const int ne = this->IrradianceBasis.Size(), nb = this->RadiosityBasis.Size();
