@@ -202,6 +202,8 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       settings.TransferTolerance = this->TransferTolerance;
       settings.MaxBisections = this->MaxBisections;
       settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
+      // Relighting: the solve keeps its transfers' couplings (one process).
+      settings.KeepTransfers = this->Relighting && !(settings.Share && settings.Share->Ranks() > 1);
       // The hierarchy shared by every user of this scene (FaceClusterHierarchy::
       // Shared): one that vtkFaceClusterHierarchyFilter built upstream for
       // the same geometry, materials and options is reused, not rebuilt.

@@ -6,6 +6,7 @@
 #include "vtkMultiProcessController.h"
 
 #include "Radiosity/Common/RadiositySolver.h"
+#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
 #include "Radiosity/Meshless/MeshlessRadiosity.h"
 
 #include <chrono>
@@ -68,6 +69,15 @@ bool vtkRadiosityFilter::RelightWith(std::shared_ptr<radiosity::RadiositySolver>
     }
     this->RelightingStatus = status.str();
   }
+  else if (const auto faceCluster = this->GetFaceClusterSolution())
+  {
+    const radiosity::FaceClusterStatistics& f = faceCluster->Statistics();
+    std::ostringstream status;
+    status << "relit: " << f.CouplingsReused << " transfers from kept couplings, " << f.CouplingsComputed
+           << " computed anew, " << this->Statistics.Iterations << " iterations, " << this->Statistics.SolveSeconds
+           << " s";
+    this->RelightingStatus = status.str();
+  }
   return true;
 }
 
@@ -77,7 +87,9 @@ std::string vtkRadiosityFilter::RelightingSettingsKey() const
   key.precision(17);
   key << this->Method << ' ' << this->Tolerance << ' ' << this->MaxIterations << ' ' << this->MaxTime << ' '
       << this->NumberOfThreads << ' ' << this->MaxMemory << ' ' << this->PointRadius << ' ' << this->PointLevels
-      << ' ' << this->GatherRays << ' ' << this->VariationThreshold << ' ' << this->SolidAngleThreshold;
+      << ' ' << this->GatherRays << ' ' << this->VariationThreshold << ' ' << this->SolidAngleThreshold << ' '
+      << this->IrradianceBasis << ' ' << this->RadiosityBasis << ' ' << this->TransferTolerance << ' '
+      << this->MaxBisections;
   return key.str();
 }
 
@@ -101,7 +113,7 @@ void vtkRadiosityFilter::PrecomputeRelightingAnew(const radiosity::ProgressCallb
   if (!this->Solver->SupportsRelighting())
   {
     this->RelightingStatus = std::string("unavailable: method ") + this->Solver->MethodName() +
-      " has no relighting (Method Meshless has)";
+      " has no relighting (Methods Meshless and FaceCluster have)";
     this->Warn("Relighting is on, but " + this->RelightingStatus.substr(13));
     return;
   }
@@ -127,6 +139,13 @@ void vtkRadiosityFilter::PrecomputeRelightingAnew(const radiosity::ProgressCallb
     const radiosity::MeshlessStatistics& m = meshless->Statistics();
     status << m.TransferReceivers << " receivers, " << m.TransferEntries << " entries, "
            << static_cast<double>(m.TransferBytes) / 1048576.0 << " MiB, ";
+  }
+  else if (const auto faceCluster = this->GetFaceClusterSolution())
+  {
+    const radiosity::FaceClusterStatistics& f = faceCluster->Statistics();
+    // Kept as the solve computed them (KeepTransfers): the time is the solve's.
+    status << f.KeptCouplings << " transfer couplings kept, " << static_cast<double>(f.KeptBytes) / 1048576.0
+           << " MiB (by the solve), ";
   }
   status << this->RelightingPrecomputeSeconds << " s";
   this->RelightingStatus = status.str();

@@ -3,12 +3,16 @@
 // the transfer) while a light moves, on the Cornell box, the office and,
 // with --bunny, the 1.5M-triangle bunny room; each scene's last relight
 // against a fresh solve of the same lighting. Writes <dir>/relight.md.
-//   bench_relight <dir> [--quick] [--bunny index.js [--bunny-only]]
+// --facecluster: face cluster radiosity's relights over its kept transfer
+// couplings instead, on the Cornell box and the office
+// (<dir>/relight-facecluster.md).
+//   bench_relight <dir> [--quick] [--bunny index.js [--bunny-only]] [--facecluster]
 #include "BenchArguments.h"
 
 #include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Common/Stopwatch.h"
 #include "Radiosity/Common/SystemInfo.h"
+#include "Radiosity/FaceCluster/FaceClusterMethod.h"
 #include "Radiosity/Meshless/MeshlessMethod.h"
 #include "Radiosity/Scenes/BunnyScene.h"
 #include "Radiosity/Scenes/OfficeScene.h"
@@ -107,6 +111,86 @@ std::string Row(const std::string& name, const Scene& scene, const LightPath& pa
   std::cout << row;
   return row;
 }
+
+/// Face cluster radiosity: a solve keeping its transfer couplings, then
+/// `relights` steps of the path, then the last lighting once more.
+std::string FaceClusterRow(const std::string& name, const Scene& scene, const LightPath& path, int relights)
+{
+  FaceClusterSettings settings;
+  settings.KeepTransfers = true;
+  auto first = std::make_shared<const Scene>(path(scene, 0));
+  FaceClusterMethod method(first, settings);
+  const Stopwatch solveClock;
+  method.Solve({});
+  const double solveSeconds = solveClock.Seconds();
+  const FaceClusterStatistics& t = method.GetInstance().Statistics();
+  const std::size_t keptAfterSolve = t.KeptCouplings;
+  std::vector<double> total;
+  double firstMs = 0.0;
+  std::shared_ptr<const Scene> lit;
+  std::size_t reused = 0, computed = 0;
+  for (int k = 1; k <= relights; ++k)
+  {
+    lit = std::make_shared<const Scene>(path(scene, k));
+    const Stopwatch clock;
+    method.Relight(lit, {});
+    total.push_back(clock.Seconds() * 1e3);
+    firstMs = k == 1 ? total.back() : firstMs;
+    reused += t.CouplingsReused;
+    computed += t.CouplingsComputed;
+    std::cout << name << ": relight " << k << " " << total.back() << " ms (" << t.CouplingsReused << " reused, "
+              << t.CouplingsComputed << " computed)\n";
+  }
+  const Stopwatch againClock;
+  method.Relight(lit, {});
+  const double againMs = againClock.Seconds() * 1e3;
+  std::sort(total.begin(), total.end());
+  std::vector<Probe> probes;
+  for (std::size_t tri = 0; tri < scene.Triangles.size(); ++tri)
+  {
+    probes.push_back({ scene.Centroid(tri), scene.Normal(tri) });
+  }
+  const std::vector<RGB> relit = method.EvaluateProbes(probes);
+  FaceClusterMethod fresh(lit, FaceClusterSettings());
+  const Stopwatch freshClock;
+  fresh.Solve({});
+  const double freshSeconds = freshClock.Seconds();
+  const ErrorFigures e = RelativeErrors(relit, fresh.EvaluateProbes(probes));
+  char row[512];
+  std::snprintf(row, sizeof row,
+    "| %s | %zu | %.1f | %zu | %.1f MB | %.0f | %.0f | %.0f | %.0f%% | %.0f | %.2g / %.2g | %.1f | %.0f MB |\n",
+    name.c_str(), scene.Triangles.size(), solveSeconds, keptAfterSolve,
+    static_cast<double>(t.KeptBytes) / 1048576.0, firstMs, total[total.size() / 2], total.back(),
+    100.0 * static_cast<double>(reused) / std::max<double>(1.0, static_cast<double>(reused + computed)), againMs, e.Max,
+    e.Rms, freshSeconds, static_cast<double>(PeakMemoryBytes()) / 1048576.0);
+  std::cout << row;
+  return row;
+}
+
+std::string FaceClusterTable(int relights)
+{
+  std::ostringstream md;
+  md << "Face cluster radiosity at default settings, keeping its transfers' couplings (KeepTransfers: what a "
+        "transfer owes to its two elements, not to the light; FaceClusterRelight.cxx), then "
+     << relights
+     << " relights while a point light circles in the upper middle of the scene, its colour turning (the "
+        "office keeps its spot and sky, the Cornell box its lamp), then the last lighting once more. A "
+        "relight is a solve of the new lighting whose transfers come from the kept couplings where a solve "
+        "made the same pair before: the oracle, the lights at the nodes (the sky from kept masks) and the "
+        "push-pull run, and only pairs no solve made are computed (and kept). Kept: the couplings and sky "
+        "masks after the relights. Times: the first relight, the median and the slowest; reused: the share "
+        "of the relights' transfers from kept couplings; again: the last lighting relit once more. Error: "
+        "the last relight against a fresh solve of its lighting at every triangle's centroid (max / RMS of "
+        "the peak).\n\n"
+        "| scene | triangles | solve s (keeping) | couplings kept by the solve | kept after the relights | "
+        "first relight ms | median relight ms | slowest ms | reused | again ms | vs fresh solve | fresh solve s "
+        "| peak memory |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << FaceClusterRow("Cornell box", MakeCornellBox(),
+    [](const Scene& s, int k) { return k == 0 ? s : CirclingBulb(s, k, 2.0); }, relights);
+  md << FaceClusterRow("office", MakeOfficeScene(),
+    [](const Scene& s, int k) { return k == 0 ? s : CirclingBulb(s, k, 100.0); }, relights);
+  return md.str();
+}
 }
 
 int main(int argc, char* argv[])
@@ -118,6 +202,18 @@ int main(int argc, char* argv[])
   }
   const int relights = args.Quick ? 3 : 7;
   std::ostringstream md;
+  for (int i = 2; i < argc; ++i)
+  {
+    if (std::string(argv[i]) == "--facecluster")
+    {
+      args.WriteHeading(md, "Face cluster relighting");
+      md << FaceClusterTable(relights);
+      const std::string path = args.Directory + "/relight-facecluster.md";
+      std::ofstream(path) << md.str();
+      std::cout << md.str() << "written to " << path << "\n";
+      return 0;
+    }
+  }
   args.WriteHeading(md, "Relighting (Lehtinen et al. 2007, section 6.5)");
   md << "Meshless radiosity at default settings: solve, precompute the transfer (the one-bounce operator "
         "on the receivers the solve gathered to and the two coarsest levels, MeshlessTransfer.h), then "

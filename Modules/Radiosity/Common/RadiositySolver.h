@@ -121,20 +121,22 @@ public:
    * through `progress`; SceneError when it cannot); then Relight solves for
    * the lighting of `scene` (new emission, lights, sky; the same surfaces,
    * else SceneError naming the difference), which becomes the solver's
-   * scene. The other methods refuse with a SceneError.
+   * scene. Meshless relights lights, sky and emission (a precomputed
+   * transfer), face cluster lights and sky (kept transfer couplings); the
+   * other methods refuse with a SceneError.
    */
   virtual bool SupportsRelighting() const { return false; }
   virtual bool HasRelighting() const { return false; }
   virtual bool PrecomputeRelighting(const ProgressCallback& progress)
   {
     (void)progress;
-    throw SceneError(std::string(this->MethodName()) + " radiosity has no relighting (meshless has)");
+    throw SceneError(std::string(this->MethodName()) + " radiosity has no relighting (meshless and facecluster have)");
   }
   virtual SolverStatistics Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress)
   {
     (void)scene;
     (void)progress;
-    throw SceneError(std::string(this->MethodName()) + " radiosity has no relighting (meshless has)");
+    throw SceneError(std::string(this->MethodName()) + " radiosity has no relighting (meshless and facecluster have)");
   }
   /// The time a relight may spend adding to its transfer (0: no limit; the
   /// rest waits for the next relights). Ignored by a method without relighting.

@@ -285,14 +285,36 @@ double FaceClusterRadiosity::UnshotMagnitude(const FaceClusterElement& e) const
 }
 
 
-std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(std::int32_t i, double* spread) const
+std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(
+  std::int32_t i, double* spread, std::uint64_t* skyMask, bool castMask) const
 {
   const FaceClusterElement& e = this->Nodes[i];
   std::vector<IrradianceVector> out(e.Rule.Size());
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  const std::size_t words = this->Lights->SkyMaskWords();
   for (std::size_t q = 0; q < e.Rule.Size(); ++q)
   {
-    out[q] = this->Lights->IrradianceVector(e.Rule.Points[q], e.Rule.Normals[q]);
+    const Vec3& x = e.Rule.Points[q];
+    const Vec3& n = e.Rule.Normals[q];
+    if (skyMask && this->Lights->HasSky())
+    {
+      // The same directions as SkyIrradiance, summed through the moments.
+      std::uint64_t* mask = skyMask + q * words;
+      if (castMask)
+      {
+        this->Lights->SkyVisibility(x, n, mask);
+      }
+      out[q] = this->Lights->IrradianceVector(x, n, false);
+      const RGB sky = this->Lights->SkyIrradianceFromMoments(this->Lights->SkyMomentsOf(n, mask));
+      for (int c = 0; c < 3; ++c)
+      {
+        out[q][c] += sky[c] * n;
+      }
+    }
+    else
+    {
+      out[q] = this->Lights->IrradianceVector(x, n);
+    }
     const double h = Mean(RGB(glm::dot(e.Rule.Normals[q], out[q][0]), glm::dot(e.Rule.Normals[q], out[q][1]),
       glm::dot(e.Rule.Normals[q], out[q][2])));
     lo = std::min(lo, h);

@@ -254,6 +254,10 @@ private:
   };
   std::unique_ptr<std::unordered_map<PairKey, TransferCoupling, PairKeyHash>> Couplings;
   std::unordered_map<std::uint64_t, std::uint64_t> PartKeys;
+  /// Relighting: per element key, which sky directions each of its nodes
+  /// sees (DirectLighting::SkyVisibility, SkyMaskWords per node): geometry
+  /// alone, so a relight replays any sky's quadrature without a ray.
+  std::unordered_map<std::uint64_t, std::vector<std::uint64_t>> SkyMasks;
   std::uint64_t PartKeyOf(std::uint64_t parent, int half);
   std::vector<std::int32_t> Top;
   FaceClusterStatistics Stats;
@@ -340,7 +344,10 @@ private:
   /// The lights' vector irradiance at element e's rule nodes (external
   /// emitters of the first iteration), and their scalar spread over the
   /// nodes times the element's area: a transfer error bound in W.
-  std::vector<IrradianceVector> LightAtNodes(std::int32_t e, double* spread) const;
+  /// With `skyMask` (transfers kept: SkyMasks), the sky from each node's
+  /// mask, cast first when `castMask`.
+  std::vector<IrradianceVector> LightAtNodes(
+    std::int32_t e, double* spread, std::uint64_t* skyMask = nullptr, bool castMask = false) const;
   std::unique_ptr<DirectLighting> Lights; ///< null without lights and sky
 };
 } // namespace radiosity

@@ -336,13 +336,38 @@ bool FaceClusterRadiosity::ResolveLights(std::vector<char>& checked)
   std::vector<IrradianceVector> fitted(leaves.size() * ne, IrradianceVector{});
   WorkShare& share = ShareOrAlone(this->Settings.Share);
   const auto mine = share.Range(leaves.size());
+  // Transfers kept (relighting): the sky's visibility kept per node too,
+  // cast only at the nodes no solve saw before (the entries made here,
+  // filled in parallel below).
+  std::vector<std::uint64_t*> masks(leaves.size(), nullptr);
+  std::vector<char> cast(leaves.size(), 0);
+  if (this->Couplings && this->Lights->HasSky() && share.Ranks() == 1)
+  {
+    const std::size_t words = this->Lights->SkyMaskWords();
+    for (std::size_t k = 0; k < leaves.size(); ++k)
+    {
+      const FaceClusterElement& e = this->Nodes[leaves[k]];
+      if (!e.Data.IsLeaf())
+      {
+        continue;
+      }
+      auto [at, made] = this->SkyMasks.try_emplace(e.Key);
+      if (made || at->second.size() != e.Rule.Size() * words)
+      {
+        at->second.assign(e.Rule.Size() * words, 0);
+        cast[k] = 1;
+        this->Stats.KeptBytes += at->second.size() * sizeof(std::uint64_t);
+      }
+      masks[k] = at->second.data();
+    }
+  }
   tbb::parallel_for(mine.first, mine.second, [&](std::size_t k) {
     const FaceClusterElement& e = this->Nodes[leaves[k]];
     if (!e.Data.IsLeaf())
     {
       return;
     }
-    const std::vector<IrradianceVector> atNodes = this->LightAtNodes(leaves[k], &spread[k]);
+    const std::vector<IrradianceVector> atNodes = this->LightAtNodes(leaves[k], &spread[k], masks[k], cast[k] != 0);
     for (std::size_t q = 0; q < e.Rule.Size(); ++q)
     {
       for (int a = 0; a < ne; ++a)
