@@ -533,8 +533,8 @@ public:
 
   ///@{
   /**
-   * Relighting (Lehtinen et al. 2007, section 6.5; Method Meshless, one
-   * process). Off by default. On: after a solve the filter precomputes the
+   * Relighting (Lehtinen et al. 2007, section 6.5; Methods Meshless and
+   * FaceCluster, one process). Off by default. On: after a solve the filter precomputes the
    * direct-to-indirect transfer (seconds to minutes, and memory:
    * GetRelightingStatus says how much), and keeps it. A later request whose
    * scene has the same surfaces (points, triangles, objects, reflectance
@@ -546,8 +546,13 @@ public:
    * wants receivers the transfer lacks, gathered then and kept;
    * bench/results/relight.md). A change of geometry, reflectance or settings invalidates
    * the transfer: that request solves and precomputes again, with a
-   * warning naming what changed. Another method, or MPI ranks, solve every
-   * time (the status says why).
+   * warning naming what changed. Method FaceCluster relights too: its solve
+   * keeps every transfer's coupling (rays and form factors, about 1 kB a
+   * pair; the status says how much), and new lights or sky are solved over
+   * them, only pairs no solve made before computed: a fresh solve's answer
+   * (bench/results/relight-facecluster.md); a changed emission solves
+   * again. Another method, or MPI ranks, solve every time (the status says
+   * why).
    */
   vtkSetMacro(Relighting, bool);
   vtkGetMacro(Relighting, bool);

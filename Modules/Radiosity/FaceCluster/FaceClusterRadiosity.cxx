@@ -286,26 +286,37 @@ double FaceClusterRadiosity::UnshotMagnitude(const FaceClusterElement& e) const
 
 
 std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(
-  std::int32_t i, double* spread, std::uint64_t* skyMask, bool castMask) const
+  std::int32_t i, double* spread, KeptSky* kept, bool castMask) const
 {
   const FaceClusterElement& e = this->Nodes[i];
   std::vector<IrradianceVector> out(e.Rule.Size());
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   const std::size_t words = this->Lights->SkyMaskWords();
+  const Vec3& up = this->Lights->Lights().SkyLight.Up;
+  const bool moments = kept && (castMask || kept->Up != up);
+  if (kept)
+  {
+    kept->Moments.resize(e.Rule.Size());
+    kept->Up = up;
+  }
   for (std::size_t q = 0; q < e.Rule.Size(); ++q)
   {
     const Vec3& x = e.Rule.Points[q];
     const Vec3& n = e.Rule.Normals[q];
-    if (skyMask && this->Lights->HasSky())
+    if (kept && this->Lights->HasSky())
     {
       // The same directions as SkyIrradiance, summed through the moments.
-      std::uint64_t* mask = skyMask + q * words;
+      std::uint64_t* mask = kept->Masks.data() + q * words;
       if (castMask)
       {
         this->Lights->SkyVisibility(x, n, mask);
       }
+      if (moments)
+      {
+        kept->Moments[q] = this->Lights->SkyMomentsOf(n, mask);
+      }
       out[q] = this->Lights->IrradianceVector(x, n, false);
-      const RGB sky = this->Lights->SkyIrradianceFromMoments(this->Lights->SkyMomentsOf(n, mask));
+      const RGB sky = this->Lights->SkyIrradianceFromMoments(kept->Moments[q]);
       for (int c = 0; c < 3; ++c)
       {
         out[q][c] += sky[c] * n;

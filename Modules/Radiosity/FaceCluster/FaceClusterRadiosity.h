@@ -257,7 +257,13 @@ private:
   /// Relighting: per element key, which sky directions each of its nodes
   /// sees (DirectLighting::SkyVisibility, SkyMaskWords per node): geometry
   /// alone, so a relight replays any sky's quadrature without a ray.
-  std::unordered_map<std::uint64_t, std::vector<std::uint64_t>> SkyMasks;
+  struct KeptSky
+  {
+    std::vector<std::uint64_t> Masks;               ///< SkyMaskWords per node
+    std::vector<DirectLighting::SkyMoments> Moments; ///< per node, for Up
+    Vec3 Up{ 0.0 };
+  };
+  std::unordered_map<std::uint64_t, KeptSky> SkyMasks;
   std::uint64_t PartKeyOf(std::uint64_t parent, int half);
   std::vector<std::int32_t> Top;
   FaceClusterStatistics Stats;
@@ -344,10 +350,11 @@ private:
   /// The lights' vector irradiance at element e's rule nodes (external
   /// emitters of the first iteration), and their scalar spread over the
   /// nodes times the element's area: a transfer error bound in W.
-  /// With `skyMask` (transfers kept: SkyMasks), the sky from each node's
-  /// mask, cast first when `castMask`.
+  /// With `sky` (transfers kept: SkyMasks), the sky from each node's
+  /// mask (cast first when `castMask`) through its moments for the sky's
+  /// Up (computed when Up changed).
   std::vector<IrradianceVector> LightAtNodes(
-    std::int32_t e, double* spread, std::uint64_t* skyMask = nullptr, bool castMask = false) const;
+    std::int32_t e, double* spread, KeptSky* sky = nullptr, bool castMask = false) const;
   std::unique_ptr<DirectLighting> Lights; ///< null without lights and sky
 };
 } // namespace radiosity

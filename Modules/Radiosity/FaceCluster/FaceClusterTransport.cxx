@@ -339,7 +339,7 @@ bool FaceClusterRadiosity::ResolveLights(std::vector<char>& checked)
   // Transfers kept (relighting): the sky's visibility kept per node too,
   // cast only at the nodes no solve saw before (the entries made here,
   // filled in parallel below).
-  std::vector<std::uint64_t*> masks(leaves.size(), nullptr);
+  std::vector<KeptSky*> masks(leaves.size(), nullptr);
   std::vector<char> cast(leaves.size(), 0);
   if (this->Couplings && this->Lights->HasSky() && share.Ranks() == 1)
   {
@@ -352,13 +352,14 @@ bool FaceClusterRadiosity::ResolveLights(std::vector<char>& checked)
         continue;
       }
       auto [at, made] = this->SkyMasks.try_emplace(e.Key);
-      if (made || at->second.size() != e.Rule.Size() * words)
+      if (made || at->second.Masks.size() != e.Rule.Size() * words)
       {
-        at->second.assign(e.Rule.Size() * words, 0);
+        at->second.Masks.assign(e.Rule.Size() * words, 0);
         cast[k] = 1;
-        this->Stats.KeptBytes += at->second.size() * sizeof(std::uint64_t);
+        this->Stats.KeptBytes += at->second.Masks.size() * sizeof(std::uint64_t) +
+          e.Rule.Size() * sizeof(DirectLighting::SkyMoments);
       }
-      masks[k] = at->second.data();
+      masks[k] = &at->second;
     }
   }
   tbb::parallel_for(mine.first, mine.second, [&](std::size_t k) {
