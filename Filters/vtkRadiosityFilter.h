@@ -549,10 +549,9 @@ public:
    * warning naming what changed. Method FaceCluster relights too: its solve
    * keeps every transfer's coupling (rays and form factors, about 1 kB a
    * pair; the status says how much), and new lights or sky are solved over
-   * them, only pairs no solve made before computed: a fresh solve's answer
-   * (bench/results/relight-facecluster.md); a changed emission solves
-   * again. Another method, or MPI ranks, solve every time (the status says
-   * why).
+   * them (lights, sky and emission), only pairs no solve made before
+   * computed: a fresh solve's answer (bench/results/relight-facecluster.md).
+   * Another method, or MPI ranks, solve every time (the status says why).
    */
   vtkSetMacro(Relighting, bool);
   vtkGetMacro(Relighting, bool);

@@ -5,8 +5,8 @@
 // setting invalidates the transfer with a warning naming the change; a
 // limit on the gathers per relight defers receivers to the next requests,
 // which end at a fresh solve's answer; a method without relighting says so.
-// Face cluster relights moved lights over its kept transfer couplings to a
-// fresh solve's answer, and solves again when the emission changes.
+// Face cluster relights a moved light and a recoloured lamp over its kept
+// transfer couplings to a fresh solve's answer.
 #include "vtkCellData.h"
 #include "vtkCornellBoxSource.h"
 #include "vtkDataArray.h"
@@ -195,9 +195,9 @@ int TestRadiosityFilterRelighting(int, char*[])
   ok &= Check(StartsWith(progressive->GetRelightingStatus(), "unavailable: method progressive"),
     "progressive says it has no relighting");
 
-  // Face cluster: the lights relit over the solve's kept transfer
-  // couplings, the answer a fresh solve's to the bit; the lamp's emission
-  // belongs to the face clusters: changed, it is solved again.
+  // Face cluster: a moved light and a recoloured lamp relit over the
+  // solve's kept transfer couplings, each a fresh solve's answer to the
+  // bit; a changed reflectance solves again.
   vtkNew<vtkPolyData> room;
   room->DeepCopy(box->GetOutput());
   vtkNew<vtkRadiosityFilter> clusters;
@@ -229,10 +229,22 @@ int TestRadiosityFilterRelighting(int, char*[])
   room->Modified();
   clusters->Update();
   std::cout << "face cluster, lamp recoloured: " << clusters->GetRelightingStatus() << "\n";
-  ok &= Check(StartsWith(clusters->GetRelightingStatus(), "invalidated: face cluster relighting: the emission of "
-                                                          "triangle ") &&
+  ok &= Check(StartsWith(clusters->GetRelightingStatus(), "relit: "), "face cluster: a recoloured lamp is relit");
+  const double clustersLamp = AgainstFreshSolve(clusters, room, bulb);
+  std::cout << "  against a fresh solve: " << clustersLamp << " of the peak\n";
+  ok &= Check(clustersLamp <= 1e-12, "face cluster: the recoloured lamp relit is a fresh solve's");
+  vtkDataArray* paint = room->GetCellData()->GetArray("Reflectance");
+  if (paint)
+  {
+    paint->SetTuple3(3, 0.2, 0.3, 0.4);
+  }
+  room->Modified();
+  clusters->Update();
+  std::cout << "face cluster, reflectance changed: " << clusters->GetRelightingStatus() << "\n";
+  ok &= Check(StartsWith(clusters->GetRelightingStatus(), "invalidated: face cluster relighting: ") &&
+      clusters->GetRelightingStatus().find("reflectance of triangle 3") != std::string::npos &&
       clusters->GetRelightingStatus().find("; precomputed: ") != std::string::npos,
-    "face cluster: a changed emission invalidates, naming the triangle, and is solved and kept again");
+    "face cluster: a changed reflectance invalidates, naming the triangle, and is solved and kept again");
   ok &= Check(AgainstFreshSolve(clusters, room, bulb) <= 1e-12, "face cluster: then a fresh solve's answer");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

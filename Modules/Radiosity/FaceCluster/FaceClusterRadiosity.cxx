@@ -89,6 +89,17 @@ std::int32_t FaceClusterRadiosity::NewElement(
       e.Corners = { scene.Vertex(cluster, 0), scene.Vertex(cluster, 1), scene.Vertex(cluster, 2) };
     }
   }
+  if (!this->OwnEmission.empty())
+  {
+    // A relight's emission, not the hierarchy's scene's.
+    const EmissionBounds own = e.Data.IsLeaf()
+      ? EmissionBounds{ glm::vec3(this->OwnEmission[cluster]), glm::vec3(this->OwnEmission[cluster]),
+          glm::vec3(this->OwnEmission[cluster]) }
+      : this->InternalEmission[cluster - this->Clusters->NumberOfTriangles()];
+    e.Data.EmissionMin = own.Min;
+    e.Data.EmissionMax = own.Max;
+    e.Data.EmissionMean = own.Mean;
+  }
   // An input triangle's rule is MakeSurfaceRule's too (a leaf cluster).
   e.Rule = corners
     ? MakeTriangleRule(e.Corners.data(), e.Data, this->IrradianceBasis, this->Settings.Rule.Nodes)
@@ -393,8 +404,9 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     double emitted = 0.0, brightest = 0.0;
     for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
     {
-      emitted += Mean(scene.Materials[t].Emission) * scene.Area(t);
-      brightest = std::max(brightest, Mean(scene.Materials[t].Emission));
+      const RGB emission = this->EmissionOf(static_cast<std::uint32_t>(t));
+      emitted += Mean(emission) * scene.Area(t);
+      brightest = std::max(brightest, Mean(emission));
     }
     this->Lights.reset();
     if (!this->Lighting.Empty())

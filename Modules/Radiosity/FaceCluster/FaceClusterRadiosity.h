@@ -172,7 +172,8 @@ public:
   ///@{
   /**
    * Relighting (Lehtinen et al. 2007, section 6.5, for this method): the
-   * transfers kept (KeepTransfers) make a solve of new lighting a replay
+   * transfers kept (KeepTransfers) make a solve of new lighting (lights,
+   * sky, emission) a replay
    * of the oracle and the push-pull over kept couplings: the rays and form
    * factors of every pair seen before are not computed again, and a pair
    * the new light needs (an element it halves, a coarser or finer
@@ -182,11 +183,9 @@ public:
    *
    * PrecomputeTransfer: keeps the transfers, solving again to collect them
    * unless this solve kept them already; false when aborted.
-   * Relight: solves for the lights and sky of `scene`, whose surfaces
-   * (SameSurfaces) and emission must be those of the solver's scene
-   * (SceneError naming the difference otherwise: the face clusters carry
-   * their emission, so an emitting triangle's change needs a new
-   * hierarchy).
+   * Relight: solves for the lights, sky and emission of `scene`, whose
+   * surfaces (SameSurfaces) must be those of the solver's scene
+   * (SceneError naming the difference otherwise).
    */
   bool PrecomputeTransfer(const ProgressCallback& progress = {});
   bool HasTransfer() const { return this->Couplings != nullptr && !this->Couplings->empty(); }
@@ -253,6 +252,26 @@ private:
     }
   };
   std::unique_ptr<std::unordered_map<PairKey, TransferCoupling, PairKeyHash>> Couplings;
+  /// The kept coupling's key of receiver i and emitter j: their elements'
+  /// keys, the emitter's marked when it emits (ComputeCoupling takes an
+  /// emitting cluster's visible fraction more finely).
+  PairKey KeyOf(std::int32_t i, std::int32_t j) const;
+  /// Relighting with new emission: per triangle its emission, and per
+  /// internal cluster its emission's bounds and mean as the hierarchy would
+  /// hold them (MergeClusterAttributes), in place of the hierarchy's, whose
+  /// scene had the old; each element's copy of its cluster takes them
+  /// (NewElement). Empty: the hierarchy's own.
+  struct EmissionBounds
+  {
+    glm::vec3 Min{ 0.0f }, Max{ 0.0f }, Mean{ 0.0f };
+  };
+  std::vector<RGB> OwnEmission;
+  std::vector<EmissionBounds> InternalEmission;
+  void SetEmission(const Scene& scene);
+  RGB EmissionOf(std::uint32_t t) const
+  {
+    return this->OwnEmission.empty() ? this->GetScene().Materials[t].Emission : this->OwnEmission[t];
+  }
   std::unordered_map<std::uint64_t, std::uint64_t> PartKeys;
   /// Relighting: per element key, which sky directions each of its nodes
   /// sees (DirectLighting::SkyVisibility, SkyMaskWords per node): geometry

@@ -334,7 +334,8 @@ SolutionMesh FaceClusterRadiosity::Surface() const
   {
     const auto id = static_cast<std::uint32_t>(t);
     const Vec3 n = scene.Normal(t);
-    const Material& m = scene.Materials[t];
+    Material m = scene.Materials[t];
+    m.Emission = this->EmissionOf(id); // a relight's
     const std::int32_t element = this->ElementOf(id);
     const std::int32_t leaf = this->PartAt(element, scene.Centroid(t));
     ElementSamples samples;

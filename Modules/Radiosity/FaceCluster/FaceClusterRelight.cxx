@@ -14,23 +14,16 @@
 // coupling serves every later solve that makes the same pair, and the
 // oracle still decides with the new light: the relit answer is the fresh
 // solve's, and only pairs the new light wants that no solve made before
-// cost rays.
+// cost rays. New emission is the elements' own (SetEmission: the
+// hierarchy's clusters carry the emission of the scene they were built on).
 #include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/FaceCluster/FaceClusterGeometry.h"
 
-#include <sstream>
+#include <algorithm>
+
 
 namespace radiosity
 {
-namespace
-{
-std::string Text(const RGB& c)
-{
-  std::ostringstream s;
-  s << "(" << c.r << ", " << c.g << ", " << c.b << ")";
-  return s.str();
-}
-}
-
 bool FaceClusterRadiosity::PrecomputeTransfer(const ProgressCallback& progress)
 {
   if (this->Settings.Share && this->Settings.Share->Ranks() > 1)
@@ -69,17 +62,64 @@ SolverStatistics FaceClusterRadiosity::Relight(std::shared_ptr<const Scene> scen
   {
     throw SceneError("face cluster relighting: " + why);
   }
-  for (std::size_t t = 0; t < own.Triangles.size(); ++t)
-  {
-    if (own.Materials[t].Emission != scene->Materials[t].Emission)
-    {
-      throw SceneError("face cluster relighting: the emission of triangle " + std::to_string(t) + " changed from " +
-        Text(own.Materials[t].Emission) + " to " + Text(scene->Materials[t].Emission) +
-        ": the face clusters carry their triangles' emission, so only lights and the sky may change (solve again; "
-        "meshless relighting takes new emission)");
-    }
-  }
+  this->SetEmission(*scene);
   this->Lighting = scene->Lighting;
   return this->Solve(progress);
+}
+
+FaceClusterRadiosity::PairKey FaceClusterRadiosity::KeyOf(std::int32_t i, std::int32_t j) const
+{
+  const FaceClusterElement& emitter = this->Nodes[j];
+  const bool emits = std::max({ emitter.Data.EmissionMax.x, emitter.Data.EmissionMax.y, emitter.Data.EmissionMax.z }) > 0.0f;
+  return { this->Nodes[i].Key, emitter.Key | (emits ? std::uint64_t(1) << 63 : 0) };
+}
+
+void FaceClusterRadiosity::SetEmission(const Scene& scene)
+{
+  const Scene& own = this->GetScene();
+  bool same = true;
+  for (std::size_t t = 0; t < own.Triangles.size() && same; ++t)
+  {
+    same = own.Materials[t].Emission == scene.Materials[t].Emission;
+  }
+  this->OwnEmission.clear();
+  this->InternalEmission.clear();
+  if (same)
+  {
+    return;
+  }
+  // Bottom up, one height at a time, as the hierarchy merged its clusters.
+  const FaceClusterHierarchy& h = *this->Clusters;
+  const std::size_t n = h.NumberOfTriangles();
+  this->OwnEmission.resize(n);
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    this->OwnEmission[t] = scene.Materials[t].Emission;
+  }
+  this->InternalEmission.resize(h.NumberOfClusters() - n);
+  auto withEmission = [&](std::uint32_t id) {
+    FaceCluster c;
+    if (id < n)
+    {
+      c.Area = h.Cluster(id).Area;
+      c.EmissionMin = c.EmissionMax = c.EmissionMean = glm::vec3(this->OwnEmission[id]);
+    }
+    else
+    {
+      const EmissionBounds& e = this->InternalEmission[id - n];
+      c.Area = h.InternalCluster(id)->Area;
+      c.EmissionMin = e.Min;
+      c.EmissionMax = e.Max;
+      c.EmissionMean = e.Mean;
+    }
+    return c;
+  };
+  for (std::uint32_t i : h.HeightOrder())
+  {
+    const FaceCluster& c = *h.InternalCluster(static_cast<std::uint32_t>(n) + i);
+    FaceCluster merged;
+    MergeClusterAttributes(withEmission(c.Child[0]), withEmission(c.Child[1]), merged);
+    this->InternalEmission[i] = { merged.EmissionMin, merged.EmissionMax, merged.EmissionMean };
+  }
 }
 } // namespace radiosity

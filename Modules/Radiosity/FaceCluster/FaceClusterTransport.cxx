@@ -111,7 +111,7 @@ Transfer FaceClusterRadiosity::TransferOf(
   const TransferEnd to{ &receiver.Data, receiver.Cluster, &receiver.Rule, this->IrradianceBasis.Size() };
   if (this->Couplings)
   {
-    const auto kept = this->Couplings->find({ receiver.Key, emitter.Key });
+    const auto kept = this->Couplings->find(this->KeyOf(i, j));
     if (kept != this->Couplings->end())
     {
       return EvaluateCoupling(kept->second, to, emitter.Unshot, bMin, bMax);
@@ -156,8 +156,7 @@ std::vector<Transfer> FaceClusterRadiosity::ComputeTransfers(const PendingTransf
         ++this->Stats.CouplingsNotKept;
         continue;
       }
-      const PairKey key{ this->Nodes[pairs[k].Receiver].Key, this->Nodes[pairs[k].Emitter].Key };
-      if (this->Couplings->emplace(key, std::move(*computed[k])).second)
+      if (this->Couplings->emplace(this->KeyOf(pairs[k].Receiver, pairs[k].Emitter), std::move(*computed[k])).second)
       {
         this->Stats.KeptBytes += bytes;
         ++this->Stats.KeptCouplings;
