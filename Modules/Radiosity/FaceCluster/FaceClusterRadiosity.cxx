@@ -190,10 +190,8 @@ std::uint64_t FaceClusterRadiosity::PartKeyOf(std::uint64_t parent, int half)
 {
   // Clusters' keys are their ids (below 2^32); parts are numbered from
   // 2^32 on, in the order they are first made, the same in every solve.
-  const auto [at, made] =
-    this->PartKeys.try_emplace(2 * parent + static_cast<std::uint64_t>(half), (std::uint64_t(1) << 32) + this->PartKeys.size());
-  (void)made;
-  return at->second;
+  const std::uint64_t next = (std::uint64_t(1) << 32) + this->PartKeys.size();
+  return this->PartKeys.try_emplace(2 * parent + static_cast<std::uint64_t>(half), next).first->second;
 }
 
 bool FaceClusterRadiosity::CanSubdivide(const FaceClusterElement& e) const

@@ -70,7 +70,8 @@ SolverStatistics FaceClusterRadiosity::Relight(std::shared_ptr<const Scene> scen
 FaceClusterRadiosity::PairKey FaceClusterRadiosity::KeyOf(std::int32_t i, std::int32_t j) const
 {
   const FaceClusterElement& emitter = this->Nodes[j];
-  const bool emits = std::max({ emitter.Data.EmissionMax.x, emitter.Data.EmissionMax.y, emitter.Data.EmissionMax.z }) > 0.0f;
+  const glm::vec3& most = emitter.Data.EmissionMax;
+  const bool emits = std::max({ most.x, most.y, most.z }) > 0.0f;
   return { this->Nodes[i].Key, emitter.Key | (emits ? std::uint64_t(1) << 63 : 0) };
 }
 

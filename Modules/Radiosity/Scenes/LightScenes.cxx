@@ -189,4 +189,17 @@ std::vector<LightCase> AnalyticLightCases(double scale)
     Scaled({ Up(0, 0), Up(1.0, 0.7), Up(-1.8, 1.5) }, scale), false, true });
   return cases;
 }
+
+Scene WithOtherLighting(const Scene& scene)
+{
+  Scene other = scene;
+  const double shift = 0.1 * scene.Diagonal();
+  for (Light& l : other.Lighting.Lights)
+  {
+    l.Intensity *= RGB(0.3, 0.6, 1.0);
+    l.Position += Vec3(shift, 0.5 * shift, 0.0);
+  }
+  other.Lighting.SkyLight.Radiance *= RGB(0.3, 0.6, 1.0);
+  return other;
+}
 } // namespace radiosity

@@ -81,6 +81,12 @@ struct LightCase
 /// at several distances, across the shadow edge for the sun, facet centroids
 /// for the sphere, at several distances from the wall). `scale` as above.
 std::vector<LightCase> AnalyticLightCases(double scale = 1.0);
+
+/// Another lighting of `scene`'s surfaces, for a relight to start from:
+/// every light's intensity and the sky's radiance times (0.3, 0.6, 1), the
+/// lights moved by a tenth of the scene's diagonal (along x, and half that
+/// along y).
+Scene WithOtherLighting(const Scene& scene);
 } // namespace radiosity
 
 #endif

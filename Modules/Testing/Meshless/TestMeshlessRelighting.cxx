@@ -183,14 +183,7 @@ TEST(MeshlessRelighting, AnalyticLightCases)
     AnalyticReference exact;
     std::string why;
     ASSERT_TRUE(ComputeAnalyticReference(c.Geometry, c.Probes, exact, why)) << c.Name << ": " << why;
-    auto other = std::make_shared<Scene>(c.Geometry);
-    const double shift = 0.1 * c.Geometry.Diagonal();
-    for (Light& l : other->Lighting.Lights)
-    {
-      l.Intensity *= RGB(0.3, 0.6, 1.0);
-      l.Position += Vec3(shift, 0.5 * shift, 0.0);
-    }
-    other->Lighting.SkyLight.Radiance *= RGB(0.3, 0.6, 1.0);
+    const auto other = std::make_shared<const Scene>(WithOtherLighting(c.Geometry));
     MeshlessMethod method(other, MeshlessOptions());
     method.Solve({});
     ASSERT_TRUE(method.PrecomputeRelighting({})) << c.Name;
