@@ -92,7 +92,8 @@ struct FaceClusterSettings
   /// computes it, so that a later solve of new lights or sky on the same
   /// surfaces (Relight) casts no ray and computes no form factor for a pair
   /// it had already. Memory: about 0.5 to 1 kB per pair (the statistics
-  /// say how much), at most half of MemoryBudgetBytes; the rest is
+  /// say how much), at most a quarter of MemoryBudgetBytes with the sky
+  /// masks; the rest is
   /// computed again when needed. One rank only.
   bool KeepTransfers = false;
   /// MPI ranks: every rank holds the whole hierarchy and computes its share

@@ -44,6 +44,12 @@ constexpr double BasisBound = 7.0;
 // on large scenes (a transfer holds N_e x N_b vectors).
 constexpr std::size_t TransferBlock = 16384;
 
+// The share of the memory budget that kept couplings and sky masks may
+// take (KeepTransfers): the solve's own elements and hierarchy, and the
+// caller's other work, need the rest (the 1.5M-triangle bunny room kept to
+// half of 75% of 23 GB exhausted the machine).
+constexpr double KeptShare = 0.25;
+
 void PutTransfer(std::vector<char>& bytes, const Transfer& t)
 {
   PutBytes(bytes, t.Error);
@@ -150,8 +156,10 @@ std::vector<Transfer> FaceClusterRadiosity::ComputeTransfers(const PendingTransf
         continue;
       }
       ++this->Stats.CouplingsComputed;
-      const std::size_t bytes = computed[k]->Bytes() + 2 * sizeof(PairKey);
-      if (static_cast<double>(this->Stats.KeptBytes + bytes) > 0.5 * this->Budget)
+      // The map's node and bucket, and the allocator's overhead on each of
+      // the node's and the coupling's four arrays' blocks.
+      const std::size_t bytes = computed[k]->Bytes() + sizeof(PairKey) + 2 * sizeof(void*) + 5 * 16;
+      if (static_cast<double>(this->Stats.KeptBytes + bytes) > KeptShare * this->Budget)
       {
         ++this->Stats.CouplingsNotKept;
         continue;
@@ -350,15 +358,23 @@ bool FaceClusterRadiosity::ResolveLights(std::vector<char>& checked)
       {
         continue;
       }
-      auto [at, made] = this->SkyMasks.try_emplace(e.Key);
-      if (made || at->second.Masks.size() != e.Rule.Size() * words)
+      auto found = this->SkyMasks.find(e.Key);
+      if (found == this->SkyMasks.end())
       {
-        at->second.Masks.assign(e.Rule.Size() * words, 0);
+        // Kept within the same share of the memory as the couplings; past
+        // it the node's sky is cast as without relighting.
+        const std::size_t bytes = sizeof(KeptSky) + sizeof(std::uint64_t) + 2 * sizeof(void*) + 3 * 16 +
+          e.Rule.Size() * (words * sizeof(std::uint64_t) + sizeof(DirectLighting::SkyMoments));
+        if (static_cast<double>(this->Stats.KeptBytes + bytes) > KeptShare * this->Budget)
+        {
+          continue;
+        }
+        this->Stats.KeptBytes += bytes;
+        found = this->SkyMasks.emplace(e.Key, KeptSky()).first;
+        found->second.Masks.assign(e.Rule.Size() * words, 0);
         cast[k] = 1;
-        this->Stats.KeptBytes += at->second.Masks.size() * sizeof(std::uint64_t) +
-          e.Rule.Size() * sizeof(DirectLighting::SkyMoments);
       }
-      masks[k] = &at->second;
+      masks[k] = &found->second;
     }
   }
   tbb::parallel_for(mine.first, mine.second, [&](std::size_t k) {
