@@ -29,6 +29,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -145,30 +146,49 @@ std::vector<Transfer> FaceClusterRadiosity::ComputeTransfers(const PendingTransf
     // Relighting: the pairs seen before from their kept couplings; the
     // others computed and kept (in order, after the parallel part) while
     // the memory lasts.
+    // A coupling is held past its transfer only when its memory fits
+    // (reserved as it is computed: a block's couplings of large clusters,
+    // thousands of nodes each, would otherwise all be held at once).
     std::vector<std::unique_ptr<TransferCoupling>> computed(n);
-    tbb::parallel_for(std::size_t(0), n,
-      [&](std::size_t k) { out[k] = this->TransferOf(pairs[k].Receiver, pairs[k].Emitter, &computed[k]); });
+    std::vector<std::size_t> cost(n, 0);
+    std::vector<char> dropped(n, 0);
+    std::atomic<std::size_t> reserved{ this->Stats.KeptBytes };
+    const auto cap = static_cast<std::size_t>(KeptShare * this->Budget);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t k) {
+      out[k] = this->TransferOf(pairs[k].Receiver, pairs[k].Emitter, &computed[k]);
+      if (computed[k])
+      {
+        // The map's node and bucket, and the allocator's overhead on each
+        // of the node's and the coupling's four arrays' blocks.
+        cost[k] = computed[k]->Bytes() + sizeof(PairKey) + 2 * sizeof(void*) + 5 * 16;
+        if (reserved.fetch_add(cost[k]) + cost[k] > cap)
+        {
+          reserved.fetch_sub(cost[k]);
+          computed[k].reset();
+          dropped[k] = 1;
+        }
+      }
+    });
     for (std::size_t k = 0; k < n; ++k)
     {
+      if (dropped[k])
+      {
+        ++this->Stats.CouplingsComputed;
+        ++this->Stats.CouplingsNotKept;
+        continue;
+      }
       if (!computed[k])
       {
         ++this->Stats.CouplingsReused;
         continue;
       }
       ++this->Stats.CouplingsComputed;
-      // The map's node and bucket, and the allocator's overhead on each of
-      // the node's and the coupling's four arrays' blocks.
-      const std::size_t bytes = computed[k]->Bytes() + sizeof(PairKey) + 2 * sizeof(void*) + 5 * 16;
-      if (static_cast<double>(this->Stats.KeptBytes + bytes) > KeptShare * this->Budget)
-      {
-        ++this->Stats.CouplingsNotKept;
-        continue;
-      }
       if (this->Couplings->emplace(this->KeyOf(pairs[k].Receiver, pairs[k].Emitter), std::move(*computed[k])).second)
       {
-        this->Stats.KeptBytes += bytes;
+        this->Stats.KeptBytes += cost[k];
         ++this->Stats.KeptCouplings;
       }
+      computed[k].reset();
     }
     return out;
   }
