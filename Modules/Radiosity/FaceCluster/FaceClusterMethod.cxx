@@ -74,8 +74,8 @@ bool FaceClusterMethod::PrecomputeRelighting(const ProgressCallback& progress)
 
 SolverStatistics FaceClusterMethod::Relight(std::shared_ptr<const Scene> scene, const ProgressCallback& progress)
 {
-  // The solver checks the scene and keeps it for its lights; the surfaces
-  // it reads are the hierarchy's, the same (SameSurfaces).
+  // The solver checks the scene and takes its lights, sky and emission;
+  // the surfaces it reads are the hierarchy's, the same (SameSurfaces).
   SolverStatistics stats = this->Solver.Relight(scene, progress);
   this->SceneRef = std::move(scene);
   return stats;

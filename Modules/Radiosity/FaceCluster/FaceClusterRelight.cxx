@@ -21,7 +21,6 @@
 
 #include <algorithm>
 
-
 namespace radiosity
 {
 bool FaceClusterRadiosity::PrecomputeTransfer(const ProgressCallback& progress)
@@ -102,7 +101,8 @@ void FaceClusterRadiosity::SetEmission(const Scene& scene)
     FaceCluster c;
     if (id < n)
     {
-      c.Area = h.Cluster(id).Area;
+      // A leaf's area as TriangleCluster stores it, without fitting its box.
+      c.Area = static_cast<float>(this->GetScene().Area(id));
       c.EmissionMin = c.EmissionMax = c.EmissionMean = glm::vec3(this->OwnEmission[id]);
     }
     else
