@@ -8,6 +8,7 @@
 // triangulations, D0, drawn with the per-pixel quadratic interpolants).
 // Across the edge the interpolants follow the exact step; the elements blur it.
 #include "FilterTestSupport.h"
+#include "HardShadowScene.h"
 #include "vtkFloatingPointExceptions.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -27,51 +28,11 @@
 #include <iostream>
 #include <vector>
 
-namespace
-{
-constexpr double PlateZ = 0.5, PlateHalf = 0.4, Intensity = 10.0;
-const radiosity::Vec3 LampAt(0.3, 0.1, 1.5);
-
-radiosity::Scene HardShadowScene()
-{
-  using radiosity::Vec3;
-  radiosity::Scene scene;
-  radiosity::Material floor, black;
-  floor.Reflectance = radiosity::RGB(0.75, 0.7, 0.6);
-  black.Reflectance = radiosity::RGB(0.0);
-  radiosity::AppendQuad(scene, Vec3(-2, -2, 0), Vec3(2, -2, 0), Vec3(2, 2, 0), Vec3(-2, 2, 0), floor, 4, "floor");
-  const double h = PlateHalf;
-  radiosity::AppendQuad(scene, Vec3(-h, -h, PlateZ), Vec3(h, -h, PlateZ), Vec3(h, h, PlateZ), Vec3(-h, h, PlateZ),
-    black, 1, "plate top");
-  radiosity::AppendQuad(scene, Vec3(-h, -h, PlateZ), Vec3(-h, h, PlateZ), Vec3(h, h, PlateZ), Vec3(h, -h, PlateZ),
-    black, 1, "plate bottom");
-  return scene;
-}
-
-/// The floor sees only the lamp (it is flat, the plate is black): I h / d^3
-/// where the segment to the lamp misses the plate, else 0.
-double Exact(const radiosity::Vec3& x)
-{
-  const radiosity::Vec3 crossing = x + (LampAt - x) * (PlateZ / LampAt.z);
-  if (std::fabs(crossing.x) <= PlateHalf && std::fabs(crossing.y) <= PlateHalf)
-  {
-    return 0.0;
-  }
-  const double d = glm::length(LampAt - x);
-  return Intensity * LampAt.z / (d * d * d);
-}
-}
-
 int TestHardShadowPointLight(int argc, char* argv[])
 {
   vtkFloatingPointExceptions::Disable();
-  vtkSmartPointer<vtkPolyData> scene = vtkRadiositySceneConverter::FromScene(HardShadowScene());
-  radiosity::LightSet lights;
-  radiosity::Light lamp;
-  lamp.Type = radiosity::LightType::Point;
-  lamp.Position = LampAt;
-  lamp.Intensity = radiosity::RGB(Intensity);
-  lights.Lights.push_back(lamp);
+  vtkSmartPointer<vtkPolyData> scene = vtkRadiositySceneConverter::FromScene(HardShadowScene::Make(4));
+  const radiosity::LightSet lights = HardShadowScene::Lamp();
 
   vtkNew<vtkRadiosityFilter> progressive;
   progressive->SetInputData(scene);
@@ -106,7 +67,7 @@ int TestHardShadowPointLight(int argc, char* argv[])
       continue;
     }
     probes.push_back({ { x, 0.0, 0.0 }, { 0.0, 0.0, 1.0 } });
-    peak = std::max(peak, Exact(probes.back().Position));
+    peak = std::max(peak, HardShadowScene::Exact(probes.back().Position));
   }
   const std::vector<radiosity::RGB> onMesh = radiosity::EvaluateInterpolants(dm, probes, 1e-6);
   // The elements as drawn (Gouraud), not the sensors' exact punctual light.
@@ -116,7 +77,7 @@ int TestHardShadowPointLight(int argc, char* argv[])
   double meshError = 0.0, elementError = 0.0;
   for (std::size_t i = 0; i < probes.size(); ++i)
   {
-    const double h = Exact(probes[i].Position);
+    const double h = HardShadowScene::Exact(probes[i].Position);
     const double m = std::fabs(onMesh[i].x - h) / peak, e = std::fabs(fromElements[i].x - h) / peak;
     meshError = std::isfinite(m) ? std::max(meshError, m) : HUGE_VAL;
     elementError = std::isfinite(e) ? std::max(elementError, e) : HUGE_VAL;

@@ -230,29 +230,44 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
 
 std::array<Vec3, 3> DirectLighting::IrradianceVector(const Vec3& x, const Vec3& n, bool withSky) const
 {
-  std::array<Vec3, 3> out{ Vec3(0.0), Vec3(0.0), Vec3(0.0) };
-  for (std::size_t l = 0; l < this->Set.Lights.size(); ++l)
-  {
-    const Light& light = this->Set.Lights[l];
-    const RGB h = this->PunctualOne(l, x, n);
-    if (!(MaxComponent(h) > 0.0))
-    {
-      continue;
-    }
-    const Vec3 towards = light.Type == LightType::Directional ? -light.Direction
-                                                              : glm::normalize(light.Position - x);
-    const double c = glm::dot(n, towards); // > 0: PunctualOne is zero behind the surface
-    for (int k = 0; k < 3; ++k)
-    {
-      out[k] += (h[k] / c) * towards;
-    }
-  }
+  std::array<Vec3, 3> out = this->PunctualVectorSeenFrom(x, x, n);
   if (withSky && this->HasSky())
   {
     const RGB sky = this->SkyIrradiance(x, n);
     for (int k = 0; k < 3; ++k)
     {
       out[k] += sky[k] * n;
+    }
+  }
+  return out;
+}
+
+std::array<Vec3, 3> DirectLighting::PunctualVectorSeenFrom(
+  const Vec3& x, const Vec3& visibilityPoint, const Vec3& n) const
+{
+  std::array<Vec3, 3> out{ Vec3(0.0), Vec3(0.0), Vec3(0.0) };
+  const Vec3 origin = this->RayOrigin(visibilityPoint, n);
+  const double far = this->FarDistance(visibilityPoint);
+  for (const Light& light : this->Set.Lights)
+  {
+    const RGB h = UnshadowedIrradiance(light, x, n);
+    if (!(MaxComponent(h) > 0.0))
+    {
+      continue;
+    }
+    const Vec3 target = ShadowRayTarget(light, visibilityPoint, far);
+    unsigned char visible = 0;
+    this->Occluders->TestSegments(&origin, &target, 1, &visible);
+    if (!visible)
+    {
+      continue;
+    }
+    const Vec3 towards = light.Type == LightType::Directional ? -light.Direction
+                                                              : glm::normalize(light.Position - x);
+    const double c = glm::dot(n, towards); // > 0: UnshadowedIrradiance is zero behind the surface
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] += (h[k] / c) * towards;
     }
   }
   return out;

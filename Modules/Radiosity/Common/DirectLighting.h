@@ -123,6 +123,9 @@ public:
    * off: the punctual lights alone).
    */
   std::array<Vec3, 3> IrradianceVector(const Vec3& x, const Vec3& n, bool withSky = true) const;
+  /// The punctual lights' vector irradiance at x, each light's visibility
+  /// seen from `visibilityPoint` (as PunctualSeenFrom).
+  std::array<Vec3, 3> PunctualVectorSeenFrom(const Vec3& x, const Vec3& visibilityPoint, const Vec3& n) const;
 
   struct PowerEstimate
   {

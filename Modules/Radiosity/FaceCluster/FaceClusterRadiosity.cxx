@@ -1,4 +1,5 @@
 #include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/FaceCluster/FaceClusterLightBounds.h"
 #include "Radiosity/Common/Enclosure.h"
 #include "Radiosity/Common/MemoryBudget.h"
 
@@ -182,6 +183,17 @@ std::int32_t FaceClusterRadiosity::NewElement(
         e.LastIncrement[b][c] += e.PushE[a * ne + b] * p.LastIncrement[a][c];
       }
     }
+    if (!p.PunctualFit.empty())
+    {
+      e.PunctualFit.resize(ne, IrradianceVector{});
+      for (int b = 0; b < ne; ++b)
+      {
+        for (int a = 0; a < ne; ++a)
+        {
+          e.PunctualFit[b][c] += e.PushE[a * ne + b] * p.PunctualFit[a][c];
+        }
+      }
+    }
   }
   return id;
 }
@@ -281,6 +293,7 @@ void FaceClusterRadiosity::Subdivide(std::int32_t e)
   // Irradiance lives at the leaves only.
   std::fill(parent.Irradiance.begin(), parent.Irradiance.end(), IrradianceVector{});
   std::fill(parent.LastIncrement.begin(), parent.LastIncrement.end(), IrradianceVector{});
+  parent.PunctualFit.clear();
 }
 
 bool FaceClusterRadiosity::HasUnshot(const FaceClusterElement& e) const
@@ -295,11 +308,13 @@ double FaceClusterRadiosity::UnshotMagnitude(const FaceClusterElement& e) const
 
 
 std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(
-  std::int32_t i, double* spread, KeptSky* kept, bool castMask) const
+  std::int32_t i, double* spread, KeptSky* kept, bool castMask, std::vector<IrradianceVector>* punctual) const
 {
   const FaceClusterElement& e = this->Nodes[i];
   std::vector<IrradianceVector> out(e.Rule.Size());
-  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  // The spread of the punctual lights and of the sky over the nodes.
+  double lo[2] = { std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity() };
+  double hi[2] = { 0.0, 0.0 };
   const std::size_t words = this->Lights->SkyMaskWords();
   const Vec3& up = this->Lights->Lights().SkyLight.Up;
   const bool moments = kept && (castMask || kept->Up != up);
@@ -312,6 +327,7 @@ std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(
   {
     const Vec3& x = e.Rule.Points[q];
     const Vec3& n = e.Rule.Normals[q];
+    RGB sky(0.0);
     if (kept && this->Lights->HasSky())
     {
       // The same directions as SkyIrradiance, summed through the moments.
@@ -324,27 +340,72 @@ std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(
       {
         kept->Moments[q] = this->Lights->SkyMomentsOf(n, mask);
       }
-      out[q] = this->Lights->IrradianceVector(x, n, false);
-      const RGB sky = this->Lights->SkyIrradianceFromMoments(kept->Moments[q]);
-      for (int c = 0; c < 3; ++c)
-      {
-        out[q][c] += sky[c] * n;
-      }
+      sky = this->Lights->SkyIrradianceFromMoments(kept->Moments[q]);
     }
-    else
+    else if (this->Lights->HasSky())
     {
-      out[q] = this->Lights->IrradianceVector(x, n);
+      sky = this->Lights->SkyIrradiance(x, n);
     }
-    const double h = Mean(RGB(glm::dot(e.Rule.Normals[q], out[q][0]), glm::dot(e.Rule.Normals[q], out[q][1]),
-      glm::dot(e.Rule.Normals[q], out[q][2])));
-    lo = std::min(lo, h);
-    hi = std::max(hi, h);
+    out[q] = this->Lights->IrradianceVector(x, n, false);
+    if (punctual)
+    {
+      punctual->push_back(out[q]);
+    }
+    const double h[2] = { Mean(RGB(glm::dot(n, out[q][0]), glm::dot(n, out[q][1]), glm::dot(n, out[q][2]))),
+      Mean(sky) };
+    for (int c = 0; c < 3; ++c)
+    {
+      out[q][c] += sky[c] * n;
+    }
+    for (int k = 0; k < 2; ++k)
+    {
+      lo[k] = std::min(lo[k], h[k]);
+      hi[k] = std::max(hi[k], h[k]);
+    }
   }
   if (spread)
   {
-    *spread = e.Rule.Size() > 0 ? (hi - lo) * static_cast<double>(e.Data.Area) : 0.0;
+    // The output shows the punctual lights' exact light (ShownPunctual), so
+    // their fit matters only for what the element reflects; the sky's fit
+    // is shown.
+    const double reflectance = MaxComponent(RGB(e.Data.ReflectanceMax));
+    *spread = e.Rule.Size() > 0
+      ? (reflectance * (hi[0] - lo[0]) + (hi[1] - lo[1])) * static_cast<double>(e.Data.Area)
+      : 0.0;
   }
   return out;
+}
+
+double FaceClusterRadiosity::PunctualLightsBeyondNodes(const FaceClusterElement& e) const
+{
+  const Scene& scene = this->GetScene();
+  const std::vector<std::uint32_t>& order = this->Clusters->TriangleOrder();
+  const std::vector<Light>& lights = this->Lights->Lights().Lights;
+  const std::uint32_t step = std::max<std::uint32_t>(1, e.Data.Count / ShadowSamples);
+  double beyond = 0.0;
+  for (std::size_t l = 0; l < lights.size(); ++l)
+  {
+    beyond += PunctualLightExcess(e.Data, lights[l], e.Rule.Points);
+    // The triangles are in the order of the contraction, so a stride
+    // through them spreads the samples over the cluster's surface.
+    bool lit = false, shadowed = false;
+    for (std::uint32_t k = step / 2; k < e.Data.Count && !(lit && shadowed); k += step)
+    {
+      const std::uint32_t t = order[e.Data.First + k];
+      const Vec3 x = scene.Centroid(t), n = scene.Normal(t);
+      if (MaxComponent(UnshadowedIrradiance(lights[l], x, n)) > 0.0)
+      {
+        (MaxComponent(this->Lights->PunctualOne(l, x, n)) > 0.0 ? lit : shadowed) = true;
+      }
+    }
+    if (lit && shadowed)
+    {
+      beyond += PunctualLightMost(e.Data, lights[l]);
+    }
+  }
+  // As the nodes' spread (LightAtNodes): the output shows the exact light,
+  // so what matters is what the cluster reflects.
+  return MaxComponent(RGB(e.Data.ReflectanceMax)) * beyond;
 }
 
 void FaceClusterRadiosity::BalanceEnergy(const RGB& shot)
@@ -553,7 +614,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
           e.Rule.Phi.capacity() + e.Rule.Dual.capacity() + e.Rule.Weights.capacity()) * sizeof(double) +
         (e.Rule.Points.capacity() + e.Rule.Normals.capacity()) * sizeof(Vec3) +
         (e.Unshot.capacity() + e.Next.capacity()) * sizeof(RGB) +
-        (e.Irradiance.capacity() + e.LastIncrement.capacity()) * sizeof(IrradianceVector);
+        (e.Irradiance.capacity() + e.LastIncrement.capacity() + e.PunctualFit.capacity()) * sizeof(IrradianceVector);
     }
     this->Stats.SolutionBytes = bytes;
     this->Stats.SolveSeconds = clock.Seconds();

@@ -122,6 +122,11 @@ struct FaceClusterElement
   /// leaves' nodes below: the emitter bounds of the transfer error (3.3.2).
   double UnshotMin = 0.0, UnshotMax = 0.0, NextMin = 0.0, NextMax = 0.0;
   std::vector<IrradianceVector> Irradiance; ///< N_e coefficients, leaves only
+  /// The punctual lights' part of Irradiance (their fit where a leaf took
+  /// them, pushed down as Irradiance is when it is subdivided later): what
+  /// the output replaces by their exact light (ShownExpansion). Empty
+  /// without punctual lights.
+  std::vector<IrradianceVector> PunctualFit;
   std::vector<IrradianceVector> LastIncrement;
   /// Per channel, the bounds of the expansion's components at the nodes:
   /// the limiter of Expansion (leaves, after the solve).
@@ -297,11 +302,20 @@ private:
   /// limited to the range it takes at the element's nodes.
   /// Leaf e's expansion at x; `limit` off: without the limiter.
   IrradianceVector Expansion(std::int32_t e, const Vec3& x, bool limit = true) const;
-  /// A halved triangle e's parts' expansions fitted by its own basis, at x
-  /// (the vertex output's value).
+  /// A halved triangle e's parts' shown expansions (ShownExpansion) fitted
+  /// by its own basis, at x (the vertex output's value).
   IrradianceVector WholeTriangleExpansion(std::int32_t e, const Vec3& x) const;
-  /// The punctual lights' vector irradiance at leaf e's nodes fitted by its
-  /// basis, as the first iteration fits them (TransportLight), at x.
+  /// What the output shows of leaf e's expansion at x: with punctual
+  /// lights, the expansion less its fit of them (PunctualExpansion), to
+  /// which the output adds their exact light at the point itself
+  /// (ShownPunctual); without, the expansion.
+  IrradianceVector ShownExpansion(std::int32_t e, const Vec3& x) const;
+  /// The punctual lights' exact vector irradiance at x on input triangle t
+  /// (normal n), seen from inside t where x is on its boundary
+  /// (DirectLighting::SharedVertexVisibility); zero without them.
+  IrradianceVector ShownPunctual(std::uint32_t t, const Vec3& x, const Vec3& n) const;
+  bool ShowsExactPunctual() const { return this->Lights && this->Lights->HasPunctualLights(); }
+  /// Leaf e's PunctualFit at x (zero where it has none).
   IrradianceVector PunctualExpansion(std::int32_t e, const Vec3& x) const;
   /// Lowest and Highest of every leaf.
   void BoundLeafExpansions();
@@ -369,12 +383,23 @@ private:
   void BalanceEnergy(const RGB& shot);
   /// The lights' vector irradiance at element e's rule nodes (external
   /// emitters of the first iteration), and their scalar spread over the
-  /// nodes times the element's area: a transfer error bound in W.
+  /// nodes times the element's area, the punctual lights' times its
+  /// largest reflectance: a transfer error bound in W. `punctual`, when
+  /// given: the punctual lights' part at each node.
   /// With `sky` (transfers kept: SkyMasks), the sky from each node's
   /// mask (cast first when `castMask`) through its moments for the sky's
   /// Up (computed when Up changed).
-  std::vector<IrradianceVector> LightAtNodes(
-    std::int32_t e, double* spread, KeptSky* sky = nullptr, bool castMask = false) const;
+  std::vector<IrradianceVector> LightAtNodes(std::int32_t e, double* spread, KeptSky* sky = nullptr,
+    bool castMask = false, std::vector<IrradianceVector>* punctual = nullptr) const;
+  /// A transfer error bound (W) of the punctual lights over cluster e that
+  /// its nodes cannot show (see ResolveLights): per light, what it could
+  /// bring beyond its nodes (PunctualLightExcess), and when its visibility
+  /// samples (ShadowSamples of its triangles' centroids) are partly
+  /// shadowed, all it could bring (PunctualLightMost); times its largest
+  /// reflectance.
+  double PunctualLightsBeyondNodes(const FaceClusterElement& e) const;
+  /// Triangles of a cluster whose shadow rays test its lights' visibility.
+  static constexpr std::uint32_t ShadowSamples = 16;
   std::unique_ptr<DirectLighting> Lights; ///< null without lights and sky
 };
 } // namespace radiosity

@@ -1,8 +1,13 @@
 // The output side of FaceClusterRadiosity: the leaf elements' irradiance
 // expansions evaluated on the input triangles, at their vertices and at
 // probes (section 3.5, and SPEC: probes from the vector irradiance bases).
+// Punctual lights are shown exactly: each point takes their closed form
+// with its own shadow ray (ShownPunctual) plus the expansion less its fit
+// of them (ShownExpansion).
 #include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
 #include "Radiosity/Common/MeshProbeTracker.h"
+
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <limits>
@@ -27,6 +32,25 @@ RGB Received(const IrradianceVector& v, const Vec3& n)
 {
   return RGB(std::max(glm::dot(n, v[0]), 0.0), std::max(glm::dot(n, v[1]), 0.0),
     std::max(glm::dot(n, v[2]), 0.0));
+}
+
+/// compute(t, item) for every triangle t < n, in parallel blocks (the
+/// expansions and the punctual lights' rays), then fold(t, item) in order.
+template <typename Item, typename Compute, typename Fold>
+void PerTriangle(std::size_t n, const Compute& compute, const Fold& fold)
+{
+  constexpr std::size_t Block = std::size_t(1) << 16;
+  std::vector<Item> items;
+  for (std::size_t first = 0; first < n; first += Block)
+  {
+    const std::size_t count = std::min(Block, n - first);
+    items.assign(count, Item{});
+    tbb::parallel_for(std::size_t(0), count, [&](std::size_t k) { compute(first + k, items[k]); });
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      fold(first + k, items[k]);
+    }
+  }
 }
 }
 
@@ -164,54 +188,58 @@ IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const
 IrradianceVector FaceClusterRadiosity::PunctualExpansion(std::int32_t e, const Vec3& x) const
 {
   IrradianceVector v{};
-  if (e < 0 || !this->Lights || !this->Nodes[e].Data.IsLeaf())
+  if (e < 0 || this->Nodes[e].PunctualFit.empty())
   {
-    return v; // clusters receive the lights only once opened (TransportLight)
+    return v;
   }
   const FaceClusterElement& leaf = this->Nodes[e];
-  const int ne = this->IrradianceBasis.Size();
-  std::array<IrradianceVector, PolynomialBasis::MaximumSize> coefficients{};
-  for (std::size_t q = 0; q < leaf.Rule.Size(); ++q)
-  {
-    const IrradianceVector atNode = this->Lights->IrradianceVector(leaf.Rule.Points[q], leaf.Rule.Normals[q], false);
-    for (int a = 0; a < ne; ++a)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        coefficients[a][c] += leaf.Rule.Dual[q * ne + a] * atNode[c];
-      }
-    }
-  }
   const glm::dvec2 uv = glm::clamp(BoxCoordinates(leaf.Data, x), glm::dvec2(0.0), glm::dvec2(1.0));
   double phi[PolynomialBasis::MaximumSize];
   this->IrradianceBasis.Evaluate(uv.x, uv.y, phi);
-  for (int a = 0; a < ne; ++a)
+  for (int a = 0; a < this->IrradianceBasis.Size(); ++a)
   {
     for (int c = 0; c < 3; ++c)
     {
-      v[c] += phi[a] * coefficients[a][c];
+      v[c] += phi[a] * leaf.PunctualFit[a][c];
     }
   }
   return v;
 }
 
-RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const
+IrradianceVector FaceClusterRadiosity::ShownExpansion(std::int32_t e, const Vec3& x) const
 {
-  const std::int32_t leaf = this->LeafAt(t, x);
-  if (!this->Lights || !this->Lights->HasPunctualLights() || leaf < 0)
+  if (!this->ShowsExactPunctual() || e < 0)
   {
-    return Received(this->Expansion(leaf, x), n);
+    return this->Expansion(e, x);
   }
   // The expansion less its fit of the punctual lights (linear, so without
-  // the limiter), plus the punctual lights at x itself.
-  const IrradianceVector total = this->Expansion(leaf, x, false);
-  const IrradianceVector punctual = this->PunctualExpansion(leaf, x);
+  // the limiter): a hard shadow or a spot's rim is a step that no basis
+  // follows, and the fit's overshoot there drew black and bright specks.
+  const IrradianceVector total = this->Expansion(e, x, false);
+  const IrradianceVector punctual = this->PunctualExpansion(e, x);
   IrradianceVector rest;
   for (int c = 0; c < 3; ++c)
   {
     rest[c] = total[c] - punctual[c];
   }
-  return Received(rest, n) + this->Lights->Punctual(x, n);
+  return rest;
+}
+
+IrradianceVector FaceClusterRadiosity::ShownPunctual(std::uint32_t t, const Vec3& x, const Vec3& n) const
+{
+  if (!this->ShowsExactPunctual())
+  {
+    return IrradianceVector{};
+  }
+  return this->Lights->PunctualVectorSeenFrom(x, this->Lights->SharedVertexVisibility(this->GetScene(), t, x), n);
+}
+
+RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const
+{
+  // The expansion less its fit of the punctual lights, plus the punctual
+  // lights at x itself.
+  const RGB punctual = this->ShowsExactPunctual() ? this->Lights->Punctual(x, n) : RGB(0.0);
+  return Received(this->ShownExpansion(this->LeafAt(t, x), x), n) + punctual;
 }
 
 IrradianceVector FaceClusterRadiosity::WholeTriangleExpansion(std::int32_t e, const Vec3& x) const
@@ -229,7 +257,7 @@ IrradianceVector FaceClusterRadiosity::WholeTriangleExpansion(std::int32_t e, co
   for (std::size_t q = 0; q < whole.Rule.Size(); ++q)
   {
     const Vec3& y = whole.Rule.Points[q];
-    const IrradianceVector at = this->Expansion(this->PartAt(e, y), y);
+    const IrradianceVector at = this->ShownExpansion(this->PartAt(e, y), y);
     for (int a = 0; a < ne; ++a)
     {
       for (int c = 0; c < 3; ++c)
@@ -258,27 +286,40 @@ std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors
   std::vector<std::array<double, 9>> out(scene.Points.size(), std::array<double, 9>{});
   std::vector<int> count(scene.Points.size(), 0);
   std::vector<Vec3> normal(scene.Points.size(), Vec3(0.0));
-  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
-  {
-    const std::int32_t element = this->ElementOf(static_cast<std::uint32_t>(t));
-    const Vec3 area = scene.Area(t) * scene.Normal(t);
-    for (int k = 0; k < 3; ++k)
-    {
-      const std::uint32_t v = scene.Triangles[t].V[k];
-      normal[v] += area;
-      const IrradianceVector e = element < 0 || this->Nodes[element].IsLeaf()
-        ? this->Expansion(element, scene.Points[v]) // zero without a solution (no light)
-        : this->WholeTriangleExpansion(element, scene.Points[v]);
-      for (int c = 0; c < 3; ++c)
+  using Corners = std::array<IrradianceVector, 3>;
+  PerTriangle<Corners>(
+    scene.Triangles.size(),
+    [&](std::size_t t, Corners& corners) {
+      const std::int32_t element = this->ElementOf(static_cast<std::uint32_t>(t));
+      for (int k = 0; k < 3; ++k)
       {
-        for (int d = 0; d < 3; ++d)
+        const Vec3& x = scene.Points[scene.Triangles[t].V[k]];
+        const IrradianceVector e = element < 0 || this->Nodes[element].IsLeaf()
+          ? this->ShownExpansion(element, x) // zero without a solution (no light)
+          : this->WholeTriangleExpansion(element, x);
+        const IrradianceVector punctual = this->ShownPunctual(static_cast<std::uint32_t>(t), x, scene.Normal(t));
+        for (int c = 0; c < 3; ++c)
         {
-          out[v][3 * c + d] += e[c][d];
+          corners[k][c] = e[c] + punctual[c];
         }
       }
-      ++count[v];
-    }
-  }
+    },
+    [&](std::size_t t, const Corners& corners) {
+      const Vec3 area = scene.Area(t) * scene.Normal(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::uint32_t v = scene.Triangles[t].V[k];
+        normal[v] += area;
+        for (int c = 0; c < 3; ++c)
+        {
+          for (int d = 0; d < 3; ++d)
+          {
+            out[v][3 * c + d] += corners[k][c][d];
+          }
+        }
+        ++count[v];
+      }
+    });
   for (std::size_t v = 0; v < out.size(); ++v)
   {
     if (count[v] > 0)
@@ -330,38 +371,50 @@ SolutionMesh FaceClusterRadiosity::Surface() const
   out.PointIrradiance.assign(scene.Points.size(), RGB(0.0));
   out.PointRadiosity.assign(scene.Points.size(), RGB(0.0));
   std::vector<double> weight(scene.Points.size(), 0.0);
-  for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+  struct Sampled
   {
-    const auto id = static_cast<std::uint32_t>(t);
-    const Vec3 n = scene.Normal(t);
-    Material m = scene.Materials[t];
-    m.Emission = this->EmissionOf(id); // a relight's
-    const std::int32_t element = this->ElementOf(id);
-    const std::int32_t leaf = this->PartAt(element, scene.Centroid(t));
-    ElementSamples samples;
-    for (int k = 0; k < 3; ++k)
-    {
-      const Vec3 corner = scene.Vertex(t, k);
-      samples.Corner[k] = Received(this->Expansion(this->PartAt(element, corner), corner), n);
-    }
-    samples.Centre = Received(this->Expansion(leaf, scene.Centroid(t)), n);
-    const RGB h = samples.Mean();
-    out.CellIrradiance.push_back(h);
-    out.CellRadiosity.push_back(m.Emission + m.Reflectance * h);
-    out.ElementId.push_back(leaf >= 0 ? this->Nodes[leaf].Cluster : 0u);
-    out.Level.push_back(static_cast<std::uint16_t>(leaf >= 0 ? this->Nodes[leaf].Data.Depth : 0));
-    out.SourceTriangle.push_back(id);
-    out.Samples.push_back(samples);
-    out.Normals.push_back(n);
-    const double area = scene.Area(t);
-    for (int k = 0; k < 3; ++k)
-    {
-      const std::uint32_t v = scene.Triangles[t].V[k];
-      out.PointIrradiance[v] += area * samples.Corner[k];
-      out.PointRadiosity[v] += area * (m.Emission + m.Reflectance * samples.Corner[k]);
-      weight[v] += area;
-    }
-  }
+    ElementSamples Samples;
+    std::int32_t Leaf = -1;
+  };
+  PerTriangle<Sampled>(
+    scene.Triangles.size(),
+    [&](std::size_t t, Sampled& s) {
+      const auto id = static_cast<std::uint32_t>(t);
+      const Vec3 n = scene.Normal(t);
+      const std::int32_t element = this->ElementOf(id);
+      const Vec3 centre = scene.Centroid(t);
+      s.Leaf = this->PartAt(element, centre);
+      for (int k = 0; k < 3; ++k)
+      {
+        const Vec3 corner = scene.Vertex(t, k);
+        s.Samples.Corner[k] = Received(this->ShownExpansion(this->PartAt(element, corner), corner), n) +
+          Received(this->ShownPunctual(id, corner, n), n);
+      }
+      s.Samples.Centre = Received(this->ShownExpansion(s.Leaf, centre), n) + Received(this->ShownPunctual(id, centre, n), n);
+    },
+    [&](std::size_t t, const Sampled& s) {
+      const auto id = static_cast<std::uint32_t>(t);
+      Material m = scene.Materials[t];
+      m.Emission = this->EmissionOf(id); // a relight's
+      const ElementSamples& samples = s.Samples;
+      const std::int32_t leaf = s.Leaf;
+      const RGB h = samples.Mean();
+      out.CellIrradiance.push_back(h);
+      out.CellRadiosity.push_back(m.Emission + m.Reflectance * h);
+      out.ElementId.push_back(leaf >= 0 ? this->Nodes[leaf].Cluster : 0u);
+      out.Level.push_back(static_cast<std::uint16_t>(leaf >= 0 ? this->Nodes[leaf].Data.Depth : 0));
+      out.SourceTriangle.push_back(id);
+      out.Samples.push_back(samples);
+      out.Normals.push_back(scene.Normal(t));
+      const double area = scene.Area(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::uint32_t v = scene.Triangles[t].V[k];
+        out.PointIrradiance[v] += area * samples.Corner[k];
+        out.PointRadiosity[v] += area * (m.Emission + m.Reflectance * samples.Corner[k]);
+        weight[v] += area;
+      }
+    });
   for (std::size_t p = 0; p < weight.size(); ++p)
   {
     if (weight[p] > 0.0)
