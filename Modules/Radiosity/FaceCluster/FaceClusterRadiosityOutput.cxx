@@ -6,6 +6,7 @@
 // of them (ShownExpansion).
 #include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
 #include "Radiosity/Common/MeshProbeTracker.h"
+#include "Radiosity/Common/ThreadLimit.h"
 
 #include <tbb/parallel_for.h>
 
@@ -35,9 +36,10 @@ RGB Received(const IrradianceVector& v, const Vec3& n)
 }
 
 /// compute(t, item) for every triangle t < n, in parallel blocks (the
-/// expansions and the punctual lights' rays), then fold(t, item) in order.
+/// expansions and the punctual lights' rays) on at most `threads` threads
+/// (0: all), then fold(t, item) in order.
 template <typename Item, typename Compute, typename Fold>
-void PerTriangle(std::size_t n, const Compute& compute, const Fold& fold)
+void PerTriangle(std::size_t n, int threads, const Compute& compute, const Fold& fold)
 {
   constexpr std::size_t Block = std::size_t(1) << 16;
   std::vector<Item> items;
@@ -45,7 +47,8 @@ void PerTriangle(std::size_t n, const Compute& compute, const Fold& fold)
   {
     const std::size_t count = std::min(Block, n - first);
     items.assign(count, Item{});
-    tbb::parallel_for(std::size_t(0), count, [&](std::size_t k) { compute(first + k, items[k]); });
+    RunWithThreads(threads,
+      [&]() { tbb::parallel_for(std::size_t(0), count, [&](std::size_t k) { compute(first + k, items[k]); }); });
     for (std::size_t k = 0; k < count; ++k)
     {
       fold(first + k, items[k]);
@@ -288,7 +291,7 @@ std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors
   std::vector<Vec3> normal(scene.Points.size(), Vec3(0.0));
   using Corners = std::array<IrradianceVector, 3>;
   PerTriangle<Corners>(
-    scene.Triangles.size(),
+    scene.Triangles.size(), this->Settings.Threads,
     [&](std::size_t t, Corners& corners) {
       const std::int32_t element = this->ElementOf(static_cast<std::uint32_t>(t));
       for (int k = 0; k < 3; ++k)
@@ -377,7 +380,7 @@ SolutionMesh FaceClusterRadiosity::Surface() const
     std::int32_t Leaf = -1;
   };
   PerTriangle<Sampled>(
-    scene.Triangles.size(),
+    scene.Triangles.size(), this->Settings.Threads,
     [&](std::size_t t, Sampled& s) {
       const auto id = static_cast<std::uint32_t>(t);
       const Vec3 n = scene.Normal(t);
