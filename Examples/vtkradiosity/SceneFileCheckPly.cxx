@@ -144,8 +144,9 @@ bool CheckListCount(double count, const std::string& what, std::string& error)
 bool CheckIndex(double index, unsigned long long vertices, const std::string& what,
   std::string& error)
 {
-  if (!(index >= 0 && static_cast<unsigned long long>(index) < vertices &&
-        index == std::floor(index)))
+  // Compared as doubles: an index that overflows to infinity (31e308) must
+  // not be converted to an integer (undefined behaviour).
+  if (!(index >= 0 && index < static_cast<double>(vertices) && index == std::floor(index)))
   {
     std::ostringstream s;
     s << what << " has the vertex index " << index << ", out of range (" << vertices
