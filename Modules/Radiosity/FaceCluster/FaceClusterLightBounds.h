@@ -29,7 +29,7 @@ namespace radiosity
  * directions towards the box, f_q and d_q those at the nodes, and A_max the
  * cluster's largest projected area towards the light (Willmott's
  * directional samples, widened by the box's angular radius), at most its
- * area. Infinite when the light is inside the box. 0 for a directional
+ * area. Infinite when the light is inside the box's bounding sphere. 0 for a directional
  * light: it is the same at every point, and the nodes see its shadows as
  * they see an emitter's (the paper's sampled visibility).
  */
@@ -39,7 +39,7 @@ double PunctualLightExcess(const FaceCluster& cluster, const Light& light, const
  * The most power (W, mean of the channels) the light can bring to `cluster`
  * unshadowed: I f_box A_max / d_min^2 (a directional light: E A). What a
  * shadow edge inside the cluster can misplace, when its visibility samples
- * disagree. Infinite when the light is inside the box.
+ * disagree. Infinite when the light is inside the box's bounding sphere.
  */
 double PunctualLightMost(const FaceCluster& cluster, const Light& light);
 } // namespace radiosity
