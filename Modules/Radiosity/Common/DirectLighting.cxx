@@ -397,35 +397,49 @@ std::vector<RGB> DirectLighting::ReceivedPower() const
   return power;
 }
 
-Vec3 DirectLighting::VisibilityPoint(const Vec3& x, const Vec3& inner, double fraction) const
+Vec3 VisibilityPointToward(double offset, const Vec3& x, const Vec3& inner, double fraction)
 {
   const double distance = glm::length(inner - x);
   if (!(distance > 0.0))
   {
     return x;
   }
-  const double offset = this->Occluders ? this->Occluders->Offset() : 0.0;
   const double t = std::min(std::max(4.0 * offset / distance, fraction), 0.5);
   return x + t * (inner - x);
 }
 
-Vec3 DirectLighting::SharedVertexVisibility(const Scene& scene, std::size_t source, const Vec3& x) const
+Vec3 SharedVertexPoint(double offset, const Scene& scene, std::size_t source, const Vec3& x)
 {
   // Within 1e-5 of its size of an edge: the corner samples sit 1e-6 of their element inside.
   const Vec3 a = scene.Vertex(source, 0), b = scene.Vertex(source, 1), c = scene.Vertex(source, 2);
   const double size = std::max({ glm::length(b - a), glm::length(c - b), glm::length(a - c) });
   const double nearest = std::min({ DistanceToSegment(x, a, b), DistanceToSegment(x, b, c), DistanceToSegment(x, c, a) });
-  return nearest <= 1e-5 * size ? this->VisibilityPoint(x, scene.Centroid(source), 0.0) : x;
+  return nearest <= 1e-5 * size ? VisibilityPointToward(offset, x, scene.Centroid(source), 0.0) : x;
 }
 
-Vec3 DirectLighting::RayOrigin(const Vec3& x, const Vec3& n) const
+Vec3 RayOriginOff(double offset, const Vec3& x, const Vec3& n)
 {
   // Off the surface along its normal by a hundredth of Visibility's offset
   // (1e-7 of the scene's size, a few float ulps): TestSegments also shortens
   // the segment by the offset along the ray, which keeps it off its own
   // triangle without moving the shadow; a full offset along the normal would
   // move every hard shadow edge by about that much (1e-5 of the scene).
-  return x + 0.01 * this->Occluders->Offset() * n;
+  return x + 0.01 * offset * n;
+}
+
+Vec3 DirectLighting::VisibilityPoint(const Vec3& x, const Vec3& inner, double fraction) const
+{
+  return VisibilityPointToward(this->Occluders ? this->Occluders->Offset() : 0.0, x, inner, fraction);
+}
+
+Vec3 DirectLighting::SharedVertexVisibility(const Scene& scene, std::size_t source, const Vec3& x) const
+{
+  return SharedVertexPoint(this->Occluders ? this->Occluders->Offset() : 0.0, scene, source, x);
+}
+
+Vec3 DirectLighting::RayOrigin(const Vec3& x, const Vec3& n) const
+{
+  return RayOriginOff(this->Occluders->Offset(), x, n);
 }
 
 std::size_t DirectLighting::RaysCast() const

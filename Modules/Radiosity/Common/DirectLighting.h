@@ -168,6 +168,15 @@ private:
   const Visibility* Occluders = nullptr; ///< OwnOccluders, or the caller's
 };
 
+/// The point-placement rules of DirectLighting (VisibilityPoint,
+/// SharedVertexVisibility, RayOrigin) for rays of any visibility structure
+/// of self-intersection offset `offset` (Visibility::Offset()): face cluster
+/// radiosity casts its emitters' shadow rays from the same points as its
+/// punctual lights'.
+Vec3 VisibilityPointToward(double offset, const Vec3& x, const Vec3& inner, double fraction);
+Vec3 SharedVertexPoint(double offset, const Scene& scene, std::size_t source, const Vec3& x);
+Vec3 RayOriginOff(double offset, const Vec3& x, const Vec3& n);
+
 /// The scene's lights rescaled: every punctual intensity and the sky radiance times `scale`.
 LightSet ScaledLights(const LightSet& lights, double scale);
 } // namespace radiosity

@@ -183,14 +183,14 @@ std::int32_t FaceClusterRadiosity::NewElement(
         e.LastIncrement[b][c] += e.PushE[a * ne + b] * p.LastIncrement[a][c];
       }
     }
-    if (!p.PunctualFit.empty())
+    if (!p.ExactFit.empty())
     {
-      e.PunctualFit.resize(ne, IrradianceVector{});
+      e.ExactFit.resize(ne, IrradianceVector{});
       for (int b = 0; b < ne; ++b)
       {
         for (int a = 0; a < ne; ++a)
         {
-          e.PunctualFit[b][c] += e.PushE[a * ne + b] * p.PunctualFit[a][c];
+          e.ExactFit[b][c] += e.PushE[a * ne + b] * p.ExactFit[a][c];
         }
       }
     }
@@ -293,7 +293,18 @@ void FaceClusterRadiosity::Subdivide(std::int32_t e)
   // Irradiance lives at the leaves only.
   std::fill(parent.Irradiance.begin(), parent.Irradiance.end(), IrradianceVector{});
   std::fill(parent.LastIncrement.begin(), parent.LastIncrement.end(), IrradianceVector{});
-  parent.PunctualFit.clear();
+  parent.ExactFit.clear();
+  // The lights it took in the first iteration: its children, new leaves,
+  // take them anew (ResolveLights), each with its own fit.
+  const std::size_t ne = static_cast<std::size_t>(this->IrradianceBasis.Size());
+  if (this->AcceptedLights.size() >= (static_cast<std::size_t>(e) + 1) * ne)
+  {
+    std::fill_n(this->AcceptedLights.begin() + e * ne, ne, IrradianceVector{});
+  }
+  if (this->AcceptedPunctual.size() >= (static_cast<std::size_t>(e) + 1) * ne)
+  {
+    std::fill_n(this->AcceptedPunctual.begin() + e * ne, ne, IrradianceVector{});
+  }
 }
 
 bool FaceClusterRadiosity::HasUnshot(const FaceClusterElement& e) const
@@ -365,7 +376,7 @@ std::vector<IrradianceVector> FaceClusterRadiosity::LightAtNodes(
   }
   if (spread)
   {
-    // The output shows the punctual lights' exact light (ShownPunctual), so
+    // The output shows the punctual lights' exact light (ShownExact), so
     // their fit matters only for what the element reflects; the sky's fit
     // is shown.
     const double reflectance = MaxComponent(RGB(e.Data.ReflectanceMax));
@@ -461,16 +472,30 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
   return RunWithThreads(this->Settings.Threads, [&]() -> SolverStatistics {
     const Scene& scene = this->GetScene();
     double emitted = 0.0, brightest = 0.0;
+    std::vector<std::uint32_t> emitters;
+    std::vector<RGB> emission;
     for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
     {
-      const RGB emission = this->EmissionOf(static_cast<std::uint32_t>(t));
-      emitted += Mean(emission) * scene.Area(t);
-      brightest = std::max(brightest, Mean(emission));
+      const RGB e = this->EmissionOf(static_cast<std::uint32_t>(t));
+      emitted += Mean(e) * scene.Area(t);
+      brightest = std::max(brightest, Mean(e));
+      if (MaxComponent(e) > 0.0 && emitters.size() <= static_cast<std::size_t>(this->Settings.ExactEmitterTriangles))
+      {
+        emitters.push_back(static_cast<std::uint32_t>(t));
+        emission.push_back(e);
+      }
+    }
+    // The emitters' direct light shown exactly where they are few.
+    this->ExactEmitters.reset();
+    if (!emitters.empty() && emitters.size() <= static_cast<std::size_t>(this->Settings.ExactEmitterTriangles))
+    {
+      this->ExactEmitters = std::make_unique<FaceClusterExactEmitters>(*this->Visibility, emitters, emission);
     }
     this->Lights.reset();
     if (!this->Lighting.Empty())
     {
-      this->Lights = std::make_unique<DirectLighting>(scene, this->Lighting, this->Settings.SkySamples);
+      this->Lights = std::make_unique<DirectLighting>(
+        scene, this->Lighting, this->Settings.SkySamples, &this->Visibility->AllTriangles());
       const DirectLighting::PowerEstimate light = this->Lights->EstimatePower();
       stats.LightPowerW = light.Power;
       emitted += light.Power;
@@ -614,7 +639,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
           e.Rule.Phi.capacity() + e.Rule.Dual.capacity() + e.Rule.Weights.capacity()) * sizeof(double) +
         (e.Rule.Points.capacity() + e.Rule.Normals.capacity()) * sizeof(Vec3) +
         (e.Unshot.capacity() + e.Next.capacity()) * sizeof(RGB) +
-        (e.Irradiance.capacity() + e.LastIncrement.capacity() + e.PunctualFit.capacity()) * sizeof(IrradianceVector);
+        (e.Irradiance.capacity() + e.LastIncrement.capacity() + e.ExactFit.capacity()) * sizeof(IrradianceVector);
     }
     this->Stats.SolutionBytes = bytes;
     this->Stats.SolveSeconds = clock.Seconds();

@@ -26,6 +26,7 @@
 #define Radiosity_FaceClusterRadiosity_h
 
 #include "Radiosity/Common/DirectLighting.h"
+#include "Radiosity/FaceCluster/FaceClusterExactEmitters.h"
 #include "Radiosity/FaceCluster/FaceClusterTransfer.h"
 #include "Radiosity/Common/ProbeEvaluator.h"
 #include "Radiosity/Common/SolutionMesh.h"
@@ -79,6 +80,14 @@ struct FaceClusterSettings
   /// lamp's falloff, a hard shadow edge): the lights are exact at every
   /// node, and the basis can only follow them on elements small enough.
   int MaxLightBisections = 10;
+  /// Up to this many emitting triangles, the output shows their direct
+  /// light exactly, as it shows the punctual lights' (ShownExact): each
+  /// output point takes their exact vector form factors with shadow rays
+  /// (TriangleGather) plus the expansion less the first iteration's fit of
+  /// them. The fit of a lamp's light drew the glossy statue's blotches and
+  /// dark rims. Its cost is about 4 rays per emitting triangle per output
+  /// point (7 points per input triangle); 0: the fit everywhere.
+  int ExactEmitterTriangles = 64;
   /// In a scene that encloses every triangle (SceneIsEnclosed: no ray from
   /// a surface escapes), all the light shot lands on a surface, so from
   /// the second bounce on each iteration's received power is scaled to the
@@ -122,11 +131,12 @@ struct FaceClusterElement
   /// leaves' nodes below: the emitter bounds of the transfer error (3.3.2).
   double UnshotMin = 0.0, UnshotMax = 0.0, NextMin = 0.0, NextMax = 0.0;
   std::vector<IrradianceVector> Irradiance; ///< N_e coefficients, leaves only
-  /// The punctual lights' part of Irradiance (their fit where a leaf took
-  /// them, pushed down as Irradiance is when it is subdivided later): what
-  /// the output replaces by their exact light (ShownExpansion). Empty
-  /// without punctual lights.
-  std::vector<IrradianceVector> PunctualFit;
+  /// The part of Irradiance that the output replaces by the exact light
+  /// (ShownExpansion, ShownExact): the first iteration's fit of the
+  /// punctual lights and, where they are few (ExactEmitterTriangles), of
+  /// the emitters' direct light; pushed down as Irradiance is when the
+  /// leaf is subdivided later. Empty where nothing is shown exactly.
+  std::vector<IrradianceVector> ExactFit;
   std::vector<IrradianceVector> LastIncrement;
   /// Per channel, the bounds of the expansion's components at the nodes:
   /// the limiter of Expansion (leaves, after the solve).
@@ -306,17 +316,22 @@ private:
   /// by its own basis, at x (the vertex output's value).
   IrradianceVector WholeTriangleExpansion(std::int32_t e, const Vec3& x) const;
   /// What the output shows of leaf e's expansion at x: with punctual
-  /// lights, the expansion less its fit of them (PunctualExpansion), to
-  /// which the output adds their exact light at the point itself
-  /// (ShownPunctual); without, the expansion.
+  /// lights or few emitters, the expansion less its fit of their direct
+  /// light (ExactExpansion), to which the output adds their exact light
+  /// at the point itself (ShownExact); without, the expansion.
   IrradianceVector ShownExpansion(std::int32_t e, const Vec3& x) const;
-  /// The punctual lights' exact vector irradiance at x on input triangle t
-  /// (normal n), seen from inside t where x is on its boundary
-  /// (DirectLighting::SharedVertexVisibility); zero without them.
-  IrradianceVector ShownPunctual(std::uint32_t t, const Vec3& x, const Vec3& n) const;
+  /// The punctual lights' and the emitters' (when shown exactly) exact
+  /// vector irradiance at x on input triangle t (normal n), seen from
+  /// inside t where x is on its boundary (SharedVertexPoint); zero
+  /// without them.
+  IrradianceVector ShownExact(std::uint32_t t, const Vec3& x, const Vec3& n) const;
   bool ShowsExactPunctual() const { return this->Lights && this->Lights->HasPunctualLights(); }
-  /// Leaf e's PunctualFit at x (zero where it has none).
-  IrradianceVector PunctualExpansion(std::int32_t e, const Vec3& x) const;
+  bool ShowsExact() const { return this->ShowsExactPunctual() || this->ExactEmitters; }
+  /// The emitting triangles whose direct light the output shows exactly
+  /// (ExactEmitterTriangles); null: none.
+  std::unique_ptr<FaceClusterExactEmitters> ExactEmitters;
+  /// Leaf e's ExactFit at x (zero where it has none).
+  IrradianceVector ExactExpansion(std::int32_t e, const Vec3& x) const;
   /// Lowest and Highest of every leaf.
   void BoundLeafExpansions();
   /// An element of `cluster`, or with `corners`, of a part of that
@@ -364,11 +379,19 @@ private:
   /// First iteration: the lights at the leaves not checked yet (fitted
   /// into Accepted, or the leaf subdivided); true when any was subdivided.
   bool ResolveLights(std::vector<char>& checked);
-  /// 3.3.4: push from the parent (`up`, null at the top), store at the
-  /// leaves, pull the new unshot radiosity.
-  void PushPull(std::int32_t i, const IrradianceVector* up);
-  /// Per element, N_e coefficients: the irradiance accepted this iteration.
+  /// 3.3.4: push from the parent (`up`, null at the top; `upExact`: the
+  /// part of it shown exactly, first iteration), store at the leaves, pull
+  /// the new unshot radiosity.
+  void PushPull(std::int32_t i, const IrradianceVector* up, const IrradianceVector* upExact);
+  /// Per element, N_e coefficients: the irradiance accepted this iteration
+  /// through transfers (in the first, all from the emitters).
   std::vector<IrradianceVector> Accepted;
+  /// First iteration, per element, N_e coefficients: the lights' fit
+  /// accepted (ResolveLights), and its punctual part. Apart from Accepted
+  /// because an element subdivided after it took them drops them, its
+  /// children taking the lights anew (Subdivide), where its transfers'
+  /// light is pushed down or redone (BisectOnTotals).
+  std::vector<IrradianceVector> AcceptedLights, AcceptedPunctual;
   /// The power (W, mean of the channels) that the leaves' new unshot
   /// radiosity sends out of them: the next shot's, for the decay rate.
   double NextPower = 0.0;

@@ -2,10 +2,11 @@
 // expansions evaluated on the input triangles, at their vertices and at
 // probes (section 3.5, and SPEC: probes from the vector irradiance bases).
 // Punctual lights are shown exactly: each point takes their closed form
-// with its own shadow ray (ShownPunctual) plus the expansion less its fit
+// with its own shadow ray (ShownExact) plus the expansion less its fit
 // of them (ShownExpansion).
 #include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
 #include "Radiosity/Common/MeshProbeTracker.h"
+#include "Radiosity/Common/Visibility.h"
 #include "Radiosity/Common/ThreadLimit.h"
 
 #include <tbb/parallel_for.h>
@@ -188,10 +189,10 @@ IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const
   return this->Expansion(this->LeafAt(t, x), x);
 }
 
-IrradianceVector FaceClusterRadiosity::PunctualExpansion(std::int32_t e, const Vec3& x) const
+IrradianceVector FaceClusterRadiosity::ExactExpansion(std::int32_t e, const Vec3& x) const
 {
   IrradianceVector v{};
-  if (e < 0 || this->Nodes[e].PunctualFit.empty())
+  if (e < 0 || this->Nodes[e].ExactFit.empty())
   {
     return v;
   }
@@ -203,7 +204,7 @@ IrradianceVector FaceClusterRadiosity::PunctualExpansion(std::int32_t e, const V
   {
     for (int c = 0; c < 3; ++c)
     {
-      v[c] += phi[a] * leaf.PunctualFit[a][c];
+      v[c] += phi[a] * leaf.ExactFit[a][c];
     }
   }
   return v;
@@ -211,7 +212,7 @@ IrradianceVector FaceClusterRadiosity::PunctualExpansion(std::int32_t e, const V
 
 IrradianceVector FaceClusterRadiosity::ShownExpansion(std::int32_t e, const Vec3& x) const
 {
-  if (!this->ShowsExactPunctual() || e < 0)
+  if (!this->ShowsExact() || e < 0)
   {
     return this->Expansion(e, x);
   }
@@ -219,7 +220,7 @@ IrradianceVector FaceClusterRadiosity::ShownExpansion(std::int32_t e, const Vec3
   // the limiter): a hard shadow or a spot's rim is a step that no basis
   // follows, and the fit's overshoot there drew black and bright specks.
   const IrradianceVector total = this->Expansion(e, x, false);
-  const IrradianceVector punctual = this->PunctualExpansion(e, x);
+  const IrradianceVector punctual = this->ExactExpansion(e, x);
   IrradianceVector rest;
   for (int c = 0; c < 3; ++c)
   {
@@ -228,21 +229,49 @@ IrradianceVector FaceClusterRadiosity::ShownExpansion(std::int32_t e, const Vec3
   return rest;
 }
 
-IrradianceVector FaceClusterRadiosity::ShownPunctual(std::uint32_t t, const Vec3& x, const Vec3& n) const
+IrradianceVector FaceClusterRadiosity::ShownExact(std::uint32_t t, const Vec3& x, const Vec3& n) const
 {
-  if (!this->ShowsExactPunctual())
+  IrradianceVector v{};
+  if (!this->ShowsExact())
   {
-    return IrradianceVector{};
+    return v;
   }
-  return this->Lights->PunctualVectorSeenFrom(x, this->Lights->SharedVertexVisibility(this->GetScene(), t, x), n);
+  // The rays leave from inside t where x is on its boundary, so that a
+  // vertex at a seam (the floor's edge at a wall) does not see through the
+  // adjacent surface.
+  const radiosity::Visibility& rays = this->Visibility->AllTriangles();
+  const Vec3 from = SharedVertexPoint(rays.Offset(), this->GetScene(), t, x);
+  if (this->ShowsExactPunctual())
+  {
+    v = this->Lights->PunctualVectorSeenFrom(x, from, n);
+  }
+  if (this->ExactEmitters)
+  {
+    const IrradianceVector emitted = this->ExactEmitters->At(t, x, n, RayOriginOff(rays.Offset(), from, n));
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] += emitted[c];
+    }
+  }
+  return v;
 }
 
 RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec3& n) const
 {
-  // The expansion less its fit of the punctual lights, plus the punctual
-  // lights at x itself.
-  const RGB punctual = this->ShowsExactPunctual() ? this->Lights->Punctual(x, n) : RGB(0.0);
-  return Received(this->ShownExpansion(this->LeafAt(t, x), x), n) + punctual;
+  // The expansion less its fit of the exactly shown light, plus that light
+  // at x itself (the punctual lights' with the shadow ray from x itself,
+  // as before the emitters were shown exactly).
+  if (!this->ShowsExact())
+  {
+    return Received(this->ShownExpansion(this->LeafAt(t, x), x), n);
+  }
+  RGB exact = this->ShowsExactPunctual() ? this->Lights->Punctual(x, n) : RGB(0.0);
+  if (this->ExactEmitters)
+  {
+    const radiosity::Visibility& rays = this->Visibility->AllTriangles();
+    exact += Received(this->ExactEmitters->At(t, x, n, RayOriginOff(rays.Offset(), x, n)), n);
+  }
+  return Received(this->ShownExpansion(this->LeafAt(t, x), x), n) + exact;
 }
 
 IrradianceVector FaceClusterRadiosity::WholeTriangleExpansion(std::int32_t e, const Vec3& x) const
@@ -300,7 +329,7 @@ std::vector<std::array<double, 9>> FaceClusterRadiosity::VertexIrradianceVectors
         const IrradianceVector e = element < 0 || this->Nodes[element].IsLeaf()
           ? this->ShownExpansion(element, x) // zero without a solution (no light)
           : this->WholeTriangleExpansion(element, x);
-        const IrradianceVector punctual = this->ShownPunctual(static_cast<std::uint32_t>(t), x, scene.Normal(t));
+        const IrradianceVector punctual = this->ShownExact(static_cast<std::uint32_t>(t), x, scene.Normal(t));
         for (int c = 0; c < 3; ++c)
         {
           corners[k][c] = e[c] + punctual[c];
@@ -391,9 +420,9 @@ SolutionMesh FaceClusterRadiosity::Surface() const
       {
         const Vec3 corner = scene.Vertex(t, k);
         s.Samples.Corner[k] = Received(this->ShownExpansion(this->PartAt(element, corner), corner), n) +
-          Received(this->ShownPunctual(id, corner, n), n);
+          Received(this->ShownExact(id, corner, n), n);
       }
-      s.Samples.Centre = Received(this->ShownExpansion(s.Leaf, centre), n) + Received(this->ShownPunctual(id, centre, n), n);
+      s.Samples.Centre = Received(this->ShownExpansion(s.Leaf, centre), n) + Received(this->ShownExact(id, centre, n), n);
     },
     [&](std::size_t t, const Sampled& s) {
       const auto id = static_cast<std::uint32_t>(t);

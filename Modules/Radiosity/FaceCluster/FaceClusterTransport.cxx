@@ -346,7 +346,7 @@ bool FaceClusterRadiosity::ResolveLights(std::vector<char>& checked)
   // between the nodes, a shadow edge among its visibility samples; a floor
   // cluster whose nodes all lay outside a spot's cone received nothing).
   // The punctual lights' part counts times the leaf's reflectance: the
-  // output shows their exact light at each point (ShownPunctual), so their
+  // output shows their exact light at each point (ShownExact), so their
   // fit serves only the light the leaf reflects. Before, every cluster was
   // opened down to its triangles, and the solution grew with the input (a
   // 940k-triangle bunny room with one point light: 949,638 elements,
@@ -369,7 +369,7 @@ bool FaceClusterRadiosity::ResolveLights(std::vector<char>& checked)
   const int ne = this->IrradianceBasis.Size();
   std::vector<double> spread(leaves.size(), 0.0);
   std::vector<IrradianceVector> fitted(leaves.size() * ne, IrradianceVector{});
-  // Their punctual part alone (PunctualFit).
+  // Their punctual part alone (ExactFit).
   const bool punctual = this->Lights->HasPunctualLights();
   std::vector<IrradianceVector> fittedPunctual(punctual ? leaves.size() * ne : 0, IrradianceVector{});
   WorkShare& share = ShareOrAlone(this->Settings.Share);
@@ -468,19 +468,15 @@ bool FaceClusterRadiosity::ResolveLights(std::vector<char>& checked)
       }
     }
     // An element that stays a leaf receives the lights as a transfer.
-    FaceClusterElement& e = this->Nodes[i];
-    if (punctual)
-    {
-      e.PunctualFit.resize(ne, IrradianceVector{});
-    }
     for (int a = 0; a < ne; ++a)
     {
+      const std::size_t at = static_cast<std::size_t>(i) * ne + a;
       for (int c = 0; c < 3; ++c)
       {
-        this->Accepted[static_cast<std::size_t>(i) * ne + a][c] += fitted[k * ne + a][c];
+        this->AcceptedLights[at][c] += fitted[k * ne + a][c];
         if (punctual)
         {
-          e.PunctualFit[a][c] += fittedPunctual[k * ne + a][c];
+          this->AcceptedPunctual[at][c] += fittedPunctual[k * ne + a][c];
         }
       }
     }
@@ -544,6 +540,8 @@ void FaceClusterRadiosity::Transport()
   this->AcceptedFrom.clear();
   const std::size_t ne = static_cast<std::size_t>(this->IrradianceBasis.Size());
   this->Accepted.assign(this->Nodes.size() * ne, IrradianceVector{});
+  this->AcceptedLights.clear();
+  this->AcceptedPunctual.clear();
   std::vector<PendingTransfer> pending, next;
   for (std::int32_t i : this->Top)
   {
@@ -574,6 +572,14 @@ void FaceClusterRadiosity::Transport()
       leafWhenVisited.push_back(this->Nodes[visited].IsLeaf() ? 1 : 0);
     }
     this->Accepted.resize(this->Nodes.size() * ne, IrradianceVector{});
+    if (lights)
+    {
+      this->AcceptedLights.resize(this->Nodes.size() * ne, IrradianceVector{});
+      if (this->Lights->HasPunctualLights())
+      {
+        this->AcceptedPunctual.resize(this->Nodes.size() * ne, IrradianceVector{});
+      }
+    }
     if (!pending.empty())
     {
       next.clear();
@@ -605,19 +611,33 @@ void FaceClusterRadiosity::Transport()
   this->TotalResidual.clear();
   this->AcceptedFrom.clear();
   this->Accepted.resize(this->Nodes.size() * ne, IrradianceVector{});
+  if (lights)
+  {
+    this->AcceptedLights.resize(this->Nodes.size() * ne, IrradianceVector{});
+    this->AcceptedPunctual.resize(this->Lights->HasPunctualLights() ? this->Nodes.size() * ne : 0, IrradianceVector{});
+  }
   this->NextPowerRGB = RGB(0.0);
   this->ReceivedPower = RGB(0.0);
   for (std::int32_t i : this->Top)
   {
-    this->PushPull(i, nullptr);
+    this->PushPull(i, nullptr, nullptr);
   }
+  this->AcceptedLights.clear();
+  this->AcceptedLights.shrink_to_fit();
+  this->AcceptedPunctual.clear();
+  this->AcceptedPunctual.shrink_to_fit();
   this->NextPower = Mean(this->NextPowerRGB);
 }
 
-void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up)
+void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up, const IrradianceVector* upExact)
 {
   const int ne = this->IrradianceBasis.Size(), nb = this->RadiosityBasis.Size();
-  std::vector<IrradianceVector> dE(ne, IrradianceVector{});
+  // In the first iteration, with lights or emitters shown exactly, the
+  // part of dE that the output replaces by the exact light (ExactFit):
+  // every transfer's (all from the emitters then) where the emitters are
+  // shown exactly, and the punctual lights' fit.
+  const bool exact = this->Iteration == 0 && this->ShowsExact();
+  std::vector<IrradianceVector> dE(ne, IrradianceVector{}), dExact(exact ? ne : 0, IrradianceVector{});
   FaceClusterElement& e = this->Nodes[i];
   if (up)
   {
@@ -633,16 +653,27 @@ void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up)
         for (int a = 0; a < ne; ++a)
         {
           dE[b][c] += e.PushE[a * ne + b] * up[a][c];
+          if (exact)
+          {
+            dExact[b][c] += e.PushE[a * ne + b] * upExact[a][c];
+          }
         }
       }
     }
   }
-  const IrradianceVector* received = &this->Accepted[static_cast<std::size_t>(i) * ne];
+  const std::size_t at = static_cast<std::size_t>(i) * ne;
+  const IrradianceVector* received = &this->Accepted[at];
+  const IrradianceVector* lights = this->AcceptedLights.empty() ? nullptr : &this->AcceptedLights[at];
+  const IrradianceVector* punctual = this->AcceptedPunctual.empty() ? nullptr : &this->AcceptedPunctual[at];
   for (int a = 0; a < ne; ++a)
   {
     for (int c = 0; c < 3; ++c)
     {
-      dE[a][c] += received[a][c];
+      dE[a][c] += received[a][c] + (lights ? lights[a][c] : Vec3(0.0));
+      if (exact)
+      {
+        dExact[a][c] += (this->ExactEmitters ? received[a][c] : Vec3(0.0)) + (punctual ? punctual[a][c] : Vec3(0.0));
+      }
     }
   }
   std::fill(e.Next.begin(), e.Next.end(), RGB(0.0));
@@ -704,12 +735,16 @@ void FaceClusterRadiosity::PushPull(std::int32_t i, const IrradianceVector* up)
         e.LastIncrement[a][c] = dE[a][c] + selfLight[a][c];
       }
     }
+    if (exact)
+    {
+      e.ExactFit = std::move(dExact);
+    }
     return;
   }
   const std::int32_t children[2] = { e.Child[0], e.Child[1] };
   for (std::int32_t k : children)
   {
-    this->PushPull(k, dE.data());
+    this->PushPull(k, dE.data(), exact ? dExact.data() : nullptr);
   }
   // Pull: the children's radiosity fitted by the parent's basis.
   FaceClusterElement& p = this->Nodes[i];

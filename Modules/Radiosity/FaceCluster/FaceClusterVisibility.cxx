@@ -142,15 +142,22 @@ void FaceClusterVisibility::Visible(const Vec3& x, const Vec3* ys, std::size_t n
   std::uint32_t receiver, std::uint32_t emitter, unsigned char* visible) const
 {
   const FaceClusterHierarchy& h = this->Source;
-  std::call_once(this->Built, [&]() {
-    this->Rays = std::make_unique<Visibility>(h.GetScene(), Visibility::AllTriangles(h.GetScene()));
-  });
+  const Visibility& rays = this->AllTriangles();
   OwnTriangles own{ h, {}, 0 };
   own.Skips = OwnRanges(h, receiver, emitter, own.Skip);
   const std::function<bool(std::uint32_t)> passes = std::cref(own);
   thread_local std::vector<Vec3> from;
   from.assign(n, x);
-  this->Rays->TestSegmentsPassing(from.data(), ys, n, passes, visible);
+  rays.TestSegmentsPassing(from.data(), ys, n, passes, visible);
+}
+
+const Visibility& FaceClusterVisibility::AllTriangles() const
+{
+  std::call_once(this->Built, [&]() {
+    const Scene& scene = this->Source.GetScene();
+    this->Rays = std::make_unique<Visibility>(scene, Visibility::AllTriangles(scene));
+  });
+  return *this->Rays;
 }
 
 std::size_t FaceClusterVisibility::NodesVisited()

@@ -65,6 +65,9 @@ public:
     std::vector<TriangleCorners>& out) const;
 
   const FaceClusterHierarchy& Hierarchy() const { return this->Source; }
+  /// The Embree BVH over every triangle (Visible's), built on the first
+  /// call: the output's shadow rays use it too.
+  const Visibility& AllTriangles() const;
 
   /// Clusters visited by the last calls (for the statistics), per thread.
   static std::size_t NodesVisited();

@@ -262,9 +262,35 @@ bool Intersect(const Polygon2& p, const Polygon2& q, Polygon2& out)
   return true;
 }
 
+// What the backprojection sums over the visible part: the form factor
+// (Scalar), or the vector form factor whose dot product with n is it
+// (Vector: the irradiance vector of vector radiosity, what a glossy display
+// reads). Both are Lambert's contour integral clipped to x's horizon, so
+// both are additive over the fragments.
+struct ScalarFactor
+{
+  using Value = double;
+  static double Of(const Vec3& x, const Vec3& n, const Vec3* poly, std::size_t count)
+  {
+    return PointToPolygonFormFactor(x, n, poly, count);
+  }
+  static double NonNegative(double f) { return std::max(0.0, f); }
+};
+
+struct VectorFactor
+{
+  using Value = Vec3;
+  static Vec3 Of(const Vec3& x, const Vec3& n, const Vec3* poly, std::size_t count)
+  {
+    return PointToPolygonVectorFormFactor(x, poly, count, &n);
+  }
+  static Vec3 NonNegative(const Vec3& f) { return f; }
+};
+
 // Lambert's contour formula over a convex polygon of the source's plane
 // (fans beyond 8 corners, the contour kernel's stack size).
-double FormFactorOf(const SourceFrame& frame, const Vec3& x, const Vec3& n, const Polygon2& piece)
+template <typename Factor = ScalarFactor>
+typename Factor::Value FormFactorOf(const SourceFrame& frame, const Vec3& x, const Vec3& n, const Polygon2& piece)
 {
   Vec3 poly3[Polygon2::Capacity];
   for (int i = 0; i < piece.N; ++i)
@@ -273,12 +299,13 @@ double FormFactorOf(const SourceFrame& frame, const Vec3& x, const Vec3& n, cons
   }
   if (piece.N <= 8)
   {
-    return PointToPolygonFormFactor(x, n, poly3, static_cast<std::size_t>(piece.N));
+    return Factor::Of(x, n, poly3, static_cast<std::size_t>(piece.N));
   }
-  double factor = 0.0;
+  typename Factor::Value factor(0.0);
   for (int i = 1; i + 1 < piece.N; ++i)
   {
-    factor += PointToTriangleFormFactor(x, n, poly3[0], poly3[i], poly3[i + 1]);
+    const Vec3 fan[3] = { poly3[0], poly3[i], poly3[i + 1] };
+    factor += Factor::Of(x, n, fan, 3);
   }
   return factor;
 }
@@ -296,8 +323,9 @@ double FormFactorOf(const SourceFrame& frame, const Vec3& x, const Vec3& n, cons
 // it by 2e-9. Here only the shadows are cut, and they lie away from the
 // foot. False when a piece outgrew Polygon2's capacity (then nothing is
 // computed).
+template <typename Factor = ScalarFactor>
 bool SourceLessShadows(const SourceFrame& frame, const Vec3& x, const Vec3& n,
-  const std::vector<BlockerLevels>& blockers, double& factor)
+  const std::vector<BlockerLevels>& blockers, typename Factor::Value& factor)
 {
   const double height = glm::dot(x, frame.M) - frame.PlaneOffset;
   const double slack = SlabSlack(frame, x, height);
@@ -305,7 +333,7 @@ bool SourceLessShadows(const SourceFrame& frame, const Vec3& x, const Vec3& n,
   thread_local std::vector<Polygon2> shadows, pieces, next;
   shadows.clear();
   const Box2 sourceBox(frame.Whole);
-  factor = PointToPolygonFormFactor(x, n, frame.Source.data(), 3);
+  factor = Factor::Of(x, n, frame.Source.data(), 3);
   for (const BlockerLevels& blocker : blockers)
   {
     Polygon2 shadow, part;
@@ -346,7 +374,7 @@ bool SourceLessShadows(const SourceFrame& frame, const Vec3& x, const Vec3& n,
     }
     for (const Polygon2& piece : pieces)
     {
-      factor -= FormFactorOf(frame, x, n, piece);
+      factor -= FormFactorOf<Factor>(frame, x, n, piece);
     }
     shadows.push_back(part);
   }
@@ -362,28 +390,29 @@ constexpr double NearPlane = 1e-3;
 // returns (BlockerLevels), for the source of `frame`: the source less each
 // shadow in turn, as disjoint convex fragments (and near its plane,
 // SourceLessShadows).
-template <typename BlockerAt>
-double VisibleFromPoint(const SourceFrame& frame, const Vec3& x, const Vec3& n, std::size_t blockerCount,
-  const BlockerAt& blockerAt, bool* exact, std::size_t fragmentsLimit)
+template <typename Factor = ScalarFactor, typename BlockerAt>
+typename Factor::Value VisibleFromPoint(const SourceFrame& frame, const Vec3& x, const Vec3& n,
+  std::size_t blockerCount, const BlockerAt& blockerAt, bool* exact, std::size_t fragmentsLimit)
 {
+  using Value = typename Factor::Value;
   if (exact)
   {
     *exact = true;
   }
   if (!frame.Valid)
   {
-    return 0.0;
+    return Value(0.0);
   }
   const Vec3& m = frame.M;
   const double planeOffset = frame.PlaneOffset;
   const double height = glm::dot(x, m) - planeOffset;
   if (!(height > 0))
   {
-    return 0.0; // behind the one-sided source
+    return Value(0.0); // behind the one-sided source
   }
   if (blockerCount == 0)
   {
-    return PointToPolygonFormFactor(x, n, frame.Source.data(), 3);
+    return Factor::Of(x, n, frame.Source.data(), 3);
   }
 
   if (height < NearPlane * frame.Size)
@@ -394,10 +423,10 @@ double VisibleFromPoint(const SourceFrame& frame, const Vec3& x, const Vec3& n, 
     {
       near.push_back(blockerAt(b));
     }
-    double factor = 0.0;
-    if (SourceLessShadows(frame, x, n, near, factor))
+    Value factor(0.0);
+    if (SourceLessShadows<Factor>(frame, x, n, near, factor))
     {
-      return std::max(0.0, factor);
+      return Factor::NonNegative(factor);
     }
   }
 
@@ -440,24 +469,24 @@ double VisibleFromPoint(const SourceFrame& frame, const Vec3& x, const Vec3& n, 
     }
   }
 
-  double factor = 0.0;
+  Value factor(0.0);
   for (const Polygon2& piece : visible)
   {
-    factor += FormFactorOf(frame, x, n, piece);
+    factor += FormFactorOf<Factor>(frame, x, n, piece);
   }
-  return std::max(0.0, factor);
+  return Factor::NonNegative(factor);
 }
 
 // The backprojection for blockers of up to four corners; corners(b, out)
 // writes blocker b's corners to out and returns how many. Each blocker's
 // levels are found when the loop reaches it (it stops once nothing is left).
-template <typename Corners>
-double VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+template <typename Factor = ScalarFactor, typename Corners>
+typename Factor::Value VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& source,
   std::size_t blockerCount, const Corners& corners, bool* exact, std::size_t fragmentsLimit)
 {
   const SourceFrame frame(source);
   BlockerLevels current;
-  return VisibleFromPoint(frame, x, n, blockerCount,
+  return VisibleFromPoint<Factor>(frame, x, n, blockerCount,
     [&](std::size_t b) -> const BlockerLevels& {
       current.Size = corners(b, current.Corner);
       current.FindLevels(frame.M);
@@ -505,6 +534,17 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
     [blockers](std::size_t b, Vec3* out) {
       std::copy(blockers[b].Corners.begin(), blockers[b].Corners.begin() + blockers[b].Size, out);
       return blockers[b].Size;
+    },
+    exact, fragmentsLimit);
+}
+
+Vec3 VisibleVectorFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+  const TriangleCorners* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
+{
+  return VisibleFormFactorOf<VectorFactor>(x, n, source, blockerCount,
+    [blockers](std::size_t b, Vec3* out) {
+      std::copy(blockers[b].begin(), blockers[b].end(), out);
+      return 3;
     },
     exact, fragmentsLimit);
 }

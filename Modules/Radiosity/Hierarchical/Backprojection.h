@@ -36,6 +36,14 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
   const TriangleCorners* blockers, std::size_t blockerCount, bool* exact = nullptr,
   std::size_t fragmentsLimit = 4096);
 
+/// The vector form factor of the same visible part (Lambert's contour
+/// integral over its fragments, each clipped to x's horizon): its dot
+/// product with n is VisibleFormFactor's value. Face cluster radiosity's
+/// output shows an emitter's direct light with it, shadows exact.
+Vec3 VisibleVectorFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+  const TriangleCorners* blockers, std::size_t blockerCount, bool* exact = nullptr,
+  std::size_t fragmentsLimit = 4096);
+
 /// A planar convex blocker of three or four corners (in order around it).
 struct BlockerPolygon
 {

@@ -38,19 +38,13 @@
 
 #include "Radiosity/Common/Scene.h"
 #include "Radiosity/Common/SolutionMesh.h"
+#include "Radiosity/Common/TriangleGather.h"
 
 #include <array>
 #include <vector>
 
 namespace radiosity
 {
-/// A triangle with constant radiosity (W/m^2, RGB), front side right-handed.
-struct RadiantTriangle
-{
-  std::array<Vec3, 3> Corners;
-  RGB Radiosity{ 0.0 };
-};
-
 struct VectorGatherOptions
 {
   /// Strata per edge of a partly hidden source triangle (m x m strata).

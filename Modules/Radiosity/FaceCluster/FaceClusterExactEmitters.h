@@ -1,0 +1,62 @@
+// The emitters' direct light at an output point, exact: what face cluster
+// radiosity's output shows in place of its first iteration's fit of it
+// where the emitting triangles are few (FaceClusterSettings::
+// ExactEmitterTriangles), as it shows the punctual lights' closed form.
+//
+// For a point x (unit normal n) on input triangle t and each emitting
+// triangle s of emission B_s:
+//
+//   E(x) += B_s * F_vis(x, s)
+//
+// F_vis is the vector form factor of the part of s that no triangle hides
+// from x: the backprojection of Hardt & Teller section 5 (Backprojection.h,
+// VisibleVectorFormFactor), Lambert's contour integral over the visible
+// fragments, each clipped to x's horizon. Its blockers are the triangles in
+// the shaft between t and s (Haines & Wallace 1991, FaceClusterVisibility::
+// ShaftBlockers), found once per triangle and reused for its corners and
+// centre. So a penumbra is exact, not sampled. Beyond MaxBlockers in a
+// shaft, s's visibility is sampled instead (TriangleGather: four rays, then
+// 6 x 6 strata where they disagree).
+#ifndef Radiosity_FaceClusterExactEmitters_h
+#define Radiosity_FaceClusterExactEmitters_h
+
+#include "Radiosity/Common/TriangleGather.h"
+#include "Radiosity/Hierarchical/Backprojection.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace radiosity
+{
+class FaceClusterVisibility;
+
+class FaceClusterExactEmitters
+{
+public:
+  /// Emitting triangles `triangles` (scene ids) with their emission.
+  FaceClusterExactEmitters(
+    const FaceClusterVisibility& visibility, const std::vector<std::uint32_t>& triangles, const std::vector<RGB>& emission);
+
+  /// The emitters' vector irradiance (per channel) at x on triangle t
+  /// (normal n); `rayOrigin`: where a sampled shadow ray starts.
+  std::array<Vec3, 3> At(std::uint32_t t, const Vec3& x, const Vec3& n, const Vec3& rayOrigin) const;
+
+  std::size_t Size() const { return this->Ids.size(); }
+
+  /// Blockers in a shaft beyond which visibility is sampled.
+  static constexpr std::size_t MaxBlockers = 256;
+
+private:
+  const FaceClusterVisibility& Shafts;
+  std::vector<std::uint32_t> Ids;
+  std::vector<TriangleCorners> Corners;
+  std::vector<RGB> Emission;
+  /// Per emitter, its sampled gather (the fallback).
+  std::vector<TriangleGather> Sampled;
+  /// Which object a thread's cached shafts belong to (never reused, unlike an address).
+  std::uint64_t Generation = 0;
+};
+} // namespace radiosity
+
+#endif
