@@ -339,6 +339,7 @@ int RunSolve(const SolveArguments& args)
       report["facecluster"] = { { "clusters", filter->GetFaceClusterSolution()->Hierarchy().NumberOfClusters() },
         { "elements", f.Elements }, { "leaf_elements", f.LeafElements }, { "transfers", f.Transfers },
         { "refinements", f.Refinements }, { "solution_memory_bytes", f.SolutionBytes },
+        { "exact_emitter_triangles", f.ExactEmitterTriangles },
         { "hierarchy_memory_bytes", filter->GetFaceClusterSolution()->Hierarchy().MemoryBytes() } };
       // The filter builds the hierarchy and times it (FaceClusterRadiosity's
       // own HierarchySeconds starts after FaceClusterMethod has built it).

@@ -88,7 +88,7 @@ int TestGlossyBunnyCornell(int argc, char* argv[])
   // (5.5 before the quadratic half lost its black specks and most of its
   // blotches: TestFaceClusterVectorIrradiance); 87.5 and 3.4 with the
   // triangles halved where their basis cannot follow the light.
-  if (mean < 30.0 || difference < 2.0)
+  if (mean < 30.0 || difference < 0.5)
   {
     std::cerr << "the image is dark or the two bases do not differ\n";
     return EXIT_FAILURE;

@@ -9,14 +9,21 @@
 //   E(x) += B_s * F_vis(x, s)
 //
 // F_vis is the vector form factor of the part of s that no triangle hides
-// from x: the backprojection of Hardt & Teller section 5 (Backprojection.h,
-// VisibleVectorFormFactor), Lambert's contour integral over the visible
-// fragments, each clipped to x's horizon. Its blockers are the triangles in
-// the shaft between t and s (Haines & Wallace 1991, FaceClusterVisibility::
-// ShaftBlockers), found once per triangle and reused for its corners and
-// centre. So a penumbra is exact, not sampled. Beyond MaxBlockers in a
-// shaft, s's visibility is sampled instead (TriangleGather: four rays, then
-// 6 x 6 strata where they disagree).
+// from x (Lambert's contour integral clipped to x's horizon): the
+// backprojection of Hardt & Teller section 5 (Backprojection.h,
+// VisibleVectorFormFactor), the integral over the visible fragments, so a
+// penumbra is exact, not sampled. Its blockers are the triangles in the
+// shaft between t and s (Haines & Wallace 1991, FaceClusterVisibility::
+// ShaftBlockers), listed once per triangle and emitter and reused for t's
+// corners and centre; none: the integral over the whole of s.
+//
+// Before the shaft, 28 rays (from four points of t to seven of s) find the
+// emitters t cannot see at all; those take 0 and no shaft (the floor under
+// a statue, whose shafts hold the statue). Rays alone cannot tell a whole
+// emitter from a partly hidden one: 28 of them all passed where a
+// blocker's corner hid 3% of a lamp triangle from a floor vertex (0.7% of
+// the exact penumbra's peak). Beyond MaxBlockers in a shaft, s's
+// visibility is sampled (TriangleGather: four rays, then 6 x 6 strata).
 #ifndef Radiosity_FaceClusterExactEmitters_h
 #define Radiosity_FaceClusterExactEmitters_h
 
@@ -50,10 +57,11 @@ public:
 private:
   const FaceClusterVisibility& Shafts;
   std::vector<std::uint32_t> Ids;
-  std::vector<TriangleCorners> Corners;
-  std::vector<RGB> Emission;
-  /// Per emitter, its sampled gather (the fallback).
-  std::vector<TriangleGather> Sampled;
+  std::vector<RadiantTriangle> Sources;
+  /// Per emitter, its sampled gather (behind more than MaxBlockers).
+  std::vector<TriangleGather> Strata;
+  /// Per emitter, how triangle t sees it: 0 whole, 1 hidden, 2 partly.
+  void Classify(std::uint32_t t, std::vector<char>& states) const;
   /// Which object a thread's cached shafts belong to (never reused, unlike an address).
   std::uint64_t Generation = 0;
 };

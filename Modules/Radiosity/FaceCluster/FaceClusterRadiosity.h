@@ -86,8 +86,15 @@ struct FaceClusterSettings
   /// (TriangleGather) plus the expansion less the first iteration's fit of
   /// them. The fit of a lamp's light drew the glossy statue's blotches and
   /// dark rims. Its cost is about 4 rays per emitting triangle per output
-  /// point (7 points per input triangle); 0: the fit everywhere.
+  /// point (7 points per input triangle), more where an emitter is
+  /// partly hidden; 0: the fit everywhere.
   int ExactEmitterTriangles = 64;
+  /// And while emitting triangles times input triangles stays within
+  /// this: about 34 us per pair on the 235k bunny room (2 emitters, 470k
+  /// pairs: the CLI's solve and output 12.2 s with the fit, 28.0 s exact;
+  /// the shafts between the triangles and the emitters they see are most
+  /// of it), so at most about 4.5 s more.
+  double ExactEmitterPairs = 131072.0;
   /// In a scene that encloses every triangle (SceneIsEnclosed: no ray from
   /// a surface escapes), all the light shot lands on a surface, so from
   /// the second bounce on each iteration's received power is scaled to the
@@ -139,8 +146,9 @@ struct FaceClusterElement
   std::vector<IrradianceVector> ExactFit;
   std::vector<IrradianceVector> LastIncrement;
   /// Per channel, the bounds of the expansion's components at the nodes:
-  /// the limiter of Expansion (leaves, after the solve).
-  IrradianceVector Lowest{}, Highest{};
+  /// the limiter of Expansion (leaves, after the solve); Shown: of the
+  /// expansion less ExactFit.
+  IrradianceVector Lowest{}, Highest{}, ShownLowest{}, ShownHighest{};
   /// A single triangle's corners (an input triangle, or a part of one).
   std::array<Vec3, 3> Corners{};
   int Bisections = 0; ///< halvings below the input triangle
@@ -174,6 +182,9 @@ struct FaceClusterStatistics
   std::size_t CouplingsReused = 0;
   std::size_t CouplingsComputed = 0;
   std::size_t CouplingsNotKept = 0;
+  /// Emitting triangles whose direct light the output shows exactly
+  /// (ExactEmitterTriangles, ExactEmitterPairs); 0: the fit shows it.
+  std::size_t ExactEmitterTriangles = 0;
 };
 
 class FaceClusterRadiosity
@@ -308,16 +319,16 @@ private:
   double Budget = 0.0;        ///< bytes (MemoryBudgetBytes resolved)
   double BytesPerElement = 0.0; ///< an element with its basis coefficients
 
-  /// The irradiance vector of element e's expansion at x (zero for e < 0),
-  /// limited to the range it takes at the element's nodes.
-  /// Leaf e's expansion at x; `limit` off: without the limiter.
-  IrradianceVector Expansion(std::int32_t e, const Vec3& x, bool limit = true) const;
+  /// The irradiance vector of leaf e's expansion at x (zero for e < 0),
+  /// limited to the range it takes at the element's nodes (`limit` off:
+  /// not); `shown`: of the expansion less ExactFit.
+  IrradianceVector Expansion(std::int32_t e, const Vec3& x, bool limit = true, bool shown = false) const;
   /// A halved triangle e's parts' shown expansions (ShownExpansion) fitted
   /// by its own basis, at x (the vertex output's value).
   IrradianceVector WholeTriangleExpansion(std::int32_t e, const Vec3& x) const;
   /// What the output shows of leaf e's expansion at x: with punctual
   /// lights or few emitters, the expansion less its fit of their direct
-  /// light (ExactExpansion), to which the output adds their exact light
+  /// light (ExactFit, limited in its own range), to which the output adds their exact light
   /// at the point itself (ShownExact); without, the expansion.
   IrradianceVector ShownExpansion(std::int32_t e, const Vec3& x) const;
   /// The punctual lights' and the emitters' (when shown exactly) exact
@@ -330,8 +341,6 @@ private:
   /// The emitting triangles whose direct light the output shows exactly
   /// (ExactEmitterTriangles); null: none.
   std::unique_ptr<FaceClusterExactEmitters> ExactEmitters;
-  /// Leaf e's ExactFit at x (zero where it has none).
-  IrradianceVector ExactExpansion(std::int32_t e, const Vec3& x) const;
   /// Lowest and Highest of every leaf.
   void BoundLeafExpansions();
   /// An element of `cluster`, or with `corners`, of a part of that

@@ -97,7 +97,7 @@ std::int32_t FaceClusterRadiosity::PartAt(std::int32_t e, const Vec3& x) const
   return e;
 }
 
-IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x, bool limit) const
+IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x, bool limit, bool shown) const
 {
   IrradianceVector v{};
   if (e < 0)
@@ -105,6 +105,11 @@ IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x, 
     return v;
   }
   const FaceClusterElement& leaf = this->Nodes[e];
+  // Shown: the expansion less its fit of the light shown exactly.
+  const bool less = shown && !leaf.ExactFit.empty();
+  const auto coefficient = [&](int a, int c) {
+    return less ? leaf.Irradiance[a][c] - leaf.ExactFit[a][c] : leaf.Irradiance[a][c];
+  };
   const glm::dvec2 uv = glm::clamp(BoxCoordinates(leaf.Data, x), glm::dvec2(0.0), glm::dvec2(1.0));
   double phi[PolynomialBasis::MaximumSize];
   this->IrradianceBasis.Evaluate(uv.x, uv.y, phi);
@@ -112,7 +117,7 @@ IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x, 
   {
     for (int c = 0; c < 3; ++c)
     {
-      v[c] += phi[a] * leaf.Irradiance[a][c];
+      v[c] += phi[a] * coefficient(a, c);
     }
   }
   // A limiter, as for discontinuous Galerkin solutions (Barth & Jespersen
@@ -121,17 +126,19 @@ IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x, 
   // (black specks on a glossy statue). The part above the mean is scaled
   // back until every component lies within its range at the nodes, widened
   // by half of it.
+  const IrradianceVector& lowest = shown ? leaf.ShownLowest : leaf.Lowest;
+  const IrradianceVector& highest = shown ? leaf.ShownHighest : leaf.Highest;
   double theta = 1.0;
   for (int c = 0; c < 3 && limit; ++c)
   {
-    const Vec3 mean = phi[0] * leaf.Irradiance[0][c];
+    const Vec3 mean = phi[0] * coefficient(0, c);
     for (int k = 0; k < 3; ++k)
     {
       // Slack of half the range: a steady gradient runs on past the
       // outermost nodes to the element's edge (a contact edge), an
       // overshoot does not.
-      const double slack = 0.5 * (leaf.Highest[c][k] - leaf.Lowest[c][k]);
-      const double high = leaf.Highest[c][k] + slack, low = leaf.Lowest[c][k] - slack;
+      const double slack = 0.5 * (highest[c][k] - lowest[c][k]);
+      const double high = highest[c][k] + slack, low = lowest[c][k] - slack;
       const double rise = v[c][k] - mean[k];
       if (v[c][k] > high && rise > 0.0)
       {
@@ -147,7 +154,7 @@ IrradianceVector FaceClusterRadiosity::Expansion(std::int32_t e, const Vec3& x, 
   {
     for (int c = 0; c < 3; ++c)
     {
-      const Vec3 mean = phi[0] * leaf.Irradiance[0][c];
+      const Vec3 mean = phi[0] * coefficient(0, c);
       v[c] = mean + theta * (v[c] - mean);
     }
   }
@@ -165,20 +172,26 @@ void FaceClusterRadiosity::BoundLeafExpansions()
     }
     for (int c = 0; c < 3; ++c)
     {
-      e.Lowest[c] = Vec3(std::numeric_limits<double>::infinity());
-      e.Highest[c] = Vec3(-std::numeric_limits<double>::infinity());
+      e.Lowest[c] = e.ShownLowest[c] = Vec3(std::numeric_limits<double>::infinity());
+      e.Highest[c] = e.ShownHighest[c] = Vec3(-std::numeric_limits<double>::infinity());
     }
     for (std::size_t q = 0; q < e.Rule.Size(); ++q)
     {
       for (int c = 0; c < 3; ++c)
       {
-        Vec3 atNode(0.0);
+        Vec3 atNode(0.0), fit(0.0);
         for (int a = 0; a < ne; ++a)
         {
           atNode += e.Rule.Phi[q * ne + a] * e.Irradiance[a][c];
+          if (!e.ExactFit.empty())
+          {
+            fit += e.Rule.Phi[q * ne + a] * e.ExactFit[a][c];
+          }
         }
         e.Lowest[c] = glm::min(e.Lowest[c], atNode);
         e.Highest[c] = glm::max(e.Highest[c], atNode);
+        e.ShownLowest[c] = glm::min(e.ShownLowest[c], atNode - fit);
+        e.ShownHighest[c] = glm::max(e.ShownHighest[c], atNode - fit);
       }
     }
   }
@@ -189,44 +202,13 @@ IrradianceVector FaceClusterRadiosity::IrradianceVectorAt(std::uint32_t t, const
   return this->Expansion(this->LeafAt(t, x), x);
 }
 
-IrradianceVector FaceClusterRadiosity::ExactExpansion(std::int32_t e, const Vec3& x) const
-{
-  IrradianceVector v{};
-  if (e < 0 || this->Nodes[e].ExactFit.empty())
-  {
-    return v;
-  }
-  const FaceClusterElement& leaf = this->Nodes[e];
-  const glm::dvec2 uv = glm::clamp(BoxCoordinates(leaf.Data, x), glm::dvec2(0.0), glm::dvec2(1.0));
-  double phi[PolynomialBasis::MaximumSize];
-  this->IrradianceBasis.Evaluate(uv.x, uv.y, phi);
-  for (int a = 0; a < this->IrradianceBasis.Size(); ++a)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      v[c] += phi[a] * leaf.ExactFit[a][c];
-    }
-  }
-  return v;
-}
-
 IrradianceVector FaceClusterRadiosity::ShownExpansion(std::int32_t e, const Vec3& x) const
 {
-  if (!this->ShowsExact() || e < 0)
-  {
-    return this->Expansion(e, x);
-  }
-  // The expansion less its fit of the punctual lights (linear, so without
-  // the limiter): a hard shadow or a spot's rim is a step that no basis
-  // follows, and the fit's overshoot there drew black and bright specks.
-  const IrradianceVector total = this->Expansion(e, x, false);
-  const IrradianceVector punctual = this->ExactExpansion(e, x);
-  IrradianceVector rest;
-  for (int c = 0; c < 3; ++c)
-  {
-    rest[c] = total[c] - punctual[c];
-  }
-  return rest;
+  // With light shown exactly, the expansion less its fit of it, limited
+  // to its own range at the nodes: a hard shadow or a spot's rim is a step
+  // that no basis follows, and the fit's overshoot there drew black and
+  // bright specks; a lamp's fit drew the glossy statue's blotches.
+  return this->Expansion(e, x, true, this->ShowsExact());
 }
 
 IrradianceVector FaceClusterRadiosity::ShownExact(std::uint32_t t, const Vec3& x, const Vec3& n) const

@@ -243,15 +243,20 @@ TEST(FaceClusterVectorIrradiance, CornellBoxAgainstTheDenseGather)
   // (TestRadiosityRepresentations' image): the vertex of a coarse triangle
   // stands for the whole triangle. The RMS direction on the 32 triangles is
   // 5 to 7 degrees worse than unhalved: the whole-triangle fit of halved
-  // light is a different linear function than the unhalved fit.
+  // light is a different linear function than the unhalved fit. With the
+  // lamp's direct light shown exactly (FaceClusterExactEmitters), the rest
+  // fitted:
+  //   32, linear        0.151 / 0.043, 45 / 19.6, 0
+  //   32, quadratic     0.122 / 0.047, 50 / 22.6, 0
+  //   512, quadratic    0.098 / 0.023, 46 / 12.6, 0
   struct Case
   {
     int Levels;
     BasisKind Basis;
     double Magnitude, Rms, Angle, AngleRms;
   };
-  const Case cases[] = { { 0, BasisKind::Linear, 0.32, 0.095, 70.0, 25.0 },
-    { 0, BasisKind::Quadratic, 0.48, 0.095, 65.0, 23.0 }, { 2, BasisKind::Quadratic, 0.12, 0.027, 52.0, 13.5 } };
+  const Case cases[] = { { 0, BasisKind::Linear, 0.17, 0.05, 50.0, 21.5 },
+    { 0, BasisKind::Quadratic, 0.14, 0.053, 55.0, 24.5 }, { 2, BasisKind::Quadratic, 0.11, 0.026, 50.0, 13.5 } };
   for (const Case& c : cases)
   {
     const Scene box = SubdividedScene(MakeCornellBox(), c.Levels);
@@ -296,6 +301,10 @@ TEST(FaceClusterVectorIrradiance, GlossyStatueAgainstTheDenseGather)
   // wrong way (directions above 90 degrees, at under 10% of the peak), and
   // lit vertices of leaves whose nodes are shadowed (0.62 of the peak):
   // issue 20's refinement items.
+  //   with the lamp's direct light shown exactly (FaceClusterExactEmitters,
+  //   the rest fitted): 0.267 / 0.038; 109.0, 47.2, 11.7; none below zero
+  //   (with the fit of it, on the same build: 0.627 / 0.062; 125.4, 69.4,
+  //   14.6).
   std::size_t firstBunnyPoint = 0;
   const Scene scene = GlossyStatue(0, firstBunnyPoint);
   FaceClusterSettings settings;
@@ -308,11 +317,11 @@ TEST(FaceClusterVectorIrradiance, GlossyStatueAgainstTheDenseGather)
             << " s)\n  all: " << all << "\n  bunny: " << bunny << "\n";
   EXPECT_EQ(all.ReferenceBelowZero, 0u);
   EXPECT_EQ(all.BelowZero, 0u);
-  EXPECT_LT(all.MaxAngle, 132.0);
-  EXPECT_LT(all.Angle99, 75.0);
-  EXPECT_LT(all.RmsAngle, 15.5);
-  EXPECT_LT(all.MaxMagnitude, 0.67);
-  EXPECT_LT(all.RmsMagnitude, 0.068);
+  EXPECT_LT(all.MaxAngle, 120.0);
+  EXPECT_LT(all.Angle99, 52.0);
+  EXPECT_LT(all.RmsAngle, 13.0);
+  EXPECT_LT(all.MaxMagnitude, 0.3);
+  EXPECT_LT(all.RmsMagnitude, 0.043);
 }
 #else
 TEST(FaceClusterVectorIrradiance, GlossyStatueAgainstTheDenseGather)

@@ -1,0 +1,180 @@
+// Face cluster radiosity's output shows the emitters' direct light exactly
+// where they are few (FaceClusterExactEmitters): checked against the closed
+// forms (AnalyticReference: Lambert's contour formula less the blocker's
+// projection, code apart from the backprojection) at every floor vertex of
+// the exact penumbra and the contact scene, at 1e-4, 1 and 1e4 m; the
+// vector backprojection against the scalar one; and the caps.
+#include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
+#include "Radiosity/Hierarchical/Backprojection.h"
+#include "Radiosity/Common/FormFactor.h"
+#include "Radiosity/Reference/AnalyticReference.h"
+#include "Radiosity/Scenes/SceneGenerators.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <random>
+
+using namespace radiosity;
+
+namespace
+{
+Scene Scaled(Scene scene, double scale)
+{
+  for (Vec3& p : scene.Points)
+  {
+    p *= scale;
+  }
+  return scene;
+}
+}
+
+TEST(FaceClusterExactEmitters, FloorVerticesTakeTheClosedForm)
+{
+  // Black scenes lit by a square lamp: a floor under a blocker's penumbra,
+  // and a floor meeting an emitting wall (contact). Every floor vertex's
+  // surface irradiance and vertex vector (along +z) against the closed form
+  // at the vertex. Measured: 7.3e-16 of the peak at worst (penumbra),
+  // 2.3e-16 (contact), every scale; bound 1e-12. Before the shafts were
+  // listed for every emitter a triangle's rays did not find hidden, a
+  // floor vertex was 0.7% of the peak off (the rays missed a blocker's
+  // corner over 3% of a lamp triangle); with the fit, 1.8% at the probes.
+  const struct
+  {
+    const char* Name;
+    Scene Unit;
+  } cases[] = { { "penumbra", MakeShadowScene(4, 10.0) }, { "contact", MakeContactScene(4, 0.0, 10.0) } };
+  for (const auto& c : cases)
+  {
+    for (double scale : { 1e-4, 1.0, 1e4 })
+    {
+      const Scene scene = Scaled(c.Unit, scale);
+      double floorHeight = std::numeric_limits<double>::infinity();
+      for (const Vec3& p : scene.Points)
+      {
+        floorHeight = std::min(floorHeight, p.z);
+      }
+      // The floor's vertices: those of triangles facing up at its height.
+      std::vector<char> onFloor(scene.Points.size(), 0);
+      for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+      {
+        bool low = scene.Normal(t).z > 1.0 - 1e-12;
+        for (int k = 0; k < 3; ++k)
+        {
+          low = low && scene.Vertex(t, k).z == floorHeight;
+        }
+        for (int k = 0; k < 3 && low; ++k)
+        {
+          onFloor[scene.Triangles[t].V[k]] = 1;
+        }
+      }
+      std::vector<Probe> probes;
+      std::vector<std::size_t> which;
+      for (std::size_t p = 0; p < scene.Points.size(); ++p)
+      {
+        if (onFloor[p])
+        {
+          probes.push_back({ scene.Points[p], Vec3(0, 0, 1) });
+          which.push_back(p);
+        }
+      }
+      AnalyticReference reference;
+      std::string why;
+      ASSERT_TRUE(ComputeAnalyticReference(scene, probes, reference, why)) << why;
+      FaceClusterRadiosity solver(scene, FaceClusterSettings());
+      solver.Solve();
+      std::size_t emitting = 0;
+      for (const Material& m : scene.Materials)
+      {
+        emitting += MaxComponent(m.Emission) > 0.0 ? 1 : 0;
+      }
+      ASSERT_EQ(solver.Statistics().ExactEmitterTriangles, emitting);
+      const SolutionMesh surface = solver.Surface();
+      const auto vectors = solver.VertexIrradianceVectors();
+      double peak = 0.0, worst = 0.0, worstVector = 0.0;
+      for (const RGB& e : reference.Irradiance)
+      {
+        peak = std::max(peak, e.r);
+      }
+      std::size_t shadowed = 0;
+      for (std::size_t i = 0; i < probes.size(); ++i)
+      {
+        const double exact = reference.Irradiance[i].r;
+        shadowed += exact < 0.999 * peak ? 1 : 0;
+        worst = std::max(worst, std::abs(surface.PointIrradiance[which[i]].r - exact) / peak);
+        worstVector = std::max(worstVector, std::abs(vectors[which[i]][2] - exact) / peak);
+      }
+      std::cout << c.Name << " at " << scale << " m: " << probes.size() << " floor vertices (" << shadowed
+                << " below the peak), surface worst " << worst << ", vector worst " << worstVector << " of the peak\n";
+      EXPECT_LT(worst, 1e-12) << c.Name << " at " << scale;
+      EXPECT_LT(worstVector, 1e-12) << c.Name << " at " << scale;
+    }
+  }
+}
+
+TEST(FaceClusterExactEmitters, VectorBackprojectionAgreesWithTheScalar)
+{
+  // Random points, normals and blockers between a triangle and the points:
+  // n . VisibleVectorFormFactor is VisibleFormFactor; without blockers the
+  // vector is the horizon-clipped contour integral itself.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const TriangleCorners source{ Vec3(0, 0, 2), Vec3(1, 0, 2), Vec3(0, 1, 2) };
+  // Facing down: its corners in the order whose normal points to -z.
+  const TriangleCorners down{ source[0], source[2], source[1] };
+  double worst = 0.0, worstFree = 0.0;
+  int partial = 0;
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    const Vec3 x(u(random), u(random), 0.2 * u(random));
+    const Vec3 n = glm::normalize(Vec3(0.5 * u(random), 0.5 * u(random), 1.0));
+    std::vector<TriangleCorners> blockers;
+    for (int b = 0; b < 3; ++b)
+    {
+      const Vec3 c(0.5 * u(random) + 0.3, 0.5 * u(random) + 0.3, 1.0 + 0.4 * u(random));
+      blockers.push_back({ c, c + Vec3(0.4 * u(random), 0.4 * u(random), 0.1 * u(random)),
+        c + Vec3(0.4 * u(random), 0.4 * u(random), 0.1 * u(random)) });
+    }
+    const double scalar = VisibleFormFactor(x, n, down, blockers.data(), blockers.size());
+    const Vec3 vector = VisibleVectorFormFactor(x, n, down, blockers.data(), blockers.size());
+    const double whole = PointToPolygonFormFactor(x, n, down.data(), 3);
+    partial += scalar > 1e-6 && scalar < whole - 1e-6 ? 1 : 0;
+    worst = std::max(worst, std::abs(glm::dot(n, vector) - scalar));
+    const Vec3 free = VisibleVectorFormFactor(x, n, down, static_cast<const TriangleCorners*>(nullptr), 0);
+    worstFree = std::max(worstFree, glm::length(free - PointToPolygonVectorFormFactor(x, down.data(), 3, &n)));
+  }
+  // Measured: 310 partly hidden, 2.4e-17 at most, and 0 (the same code).
+  std::cout << partial << " of 500 points partly hidden; |n . vector - scalar| at most " << worst
+            << ", unblocked vector against the contour integral " << worstFree << "\n";
+  EXPECT_GT(partial, 50);
+  EXPECT_LT(worst, 1e-14);
+  EXPECT_EQ(worstFree, 0.0);
+}
+
+TEST(FaceClusterExactEmitters, FewEmittersOnly)
+{
+  // ExactEmitterTriangles and ExactEmitterPairs: more emitting triangles,
+  // or too many pairs of them and input triangles, and the fit shows them.
+  const Scene scene = MakeShadowScene(4, 10.0);
+  std::size_t emitting = 0;
+  for (const Material& m : scene.Materials)
+  {
+    emitting += MaxComponent(m.Emission) > 0.0 ? 1 : 0;
+  }
+  ASSERT_EQ(emitting, 2u);
+  FaceClusterSettings settings;
+  settings.ExactEmitterTriangles = 1;
+  FaceClusterRadiosity fewer(scene, settings);
+  fewer.Solve();
+  EXPECT_EQ(fewer.Statistics().ExactEmitterTriangles, 0u);
+  settings = FaceClusterSettings();
+  settings.ExactEmitterPairs = 2.0 * static_cast<double>(scene.Triangles.size()) - 1.0;
+  FaceClusterRadiosity smaller(scene, settings);
+  smaller.Solve();
+  EXPECT_EQ(smaller.Statistics().ExactEmitterTriangles, 0u);
+  settings.ExactEmitterPairs = 2.0 * static_cast<double>(scene.Triangles.size());
+  FaceClusterRadiosity enough(scene, settings);
+  enough.Solve();
+  EXPECT_EQ(enough.Statistics().ExactEmitterTriangles, 2u);
+}
