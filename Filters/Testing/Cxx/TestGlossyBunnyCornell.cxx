@@ -87,7 +87,13 @@ int TestGlossyBunnyCornell(int argc, char* argv[])
   // Measured: mean 87.5, a mean difference of 3.2 (of 255) between the bases
   // (5.5 before the quadratic half lost its black specks and most of its
   // blotches: TestFaceClusterVectorIrradiance); 87.5 and 3.4 with the
-  // triangles halved where their basis cannot follow the light.
+  // triangles halved where their basis cannot follow the light; 87.4 and
+  // 0.95 with the lamp's direct light shown exactly in both halves
+  // (FaceClusterExactEmitters: the bases differ in the interreflected
+  // light only). Against a dense gather of the converged radiosity drawn
+  // the same way, the quadratic half's mean pixel difference went from
+  // 3.79 to 2.68 (5.02 to 2.76 in the bunny's box), the constant half's
+  // from 5.24 to 3.00.
   if (mean < 30.0 || difference < 0.5)
   {
     std::cerr << "the image is dark or the two bases do not differ\n";

@@ -17,13 +17,16 @@
 // ShaftBlockers), listed once per triangle and emitter and reused for t's
 // corners and centre; none: the integral over the whole of s.
 //
-// Before the shaft, 28 rays (from four points of t to seven of s) find the
-// emitters t cannot see at all; those take 0 and no shaft (the floor under
-// a statue, whose shafts hold the statue). Rays alone cannot tell a whole
-// emitter from a partly hidden one: 28 of them all passed where a
-// blocker's corner hid 3% of a lamp triangle from a floor vertex (0.7% of
-// the exact penumbra's peak). Beyond MaxBlockers in a shaft, s's
-// visibility is sampled (TriangleGather: four rays, then 6 x 6 strata).
+// The emitting triangles of one lamp (coplanar, sharing vertices) share one
+// shaft per input triangle, to a triangle around them (the glossy statue's
+// lamp of 32 triangles: one shaft instead of 32). Before it, 28 rays (from
+// four points of t to seven of the lamp) find the lamps t cannot see at
+// all; those take 0 and no shaft (the floor under a statue, whose shafts
+// hold the statue). Rays alone cannot tell a whole emitter from a partly
+// hidden one: 28 of them all passed where a blocker's corner hid 3% of a
+// lamp triangle from a floor vertex (0.7% of the exact penumbra's peak).
+// Beyond MaxBlockers in a shaft, each emitter's visibility is sampled
+// (TriangleGather: four rays, then 6 x 6 strata).
 #ifndef Radiosity_FaceClusterExactEmitters_h
 #define Radiosity_FaceClusterExactEmitters_h
 
@@ -60,8 +63,33 @@ private:
   std::vector<RadiantTriangle> Sources;
   /// Per emitter, its sampled gather (behind more than MaxBlockers).
   std::vector<TriangleGather> Strata;
-  /// Per emitter, how triangle t sees it: 0 whole, 1 hidden, 2 partly.
-  void Classify(std::uint32_t t, std::vector<char>& states) const;
+  /// A lamp: emitting triangles in one plane, joined by shared vertices.
+  /// One shaft (to a triangle around them all) lists the blockers of all
+  /// of them, a superset for each: a blocker outside the pyramid from a
+  /// point to an emitter casts its shadow beside it.
+  struct Patch
+  {
+    std::vector<std::uint32_t> Members; ///< indices into Sources
+    TriangleCorners Around;             ///< holds them all, facing as they do
+    std::array<Vec3, 7> Samples;        ///< the rays' targets (hidden or not)
+    /// Where its triangles share one emission and their union one outline
+    /// (a loop of boundary edges): that outline and the emission. Seen
+    /// whole, the lamp's vector form factor is the contour integral over
+    /// the outline alone (its inner edges cancel): one for the glossy
+    /// statue's lamp instead of 32.
+    std::vector<Vec3> Outline;
+    RGB Radiosity{ 0.0 };
+    /// That outline without its straight-through corners, where it is
+    /// convex with at most MaxSourceCorners of them: the backprojection
+    /// takes the lamp as one source (the glossy statue's lamp: a square).
+    std::vector<Vec3> Convex;
+  };
+  std::vector<Patch> Patches;
+  void MakePatches(const Scene& scene);
+  void FindOutline(const Scene& scene, Patch& patch) const;
+  /// Per patch, whether all 28 rays from four points of triangle t to its
+  /// seven samples are blocked (or it lies behind t, or t behind it).
+  void FindHidden(std::uint32_t t, std::vector<char>& hidden) const;
   /// Which object a thread's cached shafts belong to (never reused, unlike an address).
   std::uint64_t Generation = 0;
 };

@@ -90,11 +90,13 @@ struct FaceClusterSettings
   /// partly hidden; 0: the fit everywhere.
   int ExactEmitterTriangles = 64;
   /// And while emitting triangles times input triangles stays within
-  /// this: about 34 us per pair on the 235k bunny room (2 emitters, 470k
-  /// pairs: the CLI's solve and output 12.2 s with the fit, 28.0 s exact;
-  /// the shafts between the triangles and the emitters they see are most
-  /// of it), so at most about 4.5 s more.
-  double ExactEmitterPairs = 131072.0;
+  /// this: the cost is a shaft per input triangle and lamp and a
+  /// backprojection per point and lamp. Measured: the 235k bunny room (a
+  /// lamp of 2 triangles, 470k pairs) 12.2 s with the fit, 19.4 s exact
+  /// (the CLI's solve and output); the glossy statue (15k triangles, a
+  /// lamp of 32, 476k pairs) output 0.015 s, exact 0.86 s, beside an 11 s
+  /// solve. Beyond it (the 940k bunny room) the fit.
+  double ExactEmitterPairs = 524288.0;
   /// In a scene that encloses every triangle (SceneIsEnclosed: no ray from
   /// a surface escapes), all the light shot lands on a surface, so from
   /// the second bounce on each iteration's received power is scaled to the

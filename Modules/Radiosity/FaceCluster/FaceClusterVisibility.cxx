@@ -275,7 +275,17 @@ bool FaceClusterVisibility::ShaftBlockers(const TriangleCorners& receiver, const
     }
     Vec3 corners[8];
     GrownBoxCorners(c, 1e-6, tolerance, corners);
-    return !shaft.Excludes(corners, 8);
+    // A triangle is kept only with a vertex in front of both ends' planes
+    // (take): a box wholly behind either holds none (the ceiling around a
+    // lamp, the receiver's own surface around it, which the descent
+    // otherwise opened down to every triangle: most of the shafts' time).
+    bool frontR = false, frontS = false;
+    for (const Vec3& v : corners)
+    {
+      frontR = frontR || glm::dot(v - receiver[0], nr) > tolerance * lr;
+      frontS = frontS || glm::dot(v - source[0], ns) > tolerance * ls;
+    }
+    return frontR && frontS && !shaft.Excludes(corners, 8);
   };
   const auto take = [&](std::uint32_t id) {
     if (InsideOwn(skip, skips, h.TrianglePosition(id), 1u))

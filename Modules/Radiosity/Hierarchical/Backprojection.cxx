@@ -10,9 +10,42 @@ namespace radiosity
 {
 namespace backprojection_detail
 {
+SourceFrame::SourceFrame(const Vec3* corners, int count)
+  : Source{ corners[0], corners[1], corners[2] }
+  , Corners(std::min(count, MaxSourceCorners))
+{
+  std::copy(corners, corners + this->Corners, this->Outline.begin());
+  Vec3 cross(0.0); // twice the area along the normal (Newell)
+  for (int i = 1; i + 1 < this->Corners; ++i)
+  {
+    cross += glm::cross(corners[i] - corners[0], corners[i + 1] - corners[0]);
+  }
+  const double twiceArea = glm::length(cross);
+  const Vec3 e1 = corners[1] - corners[0];
+  if (!(twiceArea > 0) || !(glm::length(e1) > 0) || count > MaxSourceCorners)
+  {
+    return;
+  }
+  this->Valid = true;
+  this->M = cross / twiceArea;
+  this->PlaneOffset = glm::dot(corners[0], this->M);
+  this->U = e1 / glm::length(e1);
+  this->V = glm::cross(this->M, this->U);
+  this->MinArea = 1e-14 * 0.5 * twiceArea;
+  for (int i = 0; i < this->Corners; ++i)
+  {
+    this->Whole.Push(this->To2(corners[i]));
+    for (int j = 0; j < i; ++j)
+    {
+      this->Size = std::max(this->Size, glm::length(corners[i] - corners[j]));
+    }
+  }
+}
+
 SourceFrame::SourceFrame(const TriangleCorners& source)
   : Source(source)
 {
+  std::copy(source.begin(), source.end(), this->Outline.begin());
   const Vec3 e1 = source[1] - source[0];
   const Vec3 e2 = source[2] - source[0];
   const Vec3 cross = glm::cross(e1, e2);
@@ -333,7 +366,7 @@ bool SourceLessShadows(const SourceFrame& frame, const Vec3& x, const Vec3& n,
   thread_local std::vector<Polygon2> shadows, pieces, next;
   shadows.clear();
   const Box2 sourceBox(frame.Whole);
-  factor = Factor::Of(x, n, frame.Source.data(), 3);
+  factor = Factor::Of(x, n, frame.Outline.data(), static_cast<std::size_t>(frame.Corners));
   for (const BlockerLevels& blocker : blockers)
   {
     Polygon2 shadow, part;
@@ -412,7 +445,7 @@ typename Factor::Value VisibleFromPoint(const SourceFrame& frame, const Vec3& x,
   }
   if (blockerCount == 0)
   {
-    return Factor::Of(x, n, frame.Source.data(), 3);
+    return Factor::Of(x, n, frame.Outline.data(), static_cast<std::size_t>(frame.Corners));
   }
 
   if (height < NearPlane * frame.Size)
@@ -481,10 +514,9 @@ typename Factor::Value VisibleFromPoint(const SourceFrame& frame, const Vec3& x,
 // writes blocker b's corners to out and returns how many. Each blocker's
 // levels are found when the loop reaches it (it stops once nothing is left).
 template <typename Factor = ScalarFactor, typename Corners>
-typename Factor::Value VisibleFormFactorOf(const Vec3& x, const Vec3& n, const TriangleCorners& source,
+typename Factor::Value VisibleFormFactorOf(const Vec3& x, const Vec3& n, const SourceFrame& frame,
   std::size_t blockerCount, const Corners& corners, bool* exact, std::size_t fragmentsLimit)
 {
-  const SourceFrame frame(source);
   BlockerLevels current;
   return VisibleFromPoint<Factor>(frame, x, n, blockerCount,
     [&](std::size_t b) -> const BlockerLevels& {
@@ -519,7 +551,7 @@ double PreparedVisibleFormFactor::operator()(const Vec3& x, const Vec3& n) const
 double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
   const TriangleCorners* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
 {
-  return VisibleFormFactorOf(x, n, source, blockerCount,
+  return VisibleFormFactorOf(x, n, SourceFrame(source), blockerCount,
     [blockers](std::size_t b, Vec3* out) {
       std::copy(blockers[b].begin(), blockers[b].end(), out);
       return 3;
@@ -530,7 +562,7 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
 double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
   const BlockerPolygon* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
 {
-  return VisibleFormFactorOf(x, n, source, blockerCount,
+  return VisibleFormFactorOf(x, n, SourceFrame(source), blockerCount,
     [blockers](std::size_t b, Vec3* out) {
       std::copy(blockers[b].Corners.begin(), blockers[b].Corners.begin() + blockers[b].Size, out);
       return blockers[b].Size;
@@ -541,7 +573,18 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
 Vec3 VisibleVectorFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& source,
   const TriangleCorners* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
 {
-  return VisibleFormFactorOf<VectorFactor>(x, n, source, blockerCount,
+  return VisibleFormFactorOf<VectorFactor>(x, n, SourceFrame(source), blockerCount,
+    [blockers](std::size_t b, Vec3* out) {
+      std::copy(blockers[b].begin(), blockers[b].end(), out);
+      return 3;
+    },
+    exact, fragmentsLimit);
+}
+
+Vec3 VisibleVectorFormFactor(const Vec3& x, const Vec3& n, const Vec3* source, int corners,
+  const TriangleCorners* blockers, std::size_t blockerCount, bool* exact, std::size_t fragmentsLimit)
+{
+  return VisibleFormFactorOf<VectorFactor>(x, n, SourceFrame(source, corners), blockerCount,
     [blockers](std::size_t b, Vec3* out) {
       std::copy(blockers[b].begin(), blockers[b].end(), out);
       return 3;

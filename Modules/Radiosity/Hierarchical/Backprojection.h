@@ -44,6 +44,14 @@ Vec3 VisibleVectorFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners
   const TriangleCorners* blockers, std::size_t blockerCount, bool* exact = nullptr,
   std::size_t fragmentsLimit = 4096);
 
+/// The same for a convex planar source polygon of up to MaxSourceCorners
+/// corners (a lamp of several triangles at once), facing as its corners
+/// turn (right-handed).
+constexpr int MaxSourceCorners = 6;
+Vec3 VisibleVectorFormFactor(const Vec3& x, const Vec3& n, const Vec3* source, int corners,
+  const TriangleCorners* blockers, std::size_t blockerCount, bool* exact = nullptr,
+  std::size_t fragmentsLimit = 4096);
+
 /// A planar convex blocker of three or four corners (in order around it).
 struct BlockerPolygon
 {
@@ -81,7 +89,11 @@ struct Polygon2
 struct SourceFrame
 {
   explicit SourceFrame(const TriangleCorners& source);
-  TriangleCorners Source;
+  /// A convex planar polygon of at most MaxSourceCorners corners.
+  SourceFrame(const Vec3* corners, int count);
+  TriangleCorners Source; ///< its first three corners
+  std::array<Vec3, MaxSourceCorners> Outline{};
+  int Corners = 3;
   Vec3 M{ 0.0 }, U{ 0.0 }, V{ 0.0 };
   double PlaneOffset = 0.0;
   double MinArea = 0.0; ///< fragments below it are dropped

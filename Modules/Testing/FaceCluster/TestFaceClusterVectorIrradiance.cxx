@@ -302,7 +302,7 @@ TEST(FaceClusterVectorIrradiance, GlossyStatueAgainstTheDenseGather)
   // lit vertices of leaves whose nodes are shadowed (0.62 of the peak):
   // issue 20's refinement items.
   //   with the lamp's direct light shown exactly (FaceClusterExactEmitters,
-  //   the rest fitted): 0.267 / 0.038; 109.0, 47.2, 11.7; none below zero
+  //   the rest fitted): 0.255 / 0.038; 98.1, 45.8, 11.4; none below zero
   //   (with the fit of it, on the same build: 0.627 / 0.062; 125.4, 69.4,
   //   14.6).
   std::size_t firstBunnyPoint = 0;
