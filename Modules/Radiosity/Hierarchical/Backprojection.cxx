@@ -43,29 +43,8 @@ SourceFrame::SourceFrame(const Vec3* corners, int count)
 }
 
 SourceFrame::SourceFrame(const TriangleCorners& source)
-  : Source(source)
+  : SourceFrame(source.data(), 3)
 {
-  std::copy(source.begin(), source.end(), this->Outline.begin());
-  const Vec3 e1 = source[1] - source[0];
-  const Vec3 e2 = source[2] - source[0];
-  const Vec3 cross = glm::cross(e1, e2);
-  const double twiceArea = glm::length(cross);
-  if (!(twiceArea > 0))
-  {
-    return;
-  }
-  this->Valid = true;
-  this->M = cross / twiceArea;
-  this->PlaneOffset = glm::dot(source[0], this->M);
-  this->U = e1 / glm::length(e1);
-  this->V = glm::cross(this->M, this->U);
-  const double sourceArea = 0.5 * twiceArea;
-  this->MinArea = 1e-14 * sourceArea;
-  for (const Vec3& p : source)
-  {
-    this->Whole.Push(this->To2(p));
-  }
-  this->Size = std::max({ glm::length(e1), glm::length(e2), glm::length(source[2] - source[1]) });
 }
 
 void BlockerLevels::FindLevels(const Vec3& m)
