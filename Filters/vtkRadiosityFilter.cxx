@@ -201,6 +201,10 @@ std::shared_ptr<radiosity::RadiositySolver> vtkRadiosityFilter::MakeSolver(
       settings.RadiosityBasis = BasisKinds[std::min(this->RadiosityBasis, this->IrradianceBasis)];
       settings.TransferTolerance = this->TransferTolerance;
       settings.MaxBisections = this->MaxBisections;
+      if (!this->ExactEmitters)
+      {
+        settings.ExactEmitterTriangles = 0;
+      }
       settings.MaxIterations = static_cast<int>(std::min<vtkIdType>(this->MaxIterations, 1000000));
       // Relighting: the solve keeps its transfers' couplings (one process).
       settings.KeepTransfers = this->Relighting && !(settings.Share && settings.Share->Ranks() > 1);
@@ -656,6 +660,7 @@ void vtkRadiosityFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiosityBasis: " << GetBasisName(this->RadiosityBasis) << "\n";
   os << indent << "TransferTolerance: " << this->TransferTolerance << "\n";
   os << indent << "MaxBisections: " << this->MaxBisections << "\n";
+  os << indent << "ExactEmitters: " << (this->ExactEmitters ? "On" : "Off") << "\n";
   os << indent << "MaxMemory: " << this->MaxMemory << " GB\n";
   os << indent << "DiscontinuityMeshing: " << (this->DiscontinuityMeshing ? "On" : "Off") << "\n";
   os << indent << "MaxDiscontinuitiesPerLeaf: " << this->MaxDiscontinuitiesPerLeaf << "\n";

@@ -481,6 +481,19 @@ public:
   ///@}
 
   ///@{
+  /// Face cluster: show the emitters' direct light exactly where they are
+  /// few (at most 1024 emitting triangles, in lamps whose count times the
+  /// input triangles is at most 262,144): every output point takes the
+  /// visible part of each lamp, shadows exact, instead of the solution's
+  /// fit of it. Off: the fit, without the output's cost of the exact light
+  /// (the 235k bunny room's solve and output 19.4 s on, 12.2 s off).
+  /// Default on.
+  vtkSetMacro(ExactEmitters, bool);
+  vtkGetMacro(ExactEmitters, bool);
+  vtkBooleanMacro(ExactEmitters, bool);
+  ///@}
+
+  ///@{
   /// Memory budget of a solve in gigabytes (1e9 bytes); 0 (the default) is
   /// 75% of physical memory. Every method estimates what it will allocate
   /// (elements, links, points) from the scene's size and its settings before
@@ -655,6 +668,7 @@ protected:
   int RadiosityBasis = ConstantBasis;
   double TransferTolerance = 1e-5;
   int MaxBisections = 5;
+  bool ExactEmitters = true;
   double MaxMemory = 0.0;
   bool DiscontinuityMeshing = true;
   bool SurfaceOutput = true;

@@ -89,7 +89,7 @@ std::string vtkRadiosityFilter::RelightingSettingsKey() const
       << this->NumberOfThreads << ' ' << this->MaxMemory << ' ' << this->PointRadius << ' ' << this->PointLevels
       << ' ' << this->GatherRays << ' ' << this->VariationThreshold << ' ' << this->SolidAngleThreshold << ' '
       << this->IrradianceBasis << ' ' << this->RadiosityBasis << ' ' << this->TransferTolerance << ' '
-      << this->MaxBisections;
+      << this->MaxBisections << ' ' << this->ExactEmitters;
   return key.str();
 }
 

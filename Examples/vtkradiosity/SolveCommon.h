@@ -87,6 +87,7 @@ struct SolveArguments
   std::string RadiosityBasis = "constant";
   double TransferTolerance = 1e-5; ///< relative to the emitted power
   int MaxBisections = 5;
+  bool NoExactEmitters = false;
 };
 
 double Since(Clock::time_point t);

@@ -213,6 +213,7 @@ int RunSolve(const SolveArguments& args)
   filter->SetRadiosityBasis(radiosityBasis);
   filter->SetTransferTolerance(args.TransferTolerance);
   filter->SetMaxBisections(args.MaxBisections);
+  filter->SetExactEmitters(!args.NoExactEmitters);
   filter->SetPointRadius(args.PointRadius);
   filter->SetPointLevels(args.PointLevels);
   filter->SetGatherRays(args.GatherRays);
@@ -336,6 +337,7 @@ int RunSolve(const SolveArguments& args)
       report["parameters"]["radiosity_basis"] = args.RadiosityBasis;
       report["parameters"]["transfer_tolerance"] = args.TransferTolerance;
       report["parameters"]["max_bisections"] = args.MaxBisections;
+      report["parameters"]["exact_emitters"] = !args.NoExactEmitters;
       report["facecluster"] = { { "clusters", filter->GetFaceClusterSolution()->Hierarchy().NumberOfClusters() },
         { "elements", f.Elements }, { "leaf_elements", f.LeafElements }, { "transfers", f.Transfers },
         { "refinements", f.Refinements }, { "solution_memory_bytes", f.SolutionBytes },
@@ -433,6 +435,9 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--max-bisections", solve.MaxBisections,
     "facecluster: halvings of an input triangle allowed below the hierarchy's leaves (default 5; 0: the paper's leaves)")
     ->check(CLI::Range(0, 16));
+  solveCommand->add_flag("--no-exact-emitters", solve.NoExactEmitters,
+    "facecluster: show the emitters' direct light by the solution's fit, not exactly (default: exactly where "
+    "there are at most 1024 emitting triangles, in lamps whose count times the input triangles is at most 262,144)");
   solveCommand->add_option("--link-tolerance", solve.LinkTolerance,
     "hierarchical: link refinement threshold on B F, relative to the scene's mean irradiance "
     "(default 0.05)")

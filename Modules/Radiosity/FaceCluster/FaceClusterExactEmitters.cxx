@@ -53,6 +53,16 @@ FaceClusterExactEmitters::FaceClusterExactEmitters(
   this->MakePatches(scene);
 }
 
+double FaceClusterExactEmitters::Lamps() const
+{
+  double lamps = 0.0;
+  for (const Patch& patch : this->Patches)
+  {
+    lamps += patch.Convex.empty() ? static_cast<double>(patch.Members.size()) : 1.0;
+  }
+  return lamps;
+}
+
 void FaceClusterExactEmitters::MakePatches(const Scene& scene)
 {
   // Union-find over the emitters: joined where they share a vertex and a
@@ -116,7 +126,7 @@ void FaceClusterExactEmitters::MakePatches(const Scene& scene)
     double u0 = std::numeric_limits<double>::infinity(), v0 = u0, u1 = -u0, v1 = -u0, area = 0.0;
     Vec3 centroid(0.0);
     const Vec3 directions[6] = { u, -u, v, -v, u + v, -u - v };
-    Vec3 extreme[6];
+    Vec3 extreme[6] = { first[0], first[0], first[0], first[0], first[0], first[0] };
     double reach[6];
     std::fill(reach, reach + 6, -std::numeric_limits<double>::infinity());
     for (std::uint32_t k : patch.Members)
@@ -149,6 +159,9 @@ void FaceClusterExactEmitters::MakePatches(const Scene& scene)
     const double w = u1 - u0 + grow, h = v1 - v0 + grow;
     const auto at = [&](double a, double b) { return first[0] + a * u + b * v; };
     patch.Around = { at(u0, v0), at(u0 + 2.0 * w, v0), at(u0, v0 + 2.0 * h) };
+    patch.Normal = m;
+    patch.Offset = glm::dot(first[0], m);
+    patch.Size = std::max(w, h);
     patch.Samples[0] = centroid;
     for (int i = 0; i < 6; ++i)
     {
@@ -297,6 +310,7 @@ std::array<Vec3, 3> FaceClusterExactEmitters::At(
   }
   std::array<Vec3, 3> e{ Vec3(0.0), Vec3(0.0), Vec3(0.0) };
   thread_local TriangleGather::Scratch scratch;
+  const Vec3 inside = this->Shafts.Hierarchy().GetScene().Centroid(t);
   for (std::size_t p = 0; p < patches; ++p)
   {
     if (cache.States[p] == Hidden)
@@ -308,14 +322,21 @@ std::array<Vec3, 3> FaceClusterExactEmitters::At(
     {
       continue; // on the lamp: its triangles, coplanar, light nothing here
     }
+    // A point in the lamp's plane (a vertex on the edge where a wall meets
+    // an emitting ceiling, the cube's faces all emitting) takes the limit
+    // from inside its triangle, 1e-8 of the way to its centroid: in the
+    // plane itself the lamp is seen edge on (0), and the vertex drew a dark
+    // seam (a closed emitting cube's edges 7.5% low).
+    const bool inPlane = std::abs(glm::dot(x, patch.Normal) - patch.Offset) <= 1e-9 * patch.Size;
+    const Vec3 y = inPlane ? x + 1e-8 * (inside - x) : x;
     if (cache.States[p] == Exact && (!patch.Convex.empty() || (cache.Blockers[p].empty() && !patch.Outline.empty())))
     {
       // The lamp at once: the backprojection over its convex outline, or
       // seen whole, the contour integral over its outline.
       const std::vector<TriangleCorners>& b = cache.Blockers[p];
       const Vec3 f = !patch.Convex.empty()
-        ? VisibleVectorFormFactor(x, n, patch.Convex.data(), static_cast<int>(patch.Convex.size()), b.data(), b.size())
-        : PointToPolygonVectorFormFactor(x, patch.Outline.data(), patch.Outline.size(), &n);
+        ? VisibleVectorFormFactor(y, n, patch.Convex.data(), static_cast<int>(patch.Convex.size()), b.data(), b.size())
+        : PointToPolygonVectorFormFactor(y, patch.Outline.data(), patch.Outline.size(), &n);
       for (int c = 0; c < 3; ++c)
       {
         e[c] += patch.Radiosity[c] * f;
@@ -330,7 +351,7 @@ std::array<Vec3, 3> FaceClusterExactEmitters::At(
       }
       if (cache.States[p] == Sampled)
       {
-        const std::array<Vec3, 3> sampled = this->Strata[k].At(x, n, rayOrigin, scratch);
+        const std::array<Vec3, 3> sampled = this->Strata[k].At(y, n, rayOrigin, scratch);
         for (int c = 0; c < 3; ++c)
         {
           e[c] += sampled[c];
@@ -339,7 +360,7 @@ std::array<Vec3, 3> FaceClusterExactEmitters::At(
       }
       // No blockers: the contour integral over the emitter, zero behind it.
       const std::vector<TriangleCorners>& b = cache.Blockers[p];
-      const Vec3 f = VisibleVectorFormFactor(x, n, this->Sources[k].Corners, b.data(), b.size());
+      const Vec3 f = VisibleVectorFormFactor(y, n, this->Sources[k].Corners, b.data(), b.size());
       for (int c = 0; c < 3; ++c)
       {
         e[c] += this->Sources[k].Radiosity[c] * f;

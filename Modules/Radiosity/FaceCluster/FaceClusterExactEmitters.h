@@ -53,6 +53,10 @@ public:
   std::array<Vec3, 3> At(std::uint32_t t, const Vec3& x, const Vec3& n, const Vec3& rayOrigin) const;
 
   std::size_t Size() const { return this->Ids.size(); }
+  /// The lamps, each counted once where one backprojection takes it whole
+  /// (convex outline, one emission), else once per triangle: the output's
+  /// cost per point.
+  double Lamps() const;
 
   /// Blockers in a shaft beyond which visibility is sampled.
   static constexpr std::size_t MaxBlockers = 256;
@@ -72,6 +76,8 @@ private:
     std::vector<std::uint32_t> Members; ///< indices into Sources
     TriangleCorners Around;             ///< holds them all, facing as they do
     std::array<Vec3, 7> Samples;        ///< the rays' targets (hidden or not)
+    Vec3 Normal{ 0.0 };                 ///< its plane: unit normal, offset,
+    double Offset = 0.0, Size = 0.0;    ///< and the size of its bounds
     /// Where its triangles share one emission and their union one outline
     /// (a loop of boundary edges): that outline and the emission. Seen
     /// whole, the lamp's vector form factor is the contour integral over

@@ -487,10 +487,13 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     }
     // The emitters' direct light shown exactly where they are few.
     this->ExactEmitters.reset();
-    if (!emitters.empty() && emitters.size() <= static_cast<std::size_t>(this->Settings.ExactEmitterTriangles) &&
-      static_cast<double>(emitters.size()) * static_cast<double>(scene.Triangles.size()) <= this->Settings.ExactEmitterPairs)
+    if (!emitters.empty() && emitters.size() <= static_cast<std::size_t>(this->Settings.ExactEmitterTriangles))
     {
       this->ExactEmitters = std::make_unique<FaceClusterExactEmitters>(*this->Visibility, emitters, emission);
+      if (this->ExactEmitters->Lamps() * static_cast<double>(scene.Triangles.size()) > this->Settings.ExactLampPairs)
+      {
+        this->ExactEmitters.reset();
+      }
     }
     this->Stats.ExactEmitterTriangles = this->ExactEmitters ? this->ExactEmitters->Size() : 0;
     this->Lights.reset();

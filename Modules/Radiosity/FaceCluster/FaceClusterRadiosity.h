@@ -82,21 +82,21 @@ struct FaceClusterSettings
   int MaxLightBisections = 10;
   /// Up to this many emitting triangles, the output shows their direct
   /// light exactly, as it shows the punctual lights' (ShownExact): each
-  /// output point takes their exact vector form factors with shadow rays
-  /// (TriangleGather) plus the expansion less the first iteration's fit of
-  /// them. The fit of a lamp's light drew the glossy statue's blotches and
-  /// dark rims. Its cost is about 4 rays per emitting triangle per output
-  /// point (7 points per input triangle), more where an emitter is
-  /// partly hidden; 0: the fit everywhere.
-  int ExactEmitterTriangles = 64;
-  /// And while emitting triangles times input triangles stays within
-  /// this: the cost is a shaft per input triangle and lamp and a
-  /// backprojection per point and lamp. Measured: the 235k bunny room (a
-  /// lamp of 2 triangles, 470k pairs) 12.2 s with the fit, 19.4 s exact
-  /// (the CLI's solve and output); the glossy statue (15k triangles, a
-  /// lamp of 32, 476k pairs) output 0.015 s, exact 0.86 s, beside an 11 s
-  /// solve. Beyond it (the 940k bunny room) the fit.
-  double ExactEmitterPairs = 524288.0;
+  /// output point takes the visible part of each lamp
+  /// (FaceClusterExactEmitters: coplanar emitting triangles sharing
+  /// vertices) plus the expansion less the first iteration's fit of them.
+  /// The fit of a lamp's light drew the glossy statue's blotches and dark
+  /// rims. 0: the fit everywhere.
+  int ExactEmitterTriangles = 1024;
+  /// And while input triangles times lamps stays within this (a lamp
+  /// counted once where its outline is convex and its emission uniform,
+  /// else once per triangle): the cost is a shaft per input triangle and
+  /// lamp and a backprojection per output point and lamp. Measured: the
+  /// 235k bunny room (one lamp) 12.2 s with the fit, 19.4 s exact (the
+  /// CLI's solve and output); the glossy statue (15k triangles, a lamp of
+  /// 32) output 0.015 s, exact 0.86 s, beside an 11 s solve. Beyond it
+  /// (the 940k bunny room) the fit.
+  double ExactLampPairs = 262144.0;
   /// In a scene that encloses every triangle (SceneIsEnclosed: no ray from
   /// a surface escapes), all the light shot lands on a surface, so from
   /// the second bounce on each iteration's received power is scaled to the
@@ -185,7 +185,7 @@ struct FaceClusterStatistics
   std::size_t CouplingsComputed = 0;
   std::size_t CouplingsNotKept = 0;
   /// Emitting triangles whose direct light the output shows exactly
-  /// (ExactEmitterTriangles, ExactEmitterPairs); 0: the fit shows it.
+  /// (ExactEmitterTriangles, ExactLampPairs); 0: the fit shows it.
   std::size_t ExactEmitterTriangles = 0;
 };
 

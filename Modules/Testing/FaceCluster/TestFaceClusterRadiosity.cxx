@@ -186,7 +186,11 @@ TEST(FaceClusterRadiosity, StiffSphereTheSameAtEveryScale)
   // 1e3 m with the same emission (inside a sphere the irradiance does not
   // depend on its radius): against the unit sphere's exact answer.
   // Measured: reflectance 0.8 8.2e-3 / 7.8e-3 of the peak at worst, 0.99
-  // 2.7e-3 / 1.8e-3 (at 1 m 2.7e-3); mean 0.9997 and 0.99998. Bound 1e-2
+  // 2.7e-3 / 1.8e-3 (at 1 m 2.7e-3); mean 0.9997 and 0.99998. With the
+  // facets' direct light shown exactly (ExactEmitters: every facet emits,
+  // 320 lamps) 9.7e-3 / 9.7e-3 and 2.7e-3 / 1.8e-3, mean 1.0000 and
+  // 0.999997: the rest, fitted, is the uniform answer less the direct
+  // light, less smooth than the whole. Bound 1.2e-2 at 0.8, 1e-2 at 0.99
   // (the issue asks for 2% at these scales, 1% at high reflectance).
   for (double rho : { 0.8, 0.99 })
   {
@@ -204,7 +208,7 @@ TEST(FaceClusterRadiosity, StiffSphereTheSameAtEveryScale)
       WorstAndMean(solver.Evaluate(probes), reference, worst, mean);
       std::cout << "sphere rho " << rho << " at " << scale << " m: worst " << worst << " of the peak, mean "
                 << mean << " of the exact\n";
-      EXPECT_LT(worst, 1e-2) << "rho " << rho << " at " << scale << " m";
+      EXPECT_LT(worst, rho < 0.9 ? 1.2e-2 : 1e-2) << "rho " << rho << " at " << scale << " m";
       EXPECT_LT(std::abs(mean - 1.0), 1e-3);
     }
   }
