@@ -14,12 +14,15 @@
 // VisibleVectorFormFactor), the integral over the visible fragments, so a
 // penumbra is exact, not sampled. Its blockers are the triangles in the
 // shaft between t and s (Haines & Wallace 1991, FaceClusterVisibility::
-// ShaftBlockers), listed once per triangle and emitter and reused for t's
+// ShaftBlockers), listed once per triangle and lamp and reused for t's
 // corners and centre; none: the integral over the whole of s.
 //
 // The emitting triangles of one lamp (coplanar, sharing vertices) share one
 // shaft per input triangle, to a triangle around them (the glossy statue's
-// lamp of 32 triangles: one shaft instead of 32). Before it, 28 rays (from
+// lamp of 32 triangles: one shaft instead of 32), and where its outline is
+// convex and its emission uniform, one backprojection per point with the
+// lamp as the source polygon. A point in a lamp's plane (where a wall meets
+// an emitting one) takes the limit from inside t. Before the shaft, 28 rays (from
 // four points of t to seven of the lamp) find the lamps t cannot see at
 // all; those take 0 and no shaft (the floor under a statue, whose shafts
 // hold the statue). Rays alone cannot tell a whole emitter from a partly
