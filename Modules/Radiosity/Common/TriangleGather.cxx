@@ -60,7 +60,7 @@ TriangleGather::TriangleGather(std::vector<RadiantTriangle> sources, const Visib
 }
 
 std::array<Vec3, 3> TriangleGather::At(
-  const Vec3& p, const Vec3& n, const Vec3& rayOrigin, Scratch& s, const PartialFactor* partial) const
+  const Vec3& p, const Vec3& n, const Vec3& rayOrigin, Scratch& s) const
 {
   std::array<Vec3, 3> e{ Vec3(0.0), Vec3(0.0), Vec3(0.0) };
   // The sources in front of which p lies and that reach above its
@@ -113,11 +113,10 @@ std::array<Vec3, 3> TriangleGather::At(
     {
       f = s.Vectors[k];
     }
-    else if (seen > 0 && !(partial && (*partial)(s.Facing[k], f)))
+    else if (seen > 0)
     {
       // Partly hidden: the strata, each by its own ray (after the four
       // above, so the scratch's rays are reused).
-      f = Vec3(0.0);
       SplitTriangle(source.Corners, this->Strata, s.Parts);
       s.From.assign(s.Parts.size(), rayOrigin);
       s.To.resize(s.Parts.size());

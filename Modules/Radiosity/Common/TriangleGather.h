@@ -16,19 +16,18 @@
 // all four agree, t is wholly visible or hidden; otherwise t is split into
 // m x m congruent strata, each weighted by one ray to its centroid. The
 // contour integral is additive, so an unoccluded triangle is exact at any
-// m, and only a shadow boundary is sampled (or, given a PartialFactor,
-// computed by the caller).
+// m, and only a shadow boundary is sampled.
 //
 // Used by the dense gather reference (VectorIrradianceReference.h) over a
 // converged solution's triangles, and by face cluster radiosity's output
-// over the emitting triangles (their direct light shown exactly).
+// for the emitting triangles of a lamp hidden behind more blockers than
+// its shaft lists (FaceClusterExactEmitters::MaxBlockers).
 #ifndef Radiosity_TriangleGather_h
 #define Radiosity_TriangleGather_h
 
 #include "Radiosity/Common/Types.h"
 
 #include <array>
-#include <functional>
 #include <vector>
 
 namespace radiosity
@@ -58,15 +57,9 @@ public:
     std::vector<std::array<Vec3, 3>> Parts;
   };
 
-  /// For a partly hidden source (the four rays disagree), its visible
-  /// vector form factor at p found otherwise (exactly: face cluster
-  /// radiosity's output backprojects its blockers); false: the strata.
-  using PartialFactor = std::function<bool(std::size_t source, Vec3& factor)>;
-
   /// The three channels' irradiance vectors at p (unit normal n), the
   /// shadow rays cast from `rayOrigin` (p moved off its surface).
-  std::array<Vec3, 3> At(const Vec3& p, const Vec3& n, const Vec3& rayOrigin, Scratch& scratch,
-    const PartialFactor* partial = nullptr) const;
+  std::array<Vec3, 3> At(const Vec3& p, const Vec3& n, const Vec3& rayOrigin, Scratch& scratch) const;
 
   std::size_t Size() const { return this->Sources.size(); }
   const std::vector<RadiantTriangle>& Triangles() const { return this->Sources; }

@@ -243,10 +243,6 @@ RGB FaceClusterRadiosity::IrradianceAt(std::uint32_t t, const Vec3& x, const Vec
   // The expansion less its fit of the exactly shown light, plus that light
   // at x itself (the punctual lights' with the shadow ray from x itself,
   // as before the emitters were shown exactly).
-  if (!this->ShowsExact())
-  {
-    return Received(this->ShownExpansion(this->LeafAt(t, x), x), n);
-  }
   RGB exact = this->ShowsExactPunctual() ? this->Lights->Punctual(x, n) : RGB(0.0);
   if (this->ExactEmitters)
   {
