@@ -182,7 +182,29 @@ bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::
   {
     const Point2& a = hole.V[i];
     const Point2& b = hole.V[i + 1 < hole.N ? i + 1 : 0];
-    Polygon2& inside = buffers[i & 1];
+    // A piece wholly on one side of the edge's line needs no split (most
+    // are: the hole's edges are few and the pieces small).
+    bool left = true, right = true;
+    for (int k = 0; k < rest->N && (left || right); ++k)
+    {
+      const double side = Cross(a, b, rest->V[k]);
+      left = left && side >= 0;
+      right = right && side <= 0;
+    }
+    if (left)
+    {
+      continue; // all of it still inside this edge
+    }
+    if (right)
+    {
+      // Wholly outside the hole: kept whole (as the split would keep it).
+      if (std::abs(SignedArea(*rest)) > minArea)
+      {
+        out.push_back(*rest);
+      }
+      return true;
+    }
+    Polygon2& inside = rest == &buffers[0] ? buffers[1] : buffers[0]; // not the one read
     if (!SplitByLine(*rest, a, b, inside, outside))
     {
       out.resize(first);
@@ -569,6 +591,45 @@ Vec3 VisibleVectorFormFactor(const Vec3& x, const Vec3& n, const Vec3* source, i
       return 3;
     },
     exact, fragmentsLimit);
+}
+
+bool HidesWholly(const TriangleCorners& receiver, const TriangleCorners& source, const BlockerPolygon& blocker)
+{
+  const Vec3* b = blocker.Corners.data();
+  Vec3 normal(0.0); // Newell: along the blocker's normal whatever its turn
+  for (int i = 1; i + 1 < blocker.Size; ++i)
+  {
+    normal += glm::cross(b[i] - b[0], b[i + 1] - b[0]);
+  }
+  if (!(glm::dot(normal, normal) > 0.0))
+  {
+    return false;
+  }
+  for (const Vec3& r : receiver)
+  {
+    const double dr = glm::dot(r - b[0], normal);
+    for (const Vec3& s : source)
+    {
+      const double ds = glm::dot(s - b[0], normal);
+      // The segment must reach the blocker's plane: from either side, or
+      // from a receiver corner on it (a contact edge).
+      if (!((dr > 0.0 && ds < 0.0) || (dr < 0.0 && ds > 0.0) || (dr == 0.0 && ds != 0.0)))
+      {
+        return false;
+      }
+      const Vec3 p = r + (dr / (dr - ds)) * (s - r);
+      for (int i = 0; i < blocker.Size; ++i)
+      {
+        const Vec3& e0 = b[i];
+        const Vec3& e1 = b[(i + 1) % blocker.Size];
+        if (glm::dot(glm::cross(e1 - e0, p - e0), normal) < 0.0)
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
 }
 
 std::vector<BlockerPolygon> MergeCoplanarPairs(

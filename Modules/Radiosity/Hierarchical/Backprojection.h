@@ -66,6 +66,17 @@ double VisibleFormFactor(const Vec3& x, const Vec3& n, const TriangleCorners& so
   const BlockerPolygon* blockers, std::size_t blockerCount, bool* exact = nullptr,
   std::size_t fragmentsLimit = 4096);
 
+/**
+ * Whether the convex `blocker` alone hides all of `source` from every point
+ * of `receiver` (both triangles): each segment from a receiver corner to a
+ * source corner meets it. The umbra of a convex blocker from a convex
+ * source (the points whose every segment to the source meets the blocker)
+ * is convex, an intersection of convex cones, so its corners decide for
+ * the whole receiver, whose form factor to the source through the blocker
+ * is then 0 everywhere, boundary included (the closed umbra).
+ */
+bool HidesWholly(const TriangleCorners& receiver, const TriangleCorners& source, const BlockerPolygon& blocker);
+
 namespace backprojection_detail
 {
 struct Point2

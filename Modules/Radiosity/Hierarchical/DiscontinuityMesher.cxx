@@ -276,6 +276,8 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     {
       ownedStart[i + 1] += ownedStart[i];
     }
+    // The links whose edges can be summed once per node (LinkChain.h).
+    const MergedLinkEdges mergedEdges(s);
     std::vector<RGB> sharedValues(sharedPoints.size());
     std::atomic<std::size_t> pastLimit{ 0 };
     tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
@@ -285,7 +287,8 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       }
       const bool accurate = !(options.MaxSeconds > 0.0 && clock.Seconds() >= options.MaxSeconds);
       pastLimit += accurate ? 0 : 1;
-      const std::vector<ChainSource> chain = GatherChain(s, leaves[i], !accurate);
+      const std::vector<ChainSource> chain = GatherChain(s, leaves[i], !accurate, &mergedEdges);
+      const std::vector<ChainEdge> edges = mergedEdges.ChainEdges(s, leaves[i]);
       const Vec3& n = mesh[leaves[i]].Normal;
       const Vec3& c = mesh[leaves[i]].Centroid;
       // Clustered: what the cluster links bring, a constant per input triangle.
@@ -294,7 +297,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       {
         const Vec3 x = Inside(sharedPoints[k], c);
         // In an umbra the signed contour integrals cancel to a rounding, which may be below 0.
-        sharedValues[k] = NonNegative(clustered + ChainIrradiance(chain, x, n) +
+        sharedValues[k] = NonNegative(clustered + ChainIrradiance(chain, edges, x, n) +
           (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n) : RGB(0.0)));
       }
       LeafWork& w = work[i];
@@ -302,7 +305,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       for (std::size_t k = 0; k < w.LocalPoints.size(); ++k)
       {
         const Vec3 x = Inside(w.LocalPoints[k], c);
-        w.LocalValues[k] = NonNegative(clustered + ChainIrradiance(chain, x, n) +
+        w.LocalValues[k] = NonNegative(clustered + ChainIrradiance(chain, edges, x, n) +
           (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n) : RGB(0.0)));
       }
       if (lights && lights->HasPunctualLights())
