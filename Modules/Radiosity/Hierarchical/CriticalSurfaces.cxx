@@ -227,7 +227,7 @@ bool LexLess(const Vec3& a, const Vec3& b)
 void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& receiverNormal,
   const std::array<Vec3, 3>& source, double sourceRadiosity,
   const std::vector<BlockerEdge>& blockerEdges, double minLength,
-  std::vector<DiscontinuitySegment>& out, const std::array<bool, 3>& sourceEdges)
+  std::vector<DiscontinuitySegment>& out, const std::array<bool, 3>& sourceEdges, double minWeight)
 {
   namespace detail = critical_surfaces_detail;
   for (const Vec3& p : receiver)
@@ -326,7 +326,8 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
     const Vec3 edgeDir = e[1] - e[0];
     for (const Vec3& v : src)
     {
-      if (!detail::ConeHalfPlanes(r, v, e[0] - v, e[1] - v, planeNormal, hp))
+      const double w = detail::GeometricFactor(r, v, e[0], v, e[1]) * sourceRadiosity;
+      if (!(w >= minWeight) || !detail::ConeHalfPlanes(r, v, e[0] - v, e[1] - v, planeNormal, hp))
       {
         continue;
       }
@@ -336,7 +337,6 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
       {
         continue;
       }
-      const double w = detail::GeometricFactor(r, v, e[0], v, e[1]) * sourceRadiosity;
       detail::Emit(a, b, w, origin, minLength, r.Tolerance, out);
     }
   }
@@ -356,7 +356,8 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
       }
       const Vec3& p = src[i];
       const Vec3& q = src[(i + 1) % 3];
-      if (!detail::ConeHalfPlanes(r, bv, bv - p, bv - q, planeNormal, hp))
+      const double w = detail::GeometricFactor(r, p, bv, q, bv) * sourceRadiosity;
+      if (!(w >= minWeight) || !detail::ConeHalfPlanes(r, bv, bv - p, bv - q, planeNormal, hp))
       {
         continue;
       }
@@ -364,7 +365,6 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
       {
         continue;
       }
-      const double w = detail::GeometricFactor(r, p, bv, q, bv) * sourceRadiosity;
       detail::Emit(a, b, w, origin, minLength, r.Tolerance, out);
     }
   }

@@ -69,11 +69,13 @@ struct BlockerEdge
  */
 /// `sourceEdges[i]` false leaves out the EV surfaces of source edge i -> i+1
 /// (an edge inside a larger emitting polygon, the diagonal of a quad light).
+/// Surfaces of weight below `minWeight` (H&T 4.2's w_min) are not traced:
+/// their weight depends on the wedge and the receiver's plane only.
 void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& receiverNormal,
   const std::array<Vec3, 3>& source, double sourceRadiosity,
   const std::vector<BlockerEdge>& blockerEdges, double minLength,
   std::vector<DiscontinuitySegment>& out,
-  const std::array<bool, 3>& sourceEdges = { true, true, true });
+  const std::array<bool, 3>& sourceEdges = { true, true, true }, double minWeight = 0.0);
 } // namespace radiosity
 
 #endif

@@ -103,7 +103,7 @@ std::vector<std::array<Vec3, 2>> LeafDiscontinuities(const HierarchicalRadiosity
     const std::array<bool, 3> edges = { !topology.InteriorEmitterEdge(source, 0),
       !topology.InteriorEmitterEdge(source, 1), !topology.InteriorEmitterEdge(source, 2) };
     FindCriticalSegments(receiver, mesh[leaf].Normal, polygon, entry.first,
-      topology.Silhouette(entry.second), minLength, segments, edges);
+      topology.Silhouette(entry.second), minLength, segments, edges, minWeight);
   }
   found += segments.size();
   segments.erase(std::remove_if(segments.begin(), segments.end(),
