@@ -185,7 +185,39 @@ RGB DirectLighting::SkyIrradianceFromMoments(const SkyMoments& moments) const
   return RGB(0.0);
 }
 
-RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
+void DirectLighting::SkyFirstHits(const Vec3& x, const Vec3& n, std::uint32_t* triangles) const
+{
+  const int m = this->SkySampleCount;
+  Vec3 t, b;
+  FrameAround(n, t, b);
+  const double far = this->FarDistance(x);
+  const Vec3 origin = this->RayOrigin(x, n);
+  thread_local std::vector<Vec3> from, to;
+  thread_local std::vector<int> direction;
+  thread_local std::vector<std::uint32_t> hits;
+  from.clear();
+  to.clear();
+  direction.clear();
+  std::fill(triangles, triangles + 64 * this->SkyMaskWords(), Visibility::NoHit);
+  for (int i = 0; i < m; ++i)
+  {
+    const Vec3 w = SkyDirection(this->SkyLattice[static_cast<std::size_t>(i)], t, b, n);
+    if (MaxComponent(SkyRadiance(this->Set.SkyLight, w)) > 0.0)
+    {
+      from.push_back(origin);
+      to.push_back(x + far * w);
+      direction.push_back(i);
+    }
+  }
+  hits.resize(from.size());
+  this->Occluders->FirstHits(from.data(), to.data(), from.size(), hits.data());
+  for (std::size_t k = 0; k < hits.size(); ++k)
+  {
+    triangles[direction[k]] = hits[k];
+  }
+}
+
+RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n, const std::uint64_t* hidden) const
 {
   if (!this->HasSky())
   {
@@ -206,6 +238,10 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n) const
   radiance.clear();
   for (int i = 0; i < m; ++i)
   {
+    if (hidden && (hidden[i / 64] >> (i % 64) & 1))
+    {
+      continue;
+    }
     const Vec3 w = SkyDirection(this->SkyLattice[static_cast<std::size_t>(i)], t, b, n);
     const RGB l = SkyRadiance(sky, w);
     if (MaxComponent(l) > 0.0)

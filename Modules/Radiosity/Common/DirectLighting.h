@@ -57,7 +57,15 @@ public:
   /// Exact direct irradiance of punctual light `light` alone, with its shadow ray.
   RGB PunctualOne(std::size_t light, const Vec3& x, const Vec3& n) const;
   /// Sky irradiance at x by the stratified quadrature.
-  RGB SkyIrradiance(const Vec3& x, const Vec3& n) const;
+  RGB SkyIrradiance(const Vec3& x, const Vec3& n) const { return this->SkyIrradiance(x, n, nullptr); }
+  /// The same where the directions of the set bits of `hidden`
+  /// (SkyMaskWords() words; null: none) are known hidden: no ray for them.
+  RGB SkyIrradiance(const Vec3& x, const Vec3& n, const std::uint64_t* hidden) const;
+  /// The occluder (scene triangle) each sky quadrature direction's ray from
+  /// x (normal n) meets first, Visibility::NoHit where none or where the
+  /// sky is dark (no ray then): SkyMaskWords() times 64 entries, the last
+  /// ones unused. The rays of SkyIrradiance.
+  void SkyFirstHits(const Vec3& x, const Vec3& n, std::uint32_t* triangles) const;
   /// Words of a SkyVisibility mask: one bit per quadrature direction.
   std::size_t SkyMaskWords() const { return (static_cast<std::size_t>(this->SkySampleCount) + 63) / 64; }
   /// Which of the sky quadrature's directions at x (normal n) reach the sky,

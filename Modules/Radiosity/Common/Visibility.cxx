@@ -203,6 +203,64 @@ void Visibility::TestSegmentsPassing(const Vec3* from, const Vec3* to, std::size
   this->Impl->Rays += cast;
 }
 
+void Visibility::FirstHits(const Vec3* from, const Vec3* to, std::size_t n, std::uint32_t* triangle) const
+{
+  std::fill(triangle, triangle + n, NoHit);
+  if (this->Empty())
+  {
+    return;
+  }
+  constexpr std::size_t Batch = 64;
+  RTCRayHit rays[Batch];
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  std::size_t cast = 0;
+  for (std::size_t start = 0; start < n; start += Batch)
+  {
+    const std::size_t count = std::min(Batch, n - start);
+    std::size_t k = 0;
+    std::size_t slot[Batch];
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const Vec3 o = from[start + i] - this->Impl->Origin;
+      const Vec3 d = to[start + i] - from[start + i];
+      const double len = glm::length(d);
+      if (len <= 2.0 * this->Epsilon)
+      {
+        continue; // as TestSegments: nothing fits between
+      }
+      RTCRayHit& r = rays[k];
+      r.ray.org_x = static_cast<float>(o.x);
+      r.ray.org_y = static_cast<float>(o.y);
+      r.ray.org_z = static_cast<float>(o.z);
+      r.ray.dir_x = static_cast<float>(d.x / len);
+      r.ray.dir_y = static_cast<float>(d.y / len);
+      r.ray.dir_z = static_cast<float>(d.z / len);
+      r.ray.tnear = static_cast<float>(this->Epsilon);
+      r.ray.tfar = static_cast<float>(len - this->Epsilon);
+      r.ray.time = 0.f;
+      r.ray.mask = 0xFFFFFFFFu;
+      r.ray.id = 0;
+      r.ray.flags = 0;
+      r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      slot[k++] = start + i;
+    }
+    if (k > 0)
+    {
+      rtcIntersect1M(this->Impl->Scene, &context, rays, static_cast<unsigned>(k), sizeof(RTCRayHit));
+      for (std::size_t j = 0; j < k; ++j)
+      {
+        if (rays[j].hit.geomID != RTC_INVALID_GEOMETRY_ID)
+        {
+          triangle[slot[j]] = this->Impl->GeometryToTriangle[rays[j].hit.primID];
+        }
+      }
+      cast += k;
+    }
+  }
+  this->Impl->Rays += cast;
+}
+
 namespace
 {
 // The intersect context comes first so that Embree's context pointer is ours.

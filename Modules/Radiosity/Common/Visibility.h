@@ -39,6 +39,16 @@ public:
    */
   void TestSegments(const Vec3* from, const Vec3* to, std::size_t n, unsigned char* visible) const;
 
+  /// No occluder on a segment (FirstHits).
+  static constexpr std::uint32_t NoHit = 0xFFFFFFFFu;
+  /**
+   * For each i < n: the occluder (scene triangle index) the segment
+   * from[i] -> to[i], shortened by the offset at both ends, meets first, or
+   * NoHit. The segments of TestSegments, with Embree's nearest hit instead
+   * of any hit. Thread-safe.
+   */
+  void FirstHits(const Vec3* from, const Vec3* to, std::size_t n, std::uint32_t* triangle) const;
+
   /**
    * As TestSegments, where the occluders `passes` accepts (scene triangle
    * indices) let the segments through: a receiver's and an emitter's own

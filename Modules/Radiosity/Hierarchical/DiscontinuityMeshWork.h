@@ -6,6 +6,7 @@
 #ifndef Radiosity_DiscontinuityMeshWork_h
 #define Radiosity_DiscontinuityMeshWork_h
 
+#include "Radiosity/Common/DirectLighting.h"
 #include "Radiosity/Hierarchical/ConstrainedTriangulation.h"
 #include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 
@@ -101,6 +102,20 @@ struct SharedSamples
 /// samples are numbered in the order of their first appearance in leaf order.
 SharedSamples ReferenceSamples(
   const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, LeafWorks& work);
+/**
+ * The sky quadrature's directions that no point of a leaf sees, for the
+ * leaves `leaves[order[k]]`, k in [begin, end): those whose rays from the
+ * leaf's three corners meet the same occluder first. Parallel rays from the
+ * points of the triangle meet that occluder's plane at the same convex
+ * combination of the corners' hits, inside it and no farther than the
+ * farthest, so each point's ray meets it too (each ray starts at its point
+ * moved by one offset along n, the same for all). A corner's rays are cast
+ * once for the leaves of its input triangle that meet there
+ * (DiscontinuityMeshSky.cxx). SkyMaskWords() words per leaf, in k order.
+ */
+std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, const DirectLighting& lights,
+  const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
+  std::size_t end);
 } // namespace discontinuity_mesh_detail
 } // namespace radiosity
 

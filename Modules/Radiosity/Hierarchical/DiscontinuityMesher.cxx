@@ -9,6 +9,7 @@
 #include "Radiosity/Common/MeshProbeTracker.h"
 #include "Radiosity/Hierarchical/Shaft.h"
 #include "Radiosity/Common/Stopwatch.h"
+#include "Radiosity/Common/Visibility.h"
 #include "Radiosity/Common/ThreadLimit.h"
 
 #include <tbb/parallel_for.h>
@@ -280,7 +281,8 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     const MergedLinkEdges mergedEdges(s);
     std::vector<RGB> sharedValues(sharedPoints.size());
     std::atomic<std::size_t> pastLimit{ 0 };
-    tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) {
+    // `hidden`: the sky directions no point of the leaf sees (null: none known).
+    auto sampleLeaf = [&](std::size_t i, const std::uint64_t* hidden) {
       if (ownedStart[i] == ownedStart[i + 1] && work[i].LocalPoints.empty() && !(lights && lights->HasPunctualLights()))
       {
         return;
@@ -293,12 +295,13 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       const Vec3& c = mesh[leaves[i]].Centroid;
       // Clustered: what the cluster links bring, a constant per input triangle.
       const RGB clustered = s.ClusterIrradiance(leaves[i]);
+
       for (std::uint32_t k = ownedStart[i]; k < ownedStart[i + 1]; ++k)
       {
         const Vec3 x = Inside(sharedPoints[k], c);
         // In an umbra the signed contour integrals cancel to a rounding, which may be below 0.
         sharedValues[k] = NonNegative(clustered + ChainIrradiance(chain, edges, x, n) +
-          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n) : RGB(0.0)));
+          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n, hidden) : RGB(0.0)));
       }
       LeafWork& w = work[i];
       w.LocalValues.resize(w.LocalPoints.size());
@@ -306,7 +309,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       {
         const Vec3 x = Inside(w.LocalPoints[k], c);
         w.LocalValues[k] = NonNegative(clustered + ChainIrradiance(chain, edges, x, n) +
-          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n) : RGB(0.0)));
+          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n, hidden) : RGB(0.0)));
       }
       if (lights && lights->HasPunctualLights())
       {
@@ -338,7 +341,32 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
           w.PunctualVertices[v] = lights->Punctual(Inside(w.Mesh.Points[v], c), n);
         }
       }
-    });
+    };
+    if (lights && lights->HasSky())
+    {
+      // In blocks of leaves by input triangle, so that the leaves meeting at
+      // a corner share its sky rays (SkyHiddenOverLeaves) and the rays'
+      // record stays small.
+      std::vector<std::uint32_t> order(leaves.size());
+      for (std::uint32_t i = 0; i < order.size(); ++i)
+      {
+        order[i] = i;
+      }
+      std::stable_sort(order.begin(), order.end(),
+        [&](std::uint32_t a, std::uint32_t b) { return mesh[leaves[a]].Source < mesh[leaves[b]].Source; });
+      constexpr std::size_t SkyBlock = 8192;
+      const std::size_t words = lights->SkyMaskWords();
+      for (std::size_t begin = 0; begin < order.size(); begin += SkyBlock)
+      {
+        const std::size_t end = std::min(order.size(), begin + SkyBlock);
+        const std::vector<std::uint64_t> hidden = SkyHiddenOverLeaves(s, *lights, leaves, order, begin, end);
+        tbb::parallel_for(begin, end, [&](std::size_t k) { sampleLeaf(order[k], hidden.data() + (k - begin) * words); });
+      }
+    }
+    else
+    {
+      tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t i) { sampleLeaf(i, nullptr); });
+    }
     out.PointSamples = sharedPoints.size();
     out.LeavesSampledPastTimeLimit = pastLimit;
     out.SampleSeconds = clock.Seconds() - samplesStart;

@@ -1,8 +1,14 @@
-// A leaf's chain of links brought by their merged edges (MergedLinkEdges,
-// LinkChain.h) against the source-by-source contour sums, on solved scenes
-// at three scales: the same point irradiance to rounding, with fewer edges.
+// What the discontinuity mesher leaves out or shares per leaf, checked
+// against what it replaces: a leaf's chain of links brought by their merged
+// edges (MergedLinkEdges, LinkChain.h) against the source-by-source contour
+// sums at three scales; a link whose source one blocker hides wholly
+// (HidesWholly) against the backprojection inside the leaf; the sky
+// directions hidden over a whole leaf against rays from inside it.
+#include "Radiosity/Hierarchical/Backprojection.h"
+#include "Radiosity/Hierarchical/DiscontinuityMeshWork.h"
 #include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 #include "Radiosity/Hierarchical/LinkChain.h"
+#include "Radiosity/Scenes/OfficeScene.h"
 #include "Radiosity/Scenes/SceneGenerators.h"
 
 #include <gtest/gtest.h>
@@ -109,4 +115,117 @@ TEST(LinkChain, MergedEdgesEqualTheSourceBySourceSums)
       EXPECT_LT(r.Edges, 2.5 * r.MergedLinks);
     }
   }
+}
+
+TEST(Backprojection, HidesWhollyOnlyInTheUmbra)
+{
+  // A square source (two triangles) at height 1 over a floor, a square
+  // blocker at height 0.5: its umbra on the floor is the square of half-width
+  // 0.2 - 0.1 = 0.1 around the axis (the blocker's 0.2 projected from the
+  // source's far side, 2 x 0.2 - 0.3). Exact form factors by backprojection
+  // check the claim at points inside each receiver.
+  for (const double scale : { 1e-4, 1.0, 1e4 })
+  {
+    auto at = [&](double x, double y, double z) { return scale * Vec3(x, y, z); };
+    const TriangleCorners source[2] = { { at(-0.3, -0.3, 1), at(0.3, 0.3, 1), at(0.3, -0.3, 1) },
+      { at(-0.3, -0.3, 1), at(-0.3, 0.3, 1), at(0.3, 0.3, 1) } };
+    BlockerPolygon blocker;
+    blocker.Corners = { at(-0.2, -0.2, 0.5), at(0.2, -0.2, 0.5), at(0.2, 0.2, 0.5), at(-0.2, 0.2, 0.5) };
+    blocker.Size = 4;
+    const TriangleCorners inUmbra = { at(-0.09, -0.09, 0), at(0.09, -0.09, 0), at(0, 0.09, 0) };
+    const TriangleCorners acrossPenumbra = { at(-0.09, -0.09, 0), at(0.3, -0.09, 0), at(0, 0.09, 0) };
+    // The umbra's edge through a corner: still wholly hidden (the closed umbra).
+    const TriangleCorners toTheEdge = { at(-0.1, -0.1, 0), at(0.1, -0.1, 0), at(0, 0.1, 0) };
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto worstSeen = [&](const TriangleCorners& r, const TriangleCorners& s) {
+      double worst = 0.0;
+      for (int i = 0; i < 200; ++i)
+      {
+        double a = u(rng), b = u(rng);
+        if (a + b > 1.0)
+        {
+          a = 1.0 - a;
+          b = 1.0 - b;
+        }
+        const Vec3 x = r[0] + a * (r[1] - r[0]) + b * (r[2] - r[0]);
+        const TriangleCorners blockers[2] = { { blocker.Corners[0], blocker.Corners[1], blocker.Corners[2] },
+          { blocker.Corners[0], blocker.Corners[2], blocker.Corners[3] } };
+        worst = std::max(worst, VisibleFormFactor(x, Vec3(0, 0, 1), s, blockers, 2));
+      }
+      return worst;
+    };
+    for (const TriangleCorners& s : source)
+    {
+      EXPECT_TRUE(HidesWholly(inUmbra, s, blocker)) << "scale " << scale;
+      EXPECT_TRUE(HidesWholly(toTheEdge, s, blocker)) << "scale " << scale;
+      EXPECT_LT(worstSeen(inUmbra, s), 1e-15) << "scale " << scale; // measured 0
+      EXPECT_FALSE(HidesWholly(acrossPenumbra, s, blocker)) << "scale " << scale;
+    }
+    // Across the penumbra some of the source shows (the check above is not vacuous).
+    EXPECT_GT(worstSeen(acrossPenumbra, source[0]) + worstSeen(acrossPenumbra, source[1]), 1e-3);
+    // A blocker above the source, or a receiver above the blocker, hides nothing.
+    BlockerPolygon above = blocker;
+    for (Vec3& c : above.Corners)
+    {
+      c.z = 2.0 * scale;
+    }
+    EXPECT_FALSE(HidesWholly(inUmbra, source[0], above));
+    const TriangleCorners high = { at(-0.09, -0.09, 0.7), at(0.09, -0.09, 0.7), at(0, 0.09, 0.7) };
+    EXPECT_FALSE(HidesWholly(high, source[0], blocker));
+  }
+}
+
+TEST(DiscontinuityMesh, SkyDirectionsHiddenOverALeafAreHiddenInside)
+{
+  // The office under its overcast sky (the lamp off): the directions that
+  // SkyHiddenOverLeaves takes as hidden from a whole leaf, since its three
+  // corners' rays meet one occluder first, are hidden at points inside it.
+  Scene scene = MakeOfficeScene();
+  scene.Lighting.Lights.clear();
+  HierarchicalOptions options;
+  options.RelativeLinkTolerance = 0.5;
+  options.MaxRefinementRounds = 0;
+  options.SkySamples = 256;
+  HierarchicalRadiosity solver(scene, options);
+  solver.Solve();
+  const DirectLighting& lights = *solver.GetDirectLighting();
+  const std::vector<std::uint32_t> leaves = solver.Mesh().Leaves();
+  std::vector<std::uint32_t> order(leaves.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i)
+  {
+    order[i] = i;
+  }
+  const std::vector<std::uint64_t> hidden =
+    discontinuity_mesh_detail::SkyHiddenOverLeaves(solver, lights, leaves, order, 0, order.size());
+  const std::size_t words = lights.SkyMaskWords();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::size_t hiddenDirections = 0, checked = 0, seen = 0;
+  std::vector<std::uint64_t> visible(words);
+  for (std::size_t k = 0; k < leaves.size(); k += 1 + leaves.size() / 300)
+  {
+    const TriangleCorners c = solver.Corners(leaves[k]);
+    const Vec3& n = solver.Mesh()[leaves[k]].Normal;
+    for (int p = 0; p < 4; ++p)
+    {
+      double a = u(rng), b = u(rng);
+      if (a + b > 1.0)
+      {
+        a = 1.0 - a;
+        b = 1.0 - b;
+      }
+      lights.SkyVisibility(c[0] + a * (c[1] - c[0]) + b * (c[2] - c[0]), n, visible.data());
+      for (std::size_t w = 0; w < words; ++w)
+      {
+        const std::uint64_t mask = hidden[k * words + w];
+        hiddenDirections += static_cast<std::size_t>(__builtin_popcountll(mask));
+        seen += static_cast<std::size_t>(__builtin_popcountll(mask & visible[w]));
+      }
+      ++checked;
+    }
+  }
+  std::cout << checked << " points: " << hiddenDirections << " hidden directions, " << seen << " of them seen\n";
+  EXPECT_EQ(seen, 0u);
+  EXPECT_GT(hiddenDirections, 20u * checked); // measured: see the output
 }
