@@ -326,8 +326,12 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
     const Vec3 edgeDir = e[1] - e[0];
     for (const Vec3& v : src)
     {
+      if (!detail::ConeHalfPlanes(r, v, e[0] - v, e[1] - v, planeNormal, hp))
+      {
+        continue;
+      }
       const double w = detail::GeometricFactor(r, v, e[0], v, e[1]) * sourceRadiosity;
-      if (!(w >= minWeight) || !detail::ConeHalfPlanes(r, v, e[0] - v, e[1] - v, planeNormal, hp))
+      if (!(w >= minWeight))
       {
         continue;
       }
@@ -356,8 +360,12 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
       }
       const Vec3& p = src[i];
       const Vec3& q = src[(i + 1) % 3];
+      if (!detail::ConeHalfPlanes(r, bv, bv - p, bv - q, planeNormal, hp))
+      {
+        continue;
+      }
       const double w = detail::GeometricFactor(r, p, bv, q, bv) * sourceRadiosity;
-      if (!(w >= minWeight) || !detail::ConeHalfPlanes(r, bv, bv - p, bv - q, planeNormal, hp))
+      if (!(w >= minWeight))
       {
         continue;
       }

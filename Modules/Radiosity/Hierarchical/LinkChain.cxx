@@ -186,7 +186,35 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
             ids.push_back(scene.Triangles[b].V);
           }
         }
-        const std::vector<BlockerPolygon> polygons = MergeCoplanarPairs(corners, ids);
+        std::vector<BlockerPolygon> polygons = MergeCoplanarPairs(corners, ids);
+        // The largest seen from the leaf first: a point in their umbra has
+        // nothing left to subtract the others from.
+        const Vec3 centre = (receiver[0] + receiver[1] + receiver[2]) / 3.0;
+        auto apparent = [&](const BlockerPolygon& b) {
+          Vec3 area(0.0), middle(0.0);
+          for (int k = 0; k < b.Size; ++k)
+          {
+            middle += b.Corners[k] / static_cast<double>(b.Size);
+          }
+          for (int k = 1; k + 1 < b.Size; ++k)
+          {
+            area += glm::cross(b.Corners[k] - b.Corners[0], b.Corners[k + 1] - b.Corners[0]);
+          }
+          const Vec3 d = middle - centre;
+          return glm::length(area) / std::max(glm::dot(d, d), 1e-300);
+        };
+        std::vector<std::pair<double, std::size_t>> size(polygons.size());
+        for (std::size_t k = 0; k < polygons.size(); ++k)
+        {
+          size[k] = { -apparent(polygons[k]), k };
+        }
+        std::sort(size.begin(), size.end());
+        std::vector<BlockerPolygon> sorted(polygons.size());
+        for (std::size_t k = 0; k < polygons.size(); ++k)
+        {
+          sorted[k] = polygons[size[k].second];
+        }
+        polygons.swap(sorted);
         // A leaf in the umbra of one blocker takes nothing from the link.
         if (std::any_of(polygons.begin(), polygons.end(),
               [&](const BlockerPolygon& b) { return HidesWholly(receiver, c.Polygon, b); }))
