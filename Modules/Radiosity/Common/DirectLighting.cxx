@@ -217,25 +217,16 @@ void DirectLighting::SkyFirstHits(const Vec3& x, const Vec3& n, std::uint32_t* t
   }
 }
 
-RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n, const std::uint64_t* hidden) const
+DirectLighting::SkyDirectionSet DirectLighting::SkyDirections(const Vec3& n, const std::uint64_t* hidden) const
 {
+  SkyDirectionSet set;
   if (!this->HasSky())
   {
-    return RGB(0.0);
+    return set;
   }
-  const Sky& sky = this->Set.SkyLight;
   Vec3 t, b;
   FrameAround(n, t, b);
   const int m = this->SkySampleCount;
-  const double far = this->FarDistance(x);
-  const Vec3 origin = this->RayOrigin(x, n);
-  // Per thread, kept between calls: the mesher asks this of every sample.
-  thread_local std::vector<Vec3> from, to;
-  thread_local std::vector<RGB> radiance;
-  thread_local std::vector<unsigned char> visible;
-  from.clear();
-  to.clear();
-  radiance.clear();
   for (int i = 0; i < m; ++i)
   {
     if (hidden && (hidden[i / 64] >> (i % 64) & 1))
@@ -243,25 +234,54 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n, const std::uint6
       continue;
     }
     const Vec3 w = SkyDirection(this->SkyLattice[static_cast<std::size_t>(i)], t, b, n);
-    const RGB l = SkyRadiance(sky, w);
+    const RGB l = SkyRadiance(this->Set.SkyLight, w);
     if (MaxComponent(l) > 0.0)
     {
-      from.push_back(origin);
-      to.push_back(x + far * w);
-      radiance.push_back(l);
+      set.Direction.push_back(w);
+      set.Radiance.push_back(l);
     }
   }
-  visible.assign(from.size(), 0);
-  this->Occluders->TestSegments(from.data(), to.data(), from.size(), visible.data());
+  return set;
+}
+
+RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n, const std::uint64_t* hidden) const
+{
+  if (!this->HasSky())
+  {
+    return RGB(0.0);
+  }
+  return this->SkyIrradiance(x, n, this->SkyDirections(n, hidden));
+}
+
+RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n, const SkyDirectionSet& directions) const
+{
+  if (!this->HasSky())
+  {
+    return RGB(0.0);
+  }
+  const double far = this->FarDistance(x);
+  const Vec3 origin = this->RayOrigin(x, n);
+  // Per thread, kept between calls: the mesher asks this of every sample.
+  thread_local std::vector<Vec3> from, to;
+  thread_local std::vector<unsigned char> visible;
+  const std::size_t count = directions.Direction.size();
+  from.assign(count, origin);
+  to.resize(count);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    to[k] = x + far * directions.Direction[k];
+  }
+  visible.assign(count, 0);
+  this->Occluders->TestSegments(from.data(), to.data(), count, visible.data());
   RGB sum(0.0);
-  for (std::size_t k = 0; k < from.size(); ++k)
+  for (std::size_t k = 0; k < count; ++k)
   {
     if (visible[k])
     {
-      sum += radiance[k];
+      sum += directions.Radiance[k];
     }
   }
-  return (Pi / m) * sum;
+  return (Pi / this->SkySampleCount) * sum;
 }
 
 std::array<Vec3, 3> DirectLighting::IrradianceVector(const Vec3& x, const Vec3& n, bool withSky) const

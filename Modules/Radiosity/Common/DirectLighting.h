@@ -61,6 +61,17 @@ public:
   /// The same where the directions of the set bits of `hidden`
   /// (SkyMaskWords() words; null: none) are known hidden: no ray for them.
   RGB SkyIrradiance(const Vec3& x, const Vec3& n, const std::uint64_t* hidden) const;
+  /// The sky quadrature's directions about a normal that may bring light:
+  /// the sky bright there and not in `hidden` (as above), with their
+  /// radiance. The same for every point of one normal (the mesher's leaf).
+  struct SkyDirectionSet
+  {
+    std::vector<Vec3> Direction;
+    std::vector<RGB> Radiance;
+  };
+  SkyDirectionSet SkyDirections(const Vec3& n, const std::uint64_t* hidden = nullptr) const;
+  /// SkyIrradiance at x through the directions SkyDirections(n, ...) gave.
+  RGB SkyIrradiance(const Vec3& x, const Vec3& n, const SkyDirectionSet& directions) const;
   /// The occluder (scene triangle) each sky quadrature direction's ray from
   /// x (normal n) meets first, Visibility::NoHit where none or where the
   /// sky is dark (no ray then): SkyMaskWords() times 64 entries, the last

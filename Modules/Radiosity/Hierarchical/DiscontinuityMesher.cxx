@@ -295,13 +295,15 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       const Vec3& c = mesh[leaves[i]].Centroid;
       // Clustered: what the cluster links bring, a constant per input triangle.
       const RGB clustered = s.ClusterIrradiance(leaves[i]);
+      const DirectLighting::SkyDirectionSet sky =
+        lights ? lights->SkyDirections(n, hidden) : DirectLighting::SkyDirectionSet();
 
       for (std::uint32_t k = ownedStart[i]; k < ownedStart[i + 1]; ++k)
       {
         const Vec3 x = Inside(sharedPoints[k], c);
         // In an umbra the signed contour integrals cancel to a rounding, which may be below 0.
         sharedValues[k] = NonNegative(clustered + ChainIrradiance(chain, edges, x, n) +
-          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n, hidden) : RGB(0.0)));
+          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(sharedPoints[k], c), n, sky) : RGB(0.0)));
       }
       LeafWork& w = work[i];
       w.LocalValues.resize(w.LocalPoints.size());
@@ -309,7 +311,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       {
         const Vec3 x = Inside(w.LocalPoints[k], c);
         w.LocalValues[k] = NonNegative(clustered + ChainIrradiance(chain, edges, x, n) +
-          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n, hidden) : RGB(0.0)));
+          (lights ? lights->SkyIrradiance(lights->VisibilityPoint(w.LocalPoints[k], c), n, sky) : RGB(0.0)));
       }
       if (lights && lights->HasPunctualLights())
       {
