@@ -156,9 +156,14 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
   {
     for (std::uint32_t i : s.LinksOf(static_cast<std::uint32_t>(a)))
     {
+      // The merged links first: their marks are read in order, the
+      // sources' radiosities at random.
+      if (merged && merged->Merged(i))
+      {
+        continue;
+      }
       const HierarchicalLink& l = s.Links()[i];
-      if (l.Kind == HierarchicalLink::Hidden || !(MaxComponent(s.Radiosity(l.Source)) > 0) ||
-        (merged && merged->Merged(i)))
+      if (l.Kind == HierarchicalLink::Hidden || !(MaxComponent(s.Radiosity(l.Source)) > 0))
       {
         continue;
       }
