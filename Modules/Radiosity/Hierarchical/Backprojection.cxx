@@ -3,6 +3,7 @@
 #include "Radiosity/Common/FormFactor.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <cmath>
 #include <vector>
 
@@ -344,6 +345,36 @@ typename Factor::Value FormFactorOf(const SourceFrame& frame, const Vec3& x, con
   return factor;
 }
 
+// Lambert's contour formula over fragments of a source that lies wholly
+// above x's horizon, x `height` in front of it: the sum in the source's
+// frame, without FormFactorOf's corners in 3D, horizon clip or facing test.
+// The fragments turn counter-clockwise about the source's normal, towards
+// x, so each one's sum has the same sign.
+double PlainFragmentsFactor(
+  const SourceFrame& frame, const Vec3& x, const Vec3& n, double height, const std::vector<Polygon2>& pieces)
+{
+  const Point2 foot = frame.To2(x);
+  const Vec3 m(glm::dot(n, frame.U), glm::dot(n, frame.V), glm::dot(n, frame.M));
+  double sum = 0.0;
+  for (const Polygon2& piece : pieces)
+  {
+    Vec3 a(piece.V[0].X - foot.X, piece.V[0].Y - foot.Y, -height);
+    const Vec3 first = a;
+    for (int i = 0; i < piece.N; ++i)
+    {
+      const Vec3 b = i + 1 < piece.N ? Vec3(piece.V[i + 1].X - foot.X, piece.V[i + 1].Y - foot.Y, -height) : first;
+      const Vec3 c = glm::cross(a, b);
+      const double cl = glm::length(c);
+      if (cl > 0.0)
+      {
+        sum += std::atan2(cl, glm::dot(a, b)) * glm::dot(m, c) / cl;
+      }
+      a = b;
+    }
+  }
+  return std::fabs(sum) / (2.0 * Pi);
+}
+
 // The visible form factor as the source's less that of the union of the
 // shadows on it, the union as disjoint convex pieces: shadow j's part on the
 // source less the shadows before it,
@@ -503,6 +534,18 @@ typename Factor::Value VisibleFromPoint(const SourceFrame& frame, const Vec3& x,
     }
   }
 
+  if constexpr (std::is_same_v<Factor, ScalarFactor>)
+  {
+    bool above = true; // the whole source above x's horizon: no clip
+    for (int i = 0; i < frame.Corners && above; ++i)
+    {
+      above = glm::dot(frame.Outline[static_cast<std::size_t>(i)] - x, n) >= 0.0;
+    }
+    if (above)
+    {
+      return PlainFragmentsFactor(frame, x, n, height, visible);
+    }
+  }
   Value factor(0.0);
   for (const Polygon2& piece : visible)
   {
