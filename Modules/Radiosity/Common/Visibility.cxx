@@ -130,6 +130,36 @@ void PassThrough(const RTCFilterFunctionNArguments* args)
 }
 }
 
+namespace
+{
+/// The Embree ray of the segment from -> to (coordinates relative to
+/// `origin`), shortened by `epsilon` at both ends; false when nothing fits
+/// between the ends.
+bool SegmentRay(const Vec3& origin, const Vec3& from, const Vec3& to, double epsilon, RTCRay& r)
+{
+  const Vec3 o = from - origin;
+  const Vec3 d = to - from;
+  const double len = glm::length(d);
+  if (len <= 2.0 * epsilon)
+  {
+    return false;
+  }
+  r.org_x = static_cast<float>(o.x);
+  r.org_y = static_cast<float>(o.y);
+  r.org_z = static_cast<float>(o.z);
+  r.dir_x = static_cast<float>(d.x / len);
+  r.dir_y = static_cast<float>(d.y / len);
+  r.dir_z = static_cast<float>(d.z / len);
+  r.tnear = static_cast<float>(epsilon);
+  r.tfar = static_cast<float>(len - epsilon);
+  r.time = 0.f;
+  r.mask = 0xFFFFFFFFu;
+  r.id = 0;
+  r.flags = 0;
+  return true;
+}
+} // namespace
+
 void Visibility::TestSegments(
   const Vec3* from, const Vec3* to, std::size_t n, unsigned char* visible) const
 {
@@ -166,27 +196,11 @@ void Visibility::TestSegmentsPassing(const Vec3* from, const Vec3* to, std::size
     std::size_t slot[Batch];
     for (std::size_t i = 0; i < count; ++i)
     {
-      const Vec3 o = from[start + i] - this->Impl->Origin;
-      const Vec3 d = to[start + i] - from[start + i];
-      const double len = glm::length(d);
-      if (len <= 2.0 * this->Epsilon)
+      if (!SegmentRay(this->Impl->Origin, from[start + i], to[start + i], this->Epsilon, rays[k]))
       {
         out[i] = 1; // endpoints closer than the offset: nothing fits between
         continue;
       }
-      RTCRay& r = rays[k];
-      r.org_x = static_cast<float>(o.x);
-      r.org_y = static_cast<float>(o.y);
-      r.org_z = static_cast<float>(o.z);
-      r.dir_x = static_cast<float>(d.x / len);
-      r.dir_y = static_cast<float>(d.y / len);
-      r.dir_z = static_cast<float>(d.z / len);
-      r.tnear = static_cast<float>(this->Epsilon);
-      r.tfar = static_cast<float>(len - this->Epsilon);
-      r.time = 0.f;
-      r.mask = 0xFFFFFFFFu;
-      r.id = 0;
-      r.flags = 0;
       slot[k++] = i;
     }
     if (k > 0)
@@ -222,27 +236,11 @@ void Visibility::FirstHits(const Vec3* from, const Vec3* to, std::size_t n, std:
     std::size_t slot[Batch];
     for (std::size_t i = 0; i < count; ++i)
     {
-      const Vec3 o = from[start + i] - this->Impl->Origin;
-      const Vec3 d = to[start + i] - from[start + i];
-      const double len = glm::length(d);
-      if (len <= 2.0 * this->Epsilon)
+      if (!SegmentRay(this->Impl->Origin, from[start + i], to[start + i], this->Epsilon, rays[k].ray))
       {
         continue; // as TestSegments: nothing fits between
       }
-      RTCRayHit& r = rays[k];
-      r.ray.org_x = static_cast<float>(o.x);
-      r.ray.org_y = static_cast<float>(o.y);
-      r.ray.org_z = static_cast<float>(o.z);
-      r.ray.dir_x = static_cast<float>(d.x / len);
-      r.ray.dir_y = static_cast<float>(d.y / len);
-      r.ray.dir_z = static_cast<float>(d.z / len);
-      r.ray.tnear = static_cast<float>(this->Epsilon);
-      r.ray.tfar = static_cast<float>(len - this->Epsilon);
-      r.ray.time = 0.f;
-      r.ray.mask = 0xFFFFFFFFu;
-      r.ray.id = 0;
-      r.ray.flags = 0;
-      r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rays[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
       slot[k++] = start + i;
     }
     if (k > 0)
@@ -302,26 +300,11 @@ void Visibility::CollectOccluders(
   ctx.Hits = &triangles;
   for (std::size_t i = 0; i < n; ++i)
   {
-    const Vec3 o = from[i] - this->Impl->Origin;
-    const Vec3 d = to[i] - from[i];
-    const double len = glm::length(d);
-    if (len <= 2.0 * this->Epsilon)
+    RTCRayHit rh;
+    if (!SegmentRay(this->Impl->Origin, from[i], to[i], this->Epsilon, rh.ray))
     {
       continue;
     }
-    RTCRayHit rh;
-    rh.ray.org_x = static_cast<float>(o.x);
-    rh.ray.org_y = static_cast<float>(o.y);
-    rh.ray.org_z = static_cast<float>(o.z);
-    rh.ray.dir_x = static_cast<float>(d.x / len);
-    rh.ray.dir_y = static_cast<float>(d.y / len);
-    rh.ray.dir_z = static_cast<float>(d.z / len);
-    rh.ray.tnear = static_cast<float>(this->Epsilon);
-    rh.ray.tfar = static_cast<float>(len - this->Epsilon);
-    rh.ray.time = 0.f;
-    rh.ray.mask = 0xFFFFFFFFu;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(this->Impl->Scene, &ctx.Context, &rh);
   }
