@@ -297,7 +297,6 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       const RGB clustered = s.ClusterIrradiance(leaves[i]);
       const DirectLighting::SkyDirectionSet sky =
         lights ? lights->SkyDirections(n, hidden) : DirectLighting::SkyDirectionSet();
-
       for (std::uint32_t k = ownedStart[i]; k < ownedStart[i + 1]; ++k)
       {
         const Vec3 x = Inside(sharedPoints[k], c);
