@@ -220,9 +220,17 @@ void DirectLighting::SkyFirstHits(const Vec3& x, const Vec3& n, std::uint32_t* t
 DirectLighting::SkyDirectionSet DirectLighting::SkyDirections(const Vec3& n, const std::uint64_t* hidden) const
 {
   SkyDirectionSet set;
+  this->FillSkyDirections(n, hidden, set);
+  return set;
+}
+
+void DirectLighting::FillSkyDirections(const Vec3& n, const std::uint64_t* hidden, SkyDirectionSet& set) const
+{
+  set.Direction.clear();
+  set.Radiance.clear();
   if (!this->HasSky())
   {
-    return set;
+    return;
   }
   Vec3 t, b;
   FrameAround(n, t, b);
@@ -241,7 +249,6 @@ DirectLighting::SkyDirectionSet DirectLighting::SkyDirections(const Vec3& n, con
       set.Radiance.push_back(l);
     }
   }
-  return set;
 }
 
 RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n, const std::uint64_t* hidden) const
@@ -250,7 +257,11 @@ RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n, const std::uint6
   {
     return RGB(0.0);
   }
-  return this->SkyIrradiance(x, n, this->SkyDirections(n, hidden));
+  // Per thread, kept between calls (the solve's light links ask this at
+  // seven points of every node).
+  thread_local SkyDirectionSet directions;
+  this->FillSkyDirections(n, hidden, directions);
+  return this->SkyIrradiance(x, n, directions);
 }
 
 RGB DirectLighting::SkyIrradiance(const Vec3& x, const Vec3& n, const SkyDirectionSet& directions) const

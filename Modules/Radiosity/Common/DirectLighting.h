@@ -175,6 +175,8 @@ public:
   const Visibility* ShadowRays() const { return this->Occluders; }
 
 private:
+  /// SkyDirections into `set`, its storage reused.
+  void FillSkyDirections(const Vec3& n, const std::uint64_t* hidden, SkyDirectionSet& set) const;
   const Scene& SourceScene;
   LightSet Set;
   int SkySampleCount = 256;

@@ -47,6 +47,21 @@ inline double SumComponents(const RGB& c)
   return c.r + c.g + c.b;
 }
 
+/// Lexicographic order of points (x, then y, then z): a key for sorting
+/// and merging equal points.
+inline bool LexLess(const Vec3& a, const Vec3& b)
+{
+  if (a.x != b.x)
+  {
+    return a.x < b.x;
+  }
+  if (a.y != b.y)
+  {
+    return a.y < b.y;
+  }
+  return a.z < b.z;
+}
+
 struct Triangle
 {
   std::array<std::uint32_t, 3> V;

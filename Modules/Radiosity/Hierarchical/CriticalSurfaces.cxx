@@ -209,19 +209,6 @@ void Emit(const Vec3& a, const Vec3& b, double weight, const Vec3& origin, doubl
   seg.Weight = weight;
   out.push_back(seg);
 }
-
-bool LexLess(const Vec3& a, const Vec3& b)
-{
-  if (a.x != b.x)
-  {
-    return a.x < b.x;
-  }
-  if (a.y != b.y)
-  {
-    return a.y < b.y;
-  }
-  return a.z < b.z;
-}
 } // namespace critical_surfaces_detail
 
 void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& receiverNormal,
@@ -298,7 +285,7 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
   }
   // Distinct blocker vertices: an endpoint shared by several edges spans one
   // EV surface per source edge, not one per edge it belongs to.
-  std::sort(vertices.begin(), vertices.end(), detail::LexLess);
+  std::sort(vertices.begin(), vertices.end(), LexLess);
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   for (Vec3& v : vertices)
   {

@@ -12,11 +12,6 @@ namespace radiosity
 {
 namespace
 {
-bool LexLess(const Vec3& p, const Vec3& q)
-{
-  return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && p.z < q.z)));
-}
-
 /// Whether the contour sum of `source` is its form factor at every point of
 /// `receiver` (normal n): above the plane, and facing it.
 bool PlainContour(const TriangleCorners& source, const TriangleCorners& receiver, const Vec3& n)

@@ -412,50 +412,61 @@ TEST(Robustness, AbortDuringHierarchicalLinkingWithinASecond)
   EXPECT_LT(late, 1.0); // wall clock: measured 0.1 ms; 1 s is the promise, the margin a loaded machine
 }
 
+namespace
+{
+struct MeshingAbort
+{
+  bool Asked = false;
+  std::string Phase; ///< of the last progress report
+  double Late = 0.0; ///< seconds from the abort to the mesher's return
+  bool Empty = false; ///< no interpolant made
+};
+
+/// The Cornell box solved, then meshed with an abort asked `after` seconds
+/// from the first report that `from` accepts (and every one after it).
+MeshingAbort AbortCornellMeshing(const std::function<bool(const ProgressStatus&)>& from, double after)
+{
+  const Scene box = MakeCornellBox();
+  HierarchicalRadiosity solver(box, HierarchicalOptions());
+  EXPECT_EQ(solver.Solve().Stop, StopReason::Converged);
+  AbortAfter abort(after);
+  MeshingAbort out;
+  bool started = false;
+  const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions(),
+    [&](const ProgressStatus& status) {
+      out.Phase = status.Phase;
+      started = started || from(status);
+      return started ? abort(status) : true;
+    });
+  out.Asked = abort.Asked;
+  out.Late = abort.SecondsSinceStop();
+  out.Empty = mesh.Interpolants.empty();
+  std::cout << "meshing stopped in phase '" << out.Phase << "' " << out.Late << " s after the abort\n";
+  return out;
+}
+} // namespace
+
 TEST(Robustness, AbortDuringTheFirstMeshingPhaseWithinASecond)
 {
   // The discontinuities and triangulations of every leaf (phase 1) used to
   // run to their end before the first progress report.
-  const Scene box = MakeCornellBox();
-  HierarchicalRadiosity solver(box, HierarchicalOptions());
-  ASSERT_EQ(solver.Solve().Stop, StopReason::Converged);
-  AbortAfter abort(0.1);
-  std::string phase;
-  const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions(),
-    [&](const ProgressStatus& status) {
-      phase = status.Phase;
-      return abort(status);
-    });
-  ASSERT_TRUE(abort.Asked);
-  const double late = abort.SecondsSinceStop();
-  std::cout << "meshing stopped in phase '" << phase << "' " << late << " s after the abort\n";
-  EXPECT_EQ(phase, "finding discontinuities");
-  EXPECT_TRUE(mesh.Interpolants.empty());
-  EXPECT_LT(late, 1.0); // wall clock: measured 0.14 ms; 1 s is the promise, the margin a loaded machine
+  const MeshingAbort r = AbortCornellMeshing([](const ProgressStatus&) { return true; }, 0.1);
+  ASSERT_TRUE(r.Asked);
+  EXPECT_EQ(r.Phase, "finding discontinuities");
+  EXPECT_TRUE(r.Empty);
+  EXPECT_LT(r.Late, 1.0); // wall clock: measured 0.14 ms; 1 s is the promise, the margin a loaded machine
 }
 
 TEST(Robustness, AbortDuringTheMeshingSamplesWithinASecond)
 {
   // The accurate point irradiance of every sample (phase 3) runs in blocks
   // of leaves with a progress report between them: an abort asked once the
-  // samples have begun stops it before the interpolants.
-  const Scene box = MakeCornellBox();
-  HierarchicalRadiosity solver(box, HierarchicalOptions());
-  ASSERT_EQ(solver.Solve().Stop, StopReason::Converged);
-  AbortAfter abort(0.0);
-  std::string phase;
-  bool sampling = false;
-  const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions(),
-    [&](const ProgressStatus& status) {
-      phase = status.Phase;
-      // Past the first block of samples (the Cornell box has about seven).
-      sampling = sampling || (status.Phase == "sampling" && status.Fraction > 0.35);
-      return sampling ? abort(status) : true;
-    });
-  ASSERT_TRUE(abort.Asked);
-  const double late = abort.SecondsSinceStop();
-  std::cout << "meshing stopped in phase '" << phase << "' " << late << " s after the abort\n";
-  EXPECT_EQ(phase, "sampling");
-  EXPECT_TRUE(mesh.Interpolants.empty());
-  EXPECT_LT(late, 1.0); // wall clock: measured 2.6 ms; 1 s is the promise, the margin a loaded machine
+  // samples have begun stops it before the interpolants. Past the first
+  // block of samples (the Cornell box has about seven):
+  const MeshingAbort r = AbortCornellMeshing(
+    [](const ProgressStatus& status) { return status.Phase == "sampling" && status.Fraction > 0.35; }, 0.0);
+  ASSERT_TRUE(r.Asked);
+  EXPECT_EQ(r.Phase, "sampling");
+  EXPECT_TRUE(r.Empty);
+  EXPECT_LT(r.Late, 1.0); // wall clock: measured 2.6 ms; 1 s is the promise, the margin a loaded machine
 }
