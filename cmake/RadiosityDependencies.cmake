@@ -10,3 +10,7 @@ find_package(nlohmann_json 3 REQUIRED)
 find_package(CGAL 5 REQUIRED)
 # nanoflann: the k-d trees of the meshless point hierarchy (header-only).
 find_package(nanoflann REQUIRED)
+# SLEEF: vectorised atan2 for the contour sums of many edges at one point
+# (Common/Atan2Batch.h); Debian ships no CMake config, only pkg-config's.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(SLEEF REQUIRED IMPORTED_TARGET sleef)

@@ -8,7 +8,7 @@ PACKAGES=(
   cmake g++ ninja-build ccache pkg-config
   paraview-dev paraview python3-paraview
   libembree-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libglm-dev
-  libopenexr-dev libtbb-dev libeigen3-dev libnanoflann-dev libgtest-dev libbenchmark-dev
+  libopenexr-dev libtbb-dev libeigen3-dev libnanoflann-dev libsleef-dev libgtest-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
   xvfb xauth libgl1-mesa-dri
   mpi-default-dev mpi-default-bin libglew-dev libgl-dev libx11-dev libexpat1-dev

@@ -1,5 +1,6 @@
 #include "Radiosity/Hierarchical/Backprojection.h"
 
+#include "Radiosity/Common/Atan2Batch.h"
 #include "Radiosity/Common/FormFactor.h"
 
 #include <algorithm>
@@ -355,7 +356,11 @@ double PlainFragmentsFactor(
 {
   const Point2 foot = frame.To2(x);
   const Vec3 m(glm::dot(n, frame.U), glm::dot(n, frame.V), glm::dot(n, frame.M));
-  double sum = 0.0;
+  // Every fragment's edges, then their angles in one batch (Atan2Batch).
+  thread_local std::vector<double> sine, cosine, facing;
+  sine.clear();
+  cosine.clear();
+  facing.clear();
   for (const Polygon2& piece : pieces)
   {
     Vec3 a(piece.V[0].X - foot.X, piece.V[0].Y - foot.Y, -height);
@@ -367,10 +372,18 @@ double PlainFragmentsFactor(
       const double cl = glm::length(c);
       if (cl > 0.0)
       {
-        sum += std::atan2(cl, glm::dot(a, b)) * glm::dot(m, c) / cl;
+        sine.push_back(cl);
+        cosine.push_back(glm::dot(a, b));
+        facing.push_back(glm::dot(m, c) / cl);
       }
       a = b;
     }
+  }
+  Atan2Batch(sine.data(), cosine.data(), sine.data(), sine.size());
+  double sum = 0.0;
+  for (std::size_t k = 0; k < sine.size(); ++k)
+  {
+    sum += sine[k] * facing[k];
   }
   return std::fabs(sum) / (2.0 * Pi);
 }

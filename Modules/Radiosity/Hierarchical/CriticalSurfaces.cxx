@@ -172,19 +172,21 @@ bool ConeHalfPlanes(
   const Receiver& r, const Vec3& apex, const Vec3& d0, const Vec3& d1, Vec3& normal, HalfPlane* hp)
 {
   const Vec3 m = glm::cross(d0, d1);
-  const double ml = glm::length(m);
   // Most wedges pass beside the receiver: its three corners on one side of
   // the wedge's plane, farther than any rounding of the trace, leave nothing
-  // to trace (the half-planes below are not needed then). Tested first: a
-  // degenerate wedge (m near 0) passes this test and fails the next.
-  const double margin = r.PlaneMargin * ml;
+  // to trace (the half-planes below are not needed then). Tested first, on
+  // squares (no square root for the wedges that miss): a degenerate wedge
+  // (m near 0) passes this test and fails the next.
+  const double margin2 = r.PlaneMargin * r.PlaneMargin * glm::dot(m, m);
   const double s0 = glm::dot(m, r.Corner[0] - apex);
   const double s1 = glm::dot(m, r.Corner[1] - apex);
   const double s2 = glm::dot(m, r.Corner[2] - apex);
-  if ((s0 > margin && s1 > margin && s2 > margin) || (s0 < -margin && s1 < -margin && s2 < -margin))
+  const bool beyond = s0 * s0 > margin2 && s1 * s1 > margin2 && s2 * s2 > margin2;
+  if (beyond && ((s0 > 0.0 && s1 > 0.0 && s2 > 0.0) || (s0 < 0.0 && s1 < 0.0 && s2 < 0.0)))
   {
     return false;
   }
+  const double ml = glm::length(m);
   if (!(ml > kDegenerateSine * glm::length(d0) * glm::length(d1)))
   {
     return false;
@@ -285,7 +287,8 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
   }
   // Distinct blocker vertices: an endpoint shared by several edges spans one
   // EV surface per source edge, not one per edge it belongs to.
-  std::sort(vertices.begin(), vertices.end(), LexLess);
+  // (A lambda, so that the comparison is inlined: a function pointer is not.)
+  std::sort(vertices.begin(), vertices.end(), [](const Vec3& a, const Vec3& b) { return LexLess(a, b); });
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   for (Vec3& v : vertices)
   {

@@ -1,5 +1,6 @@
 #include "Radiosity/Hierarchical/LinkChain.h"
 
+#include "Radiosity/Common/Atan2Batch.h"
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Hierarchical/Shaft.h"
 
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace radiosity
 {
@@ -173,14 +175,21 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
       }
       else if (l.Kind == HierarchicalLink::Partial && !l.BlockersCut)
       {
-        const Shaft shaft(receiver, c.Polygon);
+        // The solve kept the blockers inside the shaft of the link's own
+        // receiver and source (HierarchicalLinkFactors.cxx): the leaf's own
+        // links need no second test, an ancestor's are cut to the leaf's shaft.
+        std::optional<Shaft> shaft;
+        if (l.Receiver != leaf)
+        {
+          shaft.emplace(receiver, c.Polygon);
+        }
         std::vector<TriangleCorners> corners;
         std::vector<std::array<std::uint32_t, 3>> ids;
         for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
         {
           const std::uint32_t b = s.Blockers(l)[k];
           const TriangleCorners triangle = { scene.Vertex(b, 0), scene.Vertex(b, 1), scene.Vertex(b, 2) };
-          if (!shaft.Excludes(triangle))
+          if (!shaft || !shaft->Excludes(triangle))
           {
             corners.push_back(triangle);
             ids.push_back(scene.Triangles[b].V);
@@ -237,16 +246,34 @@ RGB ChainIrradiance(
 {
   // The contour sum of a source that faces x from above its horizon is
   // -2 pi times its form factor (PointToPolygonFormFactor takes the modulus).
+  // The angles in batches (Atan2Batch: several edges at once).
+  constexpr std::size_t Batch = 64;
+  double sine[Batch], cosine[Batch], facing[Batch];
+  const ChainEdge* edge[Batch];
   RGB sum(0.0);
-  for (const ChainEdge& e : edges)
+  for (std::size_t start = 0; start < edges.size(); start += Batch)
   {
-    const Vec3 a = e.A - x;
-    const Vec3 b = e.B - x;
-    const Vec3 c = glm::cross(a, b);
-    const double cl = glm::length(c);
-    if (cl > 0.0)
+    const std::size_t end = std::min(edges.size(), start + Batch);
+    std::size_t m = 0;
+    for (std::size_t k = start; k < end; ++k)
     {
-      sum += (std::atan2(cl, glm::dot(a, b)) * glm::dot(n, c) / cl) * e.Weight;
+      const ChainEdge& e = edges[k];
+      const Vec3 a = e.A - x;
+      const Vec3 b = e.B - x;
+      const Vec3 c = glm::cross(a, b);
+      const double cl = glm::length(c);
+      if (cl > 0.0)
+      {
+        sine[m] = cl;
+        cosine[m] = glm::dot(a, b);
+        facing[m] = glm::dot(n, c) / cl;
+        edge[m++] = &e;
+      }
+    }
+    Atan2Batch(sine, cosine, sine, m);
+    for (std::size_t j = 0; j < m; ++j)
+    {
+      sum += (sine[j] * facing[j]) * edge[j]->Weight;
     }
   }
   return ChainIrradiance(chain, x, n) - sum / (2.0 * Pi);

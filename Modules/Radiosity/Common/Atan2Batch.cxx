@@ -1,0 +1,22 @@
+#include "Radiosity/Common/Atan2Batch.h"
+
+#include <emmintrin.h>
+#include <sleef.h>
+
+namespace radiosity
+{
+void Atan2Batch(const double* y, const double* x, double* out, std::size_t count)
+{
+  std::size_t k = 0;
+  // Sleef_atan2d2_u10 picks the SSE2, SSE4.1 or AVX2 (128-bit) kernel for
+  // the machine it runs on; SSE2 is every x86-64's baseline.
+  for (; k + 2 <= count; k += 2)
+  {
+    _mm_storeu_pd(out + k, Sleef_atan2d2_u10(_mm_loadu_pd(y + k), _mm_loadu_pd(x + k)));
+  }
+  for (; k < count; ++k)
+  {
+    out[k] = Sleef_atan2_u10(y[k], x[k]);
+  }
+}
+} // namespace radiosity
