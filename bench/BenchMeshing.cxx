@@ -1,14 +1,15 @@
 // The discontinuity mesher's cost against the hierarchical solve's on the
 // standard scenes (issue 21: "the interpolants cost less than the solve").
 //
-//   bench_meshing <output dir> [--quick] [--reps N] [--scene cornell|office]
+//   bench_meshing <output dir> [--quick] [--reps N] [--scene cornell|office] [--threads T]
 //
 // Each repetition solves and then meshes in the same process, one right after
 // the other, so their ratio is measured on the same machine speed: a shared
 // machine's speed drifts by 10% and more within minutes, which two separate
 // runs (or two builds timed one after the other) cannot tell from a change.
 // The table has each scene's medians; a checksum of the mesh's point
-// irradiance tells two builds' meshes apart.
+// irradiance tells two builds' meshes apart. Two builds compared at one
+// thread each, run at the same time (one per core), see the same machine.
 #include "BenchArguments.h"
 
 #include "Radiosity/Common/Stopwatch.h"
@@ -46,12 +47,17 @@ int main(int argc, char* argv[])
   }
   int reps = args.Quick ? 3 : 7;
   std::vector<std::string> scenes = { "cornell", "office" };
+  int threads = 0;
   for (int i = 2; i < argc; ++i)
   {
     const std::string a = argv[i];
     if (a == "--reps" && i + 1 < argc)
     {
       reps = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (a == "--threads" && i + 1 < argc)
+    {
+      threads = std::max(0, std::atoi(argv[++i]));
     }
     else if (a == "--scene" && i + 1 < argc)
     {
@@ -63,7 +69,8 @@ int main(int argc, char* argv[])
   md << "Each repetition solves (`HierarchicalOptions()`, the command line's defaults) and then meshes "
         "(`DiscontinuityMeshOptions()`) in one process; medians of "
      << reps
-     << " repetitions. The ratio is each repetition's meshing over its own solve, so a drift of the "
+     << " repetitions" << (threads > 0 ? " at " + std::to_string(threads) + " thread(s)" : std::string())
+     << ". The ratio is each repetition's meshing over its own solve, so a drift of the "
         "machine's speed between repetitions cancels.\n\n"
         "| scene | solve (s) | meshing (s) | of it: samples (s) | meshing / solve | points | "
         "irradiance checksum |\n|---|---|---|---|---|---|---|\n";
@@ -81,11 +88,15 @@ int main(int argc, char* argv[])
     for (int r = 0; r < reps; ++r)
     {
       const Stopwatch clock;
-      HierarchicalRadiosity solver(scene, HierarchicalOptions());
+      HierarchicalOptions options;
+      options.Threads = threads;
+      HierarchicalRadiosity solver(scene, options);
       solver.Solve();
       solve.push_back(clock.Seconds());
       const Stopwatch meshClock;
-      const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, DiscontinuityMeshOptions());
+      DiscontinuityMeshOptions meshOptions;
+      meshOptions.Threads = threads;
+      const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, meshOptions);
       meshing.push_back(meshClock.Seconds());
       samples.push_back(mesh.SampleSeconds);
       ratio.push_back(meshing.back() / solve.back());

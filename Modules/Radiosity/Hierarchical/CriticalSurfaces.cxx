@@ -303,6 +303,30 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
     return std::abs(glm::dot(r.Normal, p - r.Corner[0])) <= planeTolerance;
   };
 
+  // H&T's weight of a surface is the larger of its two pairs' d_sb/d_br
+  // (PairRatio) times the source's radiosity. With the heights h above the
+  // receiver's plane, a pair whose line reaches the receiver has
+  // d_sb/d_br = (h_s - h_b)/h_b; when every pair's blocker vertex lies below
+  // every source vertex (so one pair of each surface reaches it, and no
+  // weight is the contact's cap), the surfaces of blocker vertices no lower
+  // than hb weigh at most B (max h_s - hb)/hb: below w_min, they are not
+  // searched. The margin (0.1%) is far above PairRatio's rounding.
+  const auto height = [&](const Vec3& p) { return glm::dot(r.Normal, p - r.Corner[0]); };
+  double sourceLow = std::numeric_limits<double>::infinity(), sourceHigh = -sourceLow;
+  for (const Vec3& p : src)
+  {
+    sourceLow = std::min(sourceLow, height(p));
+    sourceHigh = std::max(sourceHigh, height(p));
+  }
+  const auto belowMinWeight = [&](double blockerLow) {
+    if (!(minWeight > 0.0) || !(sourceLow > 0.0) || !(blockerLow > 0.0) || !(blockerLow < sourceLow * (1.0 - 1e-9)))
+    {
+      return false;
+    }
+    const double ratio = (sourceHigh - blockerLow) / blockerLow;
+    return ratio < 1e-3 * detail::kContactRatioCap && sourceRadiosity * ratio * 1.001 < minWeight;
+  };
+
   Vec3 a, b, planeNormal;
   detail::HalfPlane hp[3];
 
@@ -310,6 +334,10 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
   for (const auto& e : edges)
   {
     if (inReceiverPlane(e[0]) && inReceiverPlane(e[1]))
+    {
+      continue;
+    }
+    if (belowMinWeight(std::min(height(e[0]), height(e[1]))))
     {
       continue;
     }
@@ -338,7 +366,7 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
   // EV: source edge (p, q), blocker vertex bv.
   for (const Vec3& bv : vertices)
   {
-    if (inReceiverPlane(bv))
+    if (inReceiverPlane(bv) || belowMinWeight(height(bv)))
     {
       continue;
     }

@@ -473,3 +473,70 @@ TEST(CriticalSurfaces, RandomConfigurationsMatchBruteForce)
   }
   EXPECT_GT(checkedPoints, 1000);
 }
+
+// The surfaces a bound on H&T's weight skips (blocker vertices below every
+// source vertex: w <= B (max h_s - h_b)/h_b) are exactly those below w_min:
+// with w_min the search finds what the full search keeps at w_min, in the
+// same order, to the bit.
+TEST(CriticalSurfaces, MinimumWeightSkipsOnlyWhatItWouldDrop)
+{
+  std::mt19937 rng(2101);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  auto rnd = [&](double lo, double hi) { return lo + (hi - lo) * U(rng); };
+  std::size_t dropped = 0, kept = 0;
+  for (int trial = 0; trial < 400; ++trial)
+  {
+    const Domain source = { Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)),
+      Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)), Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)) };
+    const Domain receiver = { Vec3(rnd(-4, 0), rnd(-4, 0), rnd(-0.3, 0.3)),
+      Vec3(rnd(0, 4), rnd(-4, 4), rnd(-0.3, 0.3)), Vec3(rnd(-4, 4), rnd(0, 4), rnd(-0.3, 0.3)) };
+    const Vec3 normal = glm::normalize(glm::cross(receiver[1] - receiver[0], receiver[2] - receiver[0]));
+    std::vector<BlockerEdge> blocker;
+    for (int k = 0; k < 4; ++k)
+    {
+      // Mostly between the two, some through the receiver's plane (contact).
+      const double low = trial % 5 == 0 ? -0.2 : 0.4;
+      blocker.push_back({ Vec3(rnd(-1, 1), rnd(-1, 1), rnd(low, 1.4)), Vec3(rnd(-1, 1), rnd(-1, 1), rnd(low, 1.4)) });
+    }
+    const double radiosity = rnd(0.1, 10.0);
+    std::vector<DiscontinuitySegment> all;
+    FindCriticalSegments(receiver, normal, source, radiosity, blocker, 0.0, all);
+    if (all.empty())
+    {
+      continue;
+    }
+    std::vector<double> weights;
+    for (const auto& s : all)
+    {
+      weights.push_back(s.Weight);
+    }
+    std::sort(weights.begin(), weights.end());
+    for (double quantile : { 0.25, 0.5, 0.9 })
+    {
+      const double minWeight = weights[static_cast<std::size_t>(quantile * static_cast<double>(weights.size() - 1))];
+      std::vector<DiscontinuitySegment> expected;
+      for (const auto& s : all)
+      {
+        if (s.Weight >= minWeight)
+        {
+          expected.push_back(s);
+        }
+      }
+      std::vector<DiscontinuitySegment> found;
+      FindCriticalSegments(receiver, normal, source, radiosity, blocker, 0.0, found, { true, true, true }, minWeight);
+      SCOPED_TRACE(testing::Message() << "trial " << trial << ", w_min " << minWeight);
+      ASSERT_EQ(found.size(), expected.size());
+      for (std::size_t k = 0; k < found.size(); ++k)
+      {
+        EXPECT_EQ(found[k].A, expected[k].A);
+        EXPECT_EQ(found[k].B, expected[k].B);
+        EXPECT_EQ(found[k].Weight, expected[k].Weight);
+      }
+      dropped += all.size() - expected.size();
+      kept += expected.size();
+    }
+  }
+  // The configurations exercise both sides of w_min.
+  EXPECT_GT(dropped, 1000u);
+  EXPECT_GT(kept, 1000u);
+}
