@@ -529,7 +529,8 @@ public:
    * DiscontinuityMeshing off gives one interpolant per quadtree leaf;
    * MaxDiscontinuitiesPerLeaf is k, the strongest EV/VE discontinuities kept
    * per leaf (10); MinDiscontinuityWeight is w_min as a fraction of the
-   * brightest emitter's exitance (0.05); ConformingBoundaries inserts every
+   * brightest emitter's exitance (0.05; where no triangle emits, of the
+   * brightest radiosity); ConformingBoundaries inserts every
    * vertex on a leaf's edge into it, so the mesh has no T-junction (On).
    */
   vtkSetMacro(DiscontinuityMeshing, bool);

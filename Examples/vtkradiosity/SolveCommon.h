@@ -76,7 +76,7 @@ struct SolveArguments
   std::string Clustering = "auto"; ///< hierarchical: auto|on|off
   bool NoDiscontinuityMeshing = false;
   int DiscontinuitiesPerLeaf = 10;
-  double MinDiscontinuityWeight = 0.05; ///< relative to the brightest emitter
+  double MinDiscontinuityWeight = 0.05; ///< relative to the brightest emitter (none: the brightest radiosity)
   // --method meshless
   double PointRadius = 0.1; ///< coarsest Poisson-disk radius, fraction of the diagonal
   int PointLevels = 5;

@@ -457,7 +457,7 @@ int main(int argc, char* argv[])
     "hierarchical: the k strongest discontinuities meshed per leaf (default 10)")
     ->check(CLI::Range(0, 10000));
   solveCommand->add_option("--min-discontinuity-weight", solve.MinDiscontinuityWeight,
-    "hierarchical: w_min, relative to the brightest emitter's exitance (default 0.05)")
+    "hierarchical: w_min, relative to the brightest emitter's exitance, or where none emits the brightest radiosity (default 0.05)")
     ->check(CLI::NonNegativeNumber);
   solveCommand->add_option("--reference-exr", solve.ReferenceExr,
     "path-traced OpenEXR of the --exr view (linear radiance, the reference per pixel)");

@@ -161,6 +161,16 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     {
       brightest = std::max(brightest, MaxComponent(m.Emission));
     }
+    // A scene lit by lights and the sky alone has no emitter: w_min is then
+    // relative to the brightest surface's radiosity (what the lights put
+    // there), where 0 would keep every discontinuity however faint.
+    if (!(brightest > 0.0))
+    {
+      for (std::uint32_t e = 0; e < static_cast<std::uint32_t>(mesh.Elements().size()); ++e)
+      {
+        brightest = std::max(brightest, MaxComponent(s.Radiosity(e)));
+      }
+    }
     const double minWeight = options.MinWeight * brightest;
     const EdgeTopology topology(scene);
     // The lights' hard shadow boundaries (D0) come before every EV/VE event.

@@ -33,7 +33,8 @@ struct DiscontinuityMeshOptions
   bool Discontinuities = true;
   int MaxPerLeaf = 10;     ///< k: the strongest discontinuities kept per leaf
   /// w_min as a fraction of the largest emitted exitance (one channel), so
-  /// that the default does not depend on the emission's units.
+  /// that the default does not depend on the emission's units; in a scene
+  /// with no emitting triangle (lights and the sky), of the largest radiosity.
   double MinWeight = 0.05;
   int Threads = 0;         ///< 0: all cores
   /// Insert every vertex lying on a leaf's edge into that leaf (neighbours of

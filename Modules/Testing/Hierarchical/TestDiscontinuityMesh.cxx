@@ -474,3 +474,51 @@ TEST(DiscontinuityMesh, PastItsTimeLimitEveryLeafIsStillMeshed)
   EXPECT_LT(exact.Rms, fast.Rms);
   EXPECT_LT(fast.Rms, leavesRms);
 }
+
+// w_min is relative to the brightest emitter; a scene lit by lights alone has
+// none, and w_min is then relative to the brightest surface's radiosity (it
+// was 0 there: every discontinuity kept whatever --min-discontinuity-weight
+// said). A lamp lights a white wall, whose light reaches the floor past a
+// plate: partial links, discontinuities on the floor.
+TEST(DiscontinuityMesh, MinimumWeightAppliesInASceneLitByLightsAlone)
+{
+  Scene scene;
+  Material grey, white, black;
+  grey.Reflectance = RGB(0.5);
+  white.Reflectance = RGB(0.8);
+  black.Reflectance = RGB(0.0);
+  AppendQuad(scene, Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), grey, 4, "floor");
+  AppendQuad(scene, Vec3(-1, -1, 0), Vec3(-1, 1, 0), Vec3(-1, 1, 1.5), Vec3(-1, -1, 1.5), white, 2, "wall");
+  const Vec3 p0(-0.8, -0.3, 0.3), p1(-0.4, -0.3, 0.3), p2(-0.4, 0.3, 0.3), p3(-0.8, 0.3, 0.3);
+  AppendQuad(scene, p0, p1, p2, p3, black, 1, "plate top");
+  AppendQuad(scene, p0, p3, p2, p1, black, 1, "plate bottom");
+  Light lamp;
+  lamp.Type = LightType::Point;
+  lamp.Position = Vec3(0.5, 0.0, 1.2);
+  lamp.Intensity = RGB(10.0);
+  scene.Lighting.Lights.push_back(lamp);
+  ASSERT_FALSE(scene.HasEmitters());
+  HierarchicalRadiosity solver(scene, HierarchicalOptions());
+  solver.Solve();
+  DiscontinuityMeshOptions options;
+  options.Conforming = false;
+  const DiscontinuityMesh mesh = BuildDiscontinuityMesh(solver, options);
+  DiscontinuityMeshOptions all = options, strict = options, stricter = options;
+  all.MinWeight = 0.0;
+  strict.MinWeight = 1e9;
+  stricter.MinWeight = 1e12;
+  const DiscontinuityMesh every = BuildDiscontinuityMesh(solver, all);
+  const DiscontinuityMesh few = BuildDiscontinuityMesh(solver, strict);
+  const DiscontinuityMesh fewer = BuildDiscontinuityMesh(solver, stricter);
+  std::cout << "segments found at w_min 0, 0.05, 1e9: " << every.SegmentsFound << ", " << mesh.SegmentsFound << ", "
+            << few.SegmentsFound << "\n";
+  // Measured: 10,099, 10,099 and 332 (the same 10,099 at every w_min before):
+  // the wall's weakest surfaces lie above 0.05 of the floor's brightest
+  // radiosity; above every weight only the lamp's hard shadow edges (D0,
+  // which no w_min drops) are left.
+  EXPECT_GT(mesh.SegmentsKept, 0u);
+  EXPECT_LE(mesh.SegmentsFound, every.SegmentsFound);
+  EXPECT_LT(few.SegmentsFound, every.SegmentsFound / 10);
+  EXPECT_EQ(fewer.SegmentsFound, few.SegmentsFound);
+  EXPECT_LT(few.Triangles.size(), mesh.Triangles.size());
+}
