@@ -394,6 +394,25 @@ bool InTriangle(const Vec3& p, const Domain& t, double margin)
   return std::abs(glm::dot(p - t[0], n)) <= 1e-9;
 }
 
+/// A random source triangle above (z in [1.5, 2.5]) and a random receiver
+/// triangle around z = 0 (tilted), with the receiver's unit normal.
+struct RandomPair
+{
+  Domain Source, Receiver;
+  Vec3 Normal;
+};
+template <typename Rnd>
+RandomPair MakeRandomPair(Rnd& rnd)
+{
+  RandomPair p;
+  p.Source = { Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)), Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)),
+    Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)) };
+  p.Receiver = { Vec3(rnd(-4, 0), rnd(-4, 0), rnd(-0.3, 0.3)), Vec3(rnd(0, 4), rnd(-4, 4), rnd(-0.3, 0.3)),
+    Vec3(rnd(-4, 4), rnd(0, 4), rnd(-0.3, 0.3)) };
+  p.Normal = glm::normalize(glm::cross(p.Receiver[1] - p.Receiver[0], p.Receiver[2] - p.Receiver[0]));
+  return p;
+}
+
 double DistanceToSegments(const Vec3& p, const std::vector<DiscontinuitySegment>& segments)
 {
   double best = std::numeric_limits<double>::infinity();
@@ -414,11 +433,10 @@ TEST(CriticalSurfaces, RandomConfigurationsMatchBruteForce)
   for (int trial = 0; trial < 200; ++trial)
   {
     // Source above, receiver around z = 0 (tilted), blocker edges in between.
-    const Domain source = { Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)),
-      Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)), Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)) };
-    const Domain receiver = { Vec3(rnd(-4, 0), rnd(-4, 0), rnd(-0.3, 0.3)),
-      Vec3(rnd(0, 4), rnd(-4, 4), rnd(-0.3, 0.3)), Vec3(rnd(-4, 4), rnd(0, 4), rnd(-0.3, 0.3)) };
-    const Vec3 normal = glm::normalize(glm::cross(receiver[1] - receiver[0], receiver[2] - receiver[0]));
+    const RandomPair pair = MakeRandomPair(rnd);
+    const Domain& source = pair.Source;
+    const Domain& receiver = pair.Receiver;
+    const Vec3& normal = pair.Normal;
     std::vector<BlockerEdge> blocker;
     for (int k = 0; k < 3; ++k)
     {
@@ -486,11 +504,10 @@ TEST(CriticalSurfaces, MinimumWeightSkipsOnlyWhatItWouldDrop)
   std::size_t dropped = 0, kept = 0;
   for (int trial = 0; trial < 400; ++trial)
   {
-    const Domain source = { Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)),
-      Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)), Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)) };
-    const Domain receiver = { Vec3(rnd(-4, 0), rnd(-4, 0), rnd(-0.3, 0.3)),
-      Vec3(rnd(0, 4), rnd(-4, 4), rnd(-0.3, 0.3)), Vec3(rnd(-4, 4), rnd(0, 4), rnd(-0.3, 0.3)) };
-    const Vec3 normal = glm::normalize(glm::cross(receiver[1] - receiver[0], receiver[2] - receiver[0]));
+    const RandomPair pair = MakeRandomPair(rnd);
+    const Domain& source = pair.Source;
+    const Domain& receiver = pair.Receiver;
+    const Vec3& normal = pair.Normal;
     std::vector<BlockerEdge> blocker;
     for (int k = 0; k < 4; ++k)
     {
