@@ -356,11 +356,25 @@ double PlainFragmentsFactor(
 {
   const Point2 foot = frame.To2(x);
   const Vec3 m(glm::dot(n, frame.U), glm::dot(n, frame.V), glm::dot(n, frame.M));
-  // Every fragment's edges, then their angles in one batch (Atan2Batch).
-  thread_local std::vector<double> sine, cosine, facing;
-  sine.clear();
-  cosine.clear();
-  facing.clear();
+  // The fragments' edges, then their angles in batches (Atan2Batch), on the
+  // stack: a thread_local buffer costs a TLS lookup per call in a shared
+  // library.
+  constexpr int Batch = 64;
+  double sine[Batch], cosine[Batch], facing[Batch];
+  int count = 0;
+  double sum = 0.0;
+  const auto flush = [&]() {
+    if (count == 0)
+    {
+      return;
+    }
+    Atan2Batch(sine, cosine, sine, static_cast<std::size_t>(count));
+    for (int k = 0; k < count; ++k)
+    {
+      sum += sine[k] * facing[k];
+    }
+    count = 0;
+  };
   for (const Polygon2& piece : pieces)
   {
     Vec3 a(piece.V[0].X - foot.X, piece.V[0].Y - foot.Y, -height);
@@ -372,19 +386,18 @@ double PlainFragmentsFactor(
       const double cl = glm::length(c);
       if (cl > 0.0)
       {
-        sine.push_back(cl);
-        cosine.push_back(glm::dot(a, b));
-        facing.push_back(glm::dot(m, c) / cl);
+        sine[count] = cl;
+        cosine[count] = glm::dot(a, b);
+        facing[count++] = glm::dot(m, c) / cl;
+        if (count == Batch)
+        {
+          flush();
+        }
       }
       a = b;
     }
   }
-  Atan2Batch(sine.data(), cosine.data(), sine.data(), sine.size());
-  double sum = 0.0;
-  for (std::size_t k = 0; k < sine.size(); ++k)
-  {
-    sum += sine[k] * facing[k];
-  }
+  flush();
   return std::fabs(sum) / (2.0 * Pi);
 }
 
