@@ -1,6 +1,6 @@
 #include "Radiosity/Hierarchical/Backprojection.h"
 
-#include "Radiosity/Common/Atan2Batch.h"
+#include "Radiosity/Common/ContourSum.h"
 #include "Radiosity/Common/FormFactor.h"
 
 #include <algorithm>
@@ -356,25 +356,7 @@ double PlainFragmentsFactor(
 {
   const Point2 foot = frame.To2(x);
   const Vec3 m(glm::dot(n, frame.U), glm::dot(n, frame.V), glm::dot(n, frame.M));
-  // The fragments' edges, then their angles in batches (Atan2Batch), on the
-  // stack: a thread_local buffer costs a TLS lookup per call in a shared
-  // library.
-  constexpr int Batch = 64;
-  double sine[Batch], cosine[Batch], facing[Batch];
-  int count = 0;
-  double sum = 0.0;
-  const auto flush = [&]() {
-    if (count == 0)
-    {
-      return;
-    }
-    Atan2Batch(sine, cosine, sine, static_cast<std::size_t>(count));
-    for (int k = 0; k < count; ++k)
-    {
-      sum += sine[k] * facing[k];
-    }
-    count = 0;
-  };
+  ContourSum<double> sum;
   for (const Polygon2& piece : pieces)
   {
     Vec3 a(piece.V[0].X - foot.X, piece.V[0].Y - foot.Y, -height);
@@ -382,23 +364,11 @@ double PlainFragmentsFactor(
     for (int i = 0; i < piece.N; ++i)
     {
       const Vec3 b = i + 1 < piece.N ? Vec3(piece.V[i + 1].X - foot.X, piece.V[i + 1].Y - foot.Y, -height) : first;
-      const Vec3 c = glm::cross(a, b);
-      const double cl = glm::length(c);
-      if (cl > 0.0)
-      {
-        sine[count] = cl;
-        cosine[count] = glm::dot(a, b);
-        facing[count++] = glm::dot(m, c) / cl;
-        if (count == Batch)
-        {
-          flush();
-        }
-      }
+      sum.Add(a, b, m, 1.0);
       a = b;
     }
   }
-  flush();
-  return std::fabs(sum) / (2.0 * Pi);
+  return std::fabs(sum.Sum()) / (2.0 * Pi);
 }
 
 // The visible form factor as the source's less that of the union of the

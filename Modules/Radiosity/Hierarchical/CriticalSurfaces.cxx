@@ -298,10 +298,9 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
   // A blocker element lying in the receiver plane traces its own outline at
   // best, and only through rounding: it is left out (contact with the
   // receiver is seen through elements that leave the plane).
+  const auto height = [&](const Vec3& p) { return glm::dot(r.Normal, p - r.Corner[0]); };
   const double planeTolerance = 1e-9 * scale;
-  auto inReceiverPlane = [&](const Vec3& p) {
-    return std::abs(glm::dot(r.Normal, p - r.Corner[0])) <= planeTolerance;
-  };
+  auto inReceiverPlane = [&](const Vec3& p) { return std::abs(height(p)) <= planeTolerance; };
 
   // H&T's weight of a surface is the larger of its two pairs' d_sb/d_br
   // (PairRatio) times the source's radiosity. With the heights h above the
@@ -311,7 +310,6 @@ void FindCriticalSegments(const std::array<Vec3, 3>& receiver, const Vec3& recei
   // weight is the contact's cap), the surfaces of blocker vertices no lower
   // than hb weigh at most B (max h_s - hb)/hb: below w_min, they are not
   // searched. The margin (0.1%) is far above PairRatio's rounding.
-  const auto height = [&](const Vec3& p) { return glm::dot(r.Normal, p - r.Corner[0]); };
   double sourceLow = std::numeric_limits<double>::infinity(), sourceHigh = -sourceLow;
   for (const Vec3& p : src)
   {

@@ -1,6 +1,6 @@
 #include "Radiosity/Hierarchical/LinkChain.h"
 
-#include "Radiosity/Common/Atan2Batch.h"
+#include "Radiosity/Common/ContourSum.h"
 #include "Radiosity/Common/FormFactor.h"
 #include "Radiosity/Hierarchical/Shaft.h"
 
@@ -246,37 +246,12 @@ RGB ChainIrradiance(
 {
   // The contour sum of a source that faces x from above its horizon is
   // -2 pi times its form factor (PointToPolygonFormFactor takes the modulus).
-  // The angles in batches (Atan2Batch: several edges at once).
-  constexpr std::size_t Batch = 64;
-  double sine[Batch], cosine[Batch], facing[Batch];
-  const ChainEdge* edge[Batch];
-  RGB sum(0.0);
-  for (std::size_t start = 0; start < edges.size(); start += Batch)
+  ContourSum<RGB> sum;
+  for (const ChainEdge& e : edges)
   {
-    const std::size_t end = std::min(edges.size(), start + Batch);
-    std::size_t m = 0;
-    for (std::size_t k = start; k < end; ++k)
-    {
-      const ChainEdge& e = edges[k];
-      const Vec3 a = e.A - x;
-      const Vec3 b = e.B - x;
-      const Vec3 c = glm::cross(a, b);
-      const double cl = glm::length(c);
-      if (cl > 0.0)
-      {
-        sine[m] = cl;
-        cosine[m] = glm::dot(a, b);
-        facing[m] = glm::dot(n, c) / cl;
-        edge[m++] = &e;
-      }
-    }
-    Atan2Batch(sine, cosine, sine, m);
-    for (std::size_t j = 0; j < m; ++j)
-    {
-      sum += (sine[j] * facing[j]) * edge[j]->Weight;
-    }
+    sum.Add(e.A - x, e.B - x, n, e.Weight);
   }
-  return ChainIrradiance(chain, x, n) - sum / (2.0 * Pi);
+  return ChainIrradiance(chain, x, n) - sum.Sum() / (2.0 * Pi);
 }
 
 RGB ChainIrradiance(const std::vector<ChainSource>& chain, const Vec3& x, const Vec3& n)

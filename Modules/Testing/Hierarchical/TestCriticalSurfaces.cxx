@@ -394,23 +394,34 @@ bool InTriangle(const Vec3& p, const Domain& t, double margin)
   return std::abs(glm::dot(p - t[0], n)) <= 1e-9;
 }
 
-/// A random source triangle above (z in [1.5, 2.5]) and a random receiver
-/// triangle around z = 0 (tilted), with the receiver's unit normal.
-struct RandomPair
+/// Random configurations: uniform numbers in [lo, hi), a source triangle
+/// above (z in [1.5, 2.5]) and a receiver triangle around z = 0 (tilted).
+struct RandomGeometry
 {
-  Domain Source, Receiver;
-  Vec3 Normal;
+  explicit RandomGeometry(unsigned seed)
+    : Engine(seed)
+  {
+  }
+  double operator()(double lo, double hi) { return lo + (hi - lo) * this->Unit(this->Engine); }
+  Domain Source()
+  {
+    auto& rnd = *this;
+    return { Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)), Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)),
+      Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)) };
+  }
+  Domain Receiver()
+  {
+    auto& rnd = *this;
+    return { Vec3(rnd(-4, 0), rnd(-4, 0), rnd(-0.3, 0.3)), Vec3(rnd(0, 4), rnd(-4, 4), rnd(-0.3, 0.3)),
+      Vec3(rnd(-4, 4), rnd(0, 4), rnd(-0.3, 0.3)) };
+  }
+  std::mt19937 Engine;
+  std::uniform_real_distribution<double> Unit{ 0.0, 1.0 };
 };
-template <typename Rnd>
-RandomPair MakeRandomPair(Rnd& rnd)
+
+Vec3 UnitNormal(const Domain& t)
 {
-  RandomPair p;
-  p.Source = { Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)), Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)),
-    Vec3(rnd(-1, 1), rnd(-1, 1), rnd(1.5, 2.5)) };
-  p.Receiver = { Vec3(rnd(-4, 0), rnd(-4, 0), rnd(-0.3, 0.3)), Vec3(rnd(0, 4), rnd(-4, 4), rnd(-0.3, 0.3)),
-    Vec3(rnd(-4, 4), rnd(0, 4), rnd(-0.3, 0.3)) };
-  p.Normal = glm::normalize(glm::cross(p.Receiver[1] - p.Receiver[0], p.Receiver[2] - p.Receiver[0]));
-  return p;
+  return glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0]));
 }
 
 double DistanceToSegments(const Vec3& p, const std::vector<DiscontinuitySegment>& segments)
@@ -426,17 +437,14 @@ double DistanceToSegments(const Vec3& p, const std::vector<DiscontinuitySegment>
 
 TEST(CriticalSurfaces, RandomConfigurationsMatchBruteForce)
 {
-  std::mt19937 rng(12345);
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  auto rnd = [&](double lo, double hi) { return lo + (hi - lo) * U(rng); };
+  RandomGeometry rnd(12345);
   int checkedPoints = 0;
   for (int trial = 0; trial < 200; ++trial)
   {
     // Source above, receiver around z = 0 (tilted), blocker edges in between.
-    const RandomPair pair = MakeRandomPair(rnd);
-    const Domain& source = pair.Source;
-    const Domain& receiver = pair.Receiver;
-    const Vec3& normal = pair.Normal;
+    const Domain source = rnd.Source();
+    const Domain receiver = rnd.Receiver();
+    const Vec3 normal = UnitNormal(receiver);
     std::vector<BlockerEdge> blocker;
     for (int k = 0; k < 3; ++k)
     {
@@ -498,16 +506,13 @@ TEST(CriticalSurfaces, RandomConfigurationsMatchBruteForce)
 // same order, to the bit.
 TEST(CriticalSurfaces, MinimumWeightSkipsOnlyWhatItWouldDrop)
 {
-  std::mt19937 rng(2101);
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  auto rnd = [&](double lo, double hi) { return lo + (hi - lo) * U(rng); };
+  RandomGeometry rnd(2101);
   std::size_t dropped = 0, kept = 0;
   for (int trial = 0; trial < 400; ++trial)
   {
-    const RandomPair pair = MakeRandomPair(rnd);
-    const Domain& source = pair.Source;
-    const Domain& receiver = pair.Receiver;
-    const Vec3& normal = pair.Normal;
+    const Domain source = rnd.Source();
+    const Domain receiver = rnd.Receiver();
+    const Vec3 normal = UnitNormal(receiver);
     std::vector<BlockerEdge> blocker;
     for (int k = 0; k < 4; ++k)
     {
