@@ -217,6 +217,17 @@ void DirectLighting::SkyFirstHits(const Vec3& x, const Vec3& n, std::uint32_t* t
   }
 }
 
+void DirectLighting::SkyQuadrature(const Vec3& n, std::vector<Vec3>& directions) const
+{
+  Vec3 t, b;
+  FrameAround(n, t, b);
+  directions.resize(this->SkyLattice.size());
+  for (std::size_t i = 0; i < directions.size(); ++i)
+  {
+    directions[i] = SkyDirection(this->SkyLattice[i], t, b, n);
+  }
+}
+
 DirectLighting::SkyDirectionSet DirectLighting::SkyDirections(const Vec3& n, const std::uint64_t* hidden) const
 {
   SkyDirectionSet set;

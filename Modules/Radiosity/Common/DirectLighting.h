@@ -77,6 +77,10 @@ public:
   /// sky is dark (no ray then): SkyMaskWords() times 64 entries, the last
   /// ones unused. The rays of SkyIrradiance.
   void SkyFirstHits(const Vec3& x, const Vec3& n, std::uint32_t* triangles) const;
+  /// Every direction of the sky quadrature about n, in quadrature order,
+  /// into `directions` (SkySamples() of them): the rays of SkyFirstHits and
+  /// SkyVisibility.
+  void SkyQuadrature(const Vec3& n, std::vector<Vec3>& directions) const;
   /// Words of a SkyVisibility mask: one bit per quadrature direction.
   std::size_t SkyMaskWords() const { return (static_cast<std::size_t>(this->SkySampleCount) + 63) / 64; }
   /// Which of the sky quadrature's directions at x (normal n) reach the sky,

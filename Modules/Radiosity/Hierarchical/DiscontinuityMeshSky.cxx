@@ -7,40 +7,81 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 
 namespace radiosity
 {
 namespace discontinuity_mesh_detail
 {
+namespace
+{
+/// Whether the segment from `origin` to `origin + d`, less `near` at
+/// both ends, crosses triangle (a, b, c) inside it by a margin (barycentric
+/// coordinates of at least 1e-9, `near` doubled): Moller & Trumbore's test
+/// in double precision, without a division. `length`: |d|.
+bool CrossesInside(const Vec3& origin, const Vec3& d, double length, double near, const Vec3& a, const Vec3& e1,
+  const Vec3& e2)
+{
+  constexpr double Margin = 1e-9;
+  const Vec3 p = glm::cross(d, e2);
+  double det = glm::dot(e1, p);
+  const Vec3 s = origin - a;
+  const Vec3 q = glm::cross(s, e1);
+  double u = glm::dot(s, p), v = glm::dot(d, q), t = glm::dot(e2, q);
+  if (det < 0.0)
+  {
+    det = -det;
+    u = -u;
+    v = -v;
+    t = -t;
+  }
+  // det = 0 (d parallel to the plane) fails the first test.
+  const double along = 2.0 * near / length; // of d
+  return u >= Margin * det && v >= Margin * det && u + v <= (1.0 - Margin) * det && t >= along * det &&
+    t <= (1.0 - along) * det && det > 0.0;
+}
+} // namespace
+
 std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, const DirectLighting& lights,
   const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
   std::size_t end)
 {
   const ElementMesh& mesh = s.Mesh();
+  const Scene& scene = s.GetScene();
   const std::size_t words = lights.SkyMaskWords();
   const std::size_t stride = 64 * words;
-  // A corner's rays are those of a point of the element mesh's pool and a
-  // normal, to the bit: the quadrature's frame turns with the normal's
-  // signs (-0 included), and the elements of one input triangle may
-  // differ in its last bits.
+  const double offset = lights.ShadowRays()->Offset();
+  // A direction is hidden from the whole leaf where the rays from its three
+  // corners all cross one occluder: the parallel rays from its points cross
+  // that occluder's plane at the same convex combination of the corners'
+  // crossings, inside it and no farther than the farthest (each ray starts
+  // at its point moved by the same offset along n). The occluder is the one
+  // that the ray from one corner meets first (Embree); the three crossings
+  // are then tested in double precision against it alone, with a margin.
+  // The rays are traced from the corner of lowest point index, so that the
+  // leaves meeting there share them: a corner's rays are
+  // those of a point of the element mesh's pool and a normal, to the bit
+  // (the quadrature's frame turns with the normal's signs, -0 included, and
+  // the elements of one input triangle may differ in its last bits).
   using Key = std::array<std::uint64_t, 4>;
-  auto key = [&](std::uint32_t leaf, int k) {
+  auto traced = [&](std::uint32_t leaf) {
+    const auto& v = mesh[leaf].V;
+    return static_cast<int>(v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2));
+  };
+  auto key = [&](std::uint32_t leaf) {
     const Vec3& n = mesh[leaf].Normal;
-    Key out{ mesh[leaf].V[k], 0, 0, 0 };
+    Key out{ mesh[leaf].V[traced(leaf)], 0, 0, 0 };
     std::memcpy(&out[1], &n.x, sizeof(double));
     std::memcpy(&out[2], &n.y, sizeof(double));
     std::memcpy(&out[3], &n.z, sizeof(double));
     return out;
   };
   std::vector<Key> keys;
-  keys.reserve(3 * (end - begin));
+  keys.reserve(end - begin);
   for (std::size_t j = begin; j < end; ++j)
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      keys.push_back(key(leaves[order[j]], k));
-    }
+    keys.push_back(key(leaves[order[j]]));
   }
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
@@ -53,18 +94,43 @@ std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, c
     lights.SkyFirstHits(mesh.Points()[keys[i][0]], n, hits.data() + i * stride);
   });
   std::vector<std::uint64_t> hidden((end - begin) * words, 0);
-  const auto m = static_cast<std::size_t>(lights.SkySamples());
   tbb::parallel_for(begin, end, [&](std::size_t j) {
-    const std::uint32_t* corner[3];
+    const std::uint32_t leaf = leaves[order[j]];
+    const std::uint32_t* first =
+      hits.data() + static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), key(leaf)) - keys.begin()) * stride;
+    const Vec3& n = mesh[leaf].Normal;
+    // The segments TestSegments casts from the corners (SegmentRay): from
+    // RayOrigin to the corner plus FarDistance along the direction.
+    std::array<Vec3, 3> origin, lift;
+    std::array<double, 3> far;
     for (int k = 0; k < 3; ++k)
     {
-      const auto at = std::lower_bound(keys.begin(), keys.end(), key(leaves[order[j]], k)) - keys.begin();
-      corner[k] = hits.data() + static_cast<std::size_t>(at) * stride;
+      const Vec3& corner = mesh.Points()[mesh[leaf].V[k]];
+      origin[k] = lights.RayOrigin(corner, n);
+      lift[k] = corner - origin[k];
+      far[k] = lights.FarDistance(corner);
     }
+    thread_local std::vector<Vec3> directions;
+    lights.SkyQuadrature(n, directions);
     std::uint64_t* mask = hidden.data() + (j - begin) * words;
-    for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t i = 0; i < directions.size(); ++i)
     {
-      if (corner[0][i] != Visibility::NoHit && corner[0][i] == corner[1][i] && corner[0][i] == corner[2][i])
+      const std::uint32_t t = first[i];
+      if (t == Visibility::NoHit)
+      {
+        continue;
+      }
+      const Vec3 a = scene.Vertex(t, 0);
+      const Vec3 e1 = scene.Vertex(t, 1) - a, e2 = scene.Vertex(t, 2) - a;
+      bool all = true;
+      for (int k = 0; k < 3 && all; ++k)
+      {
+        const Vec3 d = lift[k] + far[k] * directions[i];
+        // |d| is far[k] to a part in 1e7 (lift is a hundredth of the
+        // offset, far at least twice the scene's size): ample for the bounds on t.
+        all = CrossesInside(origin[k], d, far[k], offset, a, e1, e2);
+      }
+      if (all)
       {
         mask[i / 64] |= std::uint64_t(1) << (i % 64);
       }
