@@ -15,6 +15,7 @@
 
 #include "Radiosity/Common/Types.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -85,12 +86,26 @@ struct Point2
 };
 
 /// A convex polygon in the source plane with a fixed capacity: fragments are
-/// clipped millions of times, and heap allocation dominated the cost.
+/// clipped millions of times, and heap allocation dominated the cost. A copy
+/// takes its N corners only: most fragments have 3 to 6 of the 16, and the
+/// whole array's copy was a fifth of the backprojection's own time.
 struct Polygon2
 {
   static constexpr int Capacity = 16;
   Point2 V[Capacity];
   int N = 0;
+  Polygon2() = default;
+  Polygon2(const Polygon2& o)
+    : N(o.N)
+  {
+    std::copy(o.V, o.V + o.N, this->V);
+  }
+  Polygon2& operator=(const Polygon2& o)
+  {
+    this->N = o.N;
+    std::copy(o.V, o.V + o.N, this->V);
+    return *this;
+  }
   void Push(const Point2& p) { V[N++] = p; }
 };
 
