@@ -183,8 +183,13 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
         {
           shaft.emplace(receiver, c.Polygon);
         }
-        std::vector<TriangleCorners> corners;
-        std::vector<std::array<std::uint32_t, 3>> ids;
+        // Per thread, kept between links: a leaf gathers a few hundred.
+        thread_local std::vector<TriangleCorners> corners;
+        thread_local std::vector<std::array<std::uint32_t, 3>> ids;
+        thread_local std::vector<std::pair<double, std::size_t>> size;
+        thread_local std::vector<BlockerPolygon> polygons;
+        corners.clear();
+        ids.clear();
         for (std::uint32_t k = 0; k < l.BlockerCount; ++k)
         {
           const std::uint32_t b = s.Blockers(l)[k];
@@ -195,7 +200,7 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
             ids.push_back(scene.Triangles[b].V);
           }
         }
-        std::vector<BlockerPolygon> polygons = MergeCoplanarPairs(corners, ids);
+        const std::vector<BlockerPolygon> merged = MergeCoplanarPairs(corners, ids);
         // The largest seen from the leaf first: a point in their umbra has
         // nothing left to subtract the others from.
         const Vec3 centre = (receiver[0] + receiver[1] + receiver[2]) / 3.0;
@@ -212,18 +217,17 @@ std::vector<ChainSource> GatherChain(const HierarchicalRadiosity& s, std::uint32
           const Vec3 d = middle - centre;
           return glm::length(area) / std::max(glm::dot(d, d), 1e-300);
         };
-        std::vector<std::pair<double, std::size_t>> size(polygons.size());
-        for (std::size_t k = 0; k < polygons.size(); ++k)
+        size.resize(merged.size());
+        for (std::size_t k = 0; k < merged.size(); ++k)
         {
-          size[k] = { -apparent(polygons[k]), k };
+          size[k] = { -apparent(merged[k]), k };
         }
         std::sort(size.begin(), size.end());
-        std::vector<BlockerPolygon> sorted(polygons.size());
-        for (std::size_t k = 0; k < polygons.size(); ++k)
+        polygons.resize(merged.size());
+        for (std::size_t k = 0; k < merged.size(); ++k)
         {
-          sorted[k] = polygons[size[k].second];
+          polygons[k] = merged[size[k].second];
         }
-        polygons.swap(sorted);
         // A leaf in the umbra of one blocker takes nothing from the link.
         if (std::any_of(polygons.begin(), polygons.end(),
               [&](const BlockerPolygon& b) { return HidesWholly(receiver, c.Polygon, b); }))
