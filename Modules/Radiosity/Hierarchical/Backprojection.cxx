@@ -49,12 +49,14 @@ SourceFrame::SourceFrame(const TriangleCorners& source)
 {
 }
 
-void BlockerLevels::FindLevels(const Vec3& m)
+void BlockerLevels::FindLevels(const SourceFrame& frame)
 {
   double lowest = 1e300, highest = -1e300;
   for (int i = 0; i < this->Size; ++i)
   {
-    const double l = glm::dot(this->Corner[i], m);
+    const double l = glm::dot(this->Corner[i], frame.M);
+    this->Level[i] = l;
+    this->Flat[i] = frame.To2(this->Corner[i]);
     lowest = std::min(lowest, l);
     highest = std::max(highest, l);
   }
@@ -87,18 +89,13 @@ double SignedArea(const Polygon2& p)
   return 0.5 * a;
 }
 
-// Sutherland-Hodgman split by the line a->b into its left and right parts in
-// one pass; false when a part would not fit (the caller stops subtracting).
-// Each corner's side is computed once (the pass visits it as both ends of
-// an edge).
-bool SplitByLine(const Polygon2& in, const Point2& a, const Point2& b, Polygon2& left, Polygon2& right)
+// Sutherland-Hodgman split by a line into its left and right parts in one
+// pass, `side[i]` being corner i's Cross against the line (computed once:
+// the pass visits each corner as both ends of an edge); false when a part
+// would not fit (the caller stops subtracting).
+bool SplitBySides(const Polygon2& in, const double* side, Polygon2& left, Polygon2& right)
 {
   left.N = right.N = 0;
-  double side[Polygon2::Capacity];
-  for (int i = 0; i < in.N; ++i)
-  {
-    side[i] = Cross(a, b, in.V[i]);
-  }
   for (int i = 0; i < in.N; ++i)
   {
     const int j = i + 1 < in.N ? i + 1 : 0;
@@ -127,6 +124,17 @@ bool SplitByLine(const Polygon2& in, const Point2& a, const Point2& b, Polygon2&
     }
   }
   return true;
+}
+
+// The same split by the line a->b.
+bool SplitByLine(const Polygon2& in, const Point2& a, const Point2& b, Polygon2& left, Polygon2& right)
+{
+  double side[Polygon2::Capacity];
+  for (int i = 0; i < in.N; ++i)
+  {
+    side[i] = Cross(a, b, in.V[i]);
+  }
+  return SplitBySides(in, side, left, right);
 }
 
 // Clip of a small 3D polygon to the half-space dot(p, m) - offset >= 0.
@@ -186,12 +194,13 @@ bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::
     const Point2& b = hole.V[i + 1 < hole.N ? i + 1 : 0];
     // A piece wholly on one side of the edge's line needs no split (most
     // are: the hole's edges are few and the pieces small).
+    double side[Polygon2::Capacity];
     bool left = true, right = true;
-    for (int k = 0; k < rest->N && (left || right); ++k)
+    for (int k = 0; k < rest->N; ++k)
     {
-      const double side = Cross(a, b, rest->V[k]);
-      left = left && side >= 0;
-      right = right && side <= 0;
+      side[k] = Cross(a, b, rest->V[k]);
+      left = left && side[k] >= 0;
+      right = right && side[k] <= 0;
     }
     if (left)
     {
@@ -207,7 +216,7 @@ bool Subtract(const Polygon2& piece, const Polygon2& hole, double minArea, std::
       return true;
     }
     Polygon2& inside = rest == &buffers[0] ? buffers[1] : buffers[0]; // not the one read
-    if (!SplitByLine(*rest, a, b, inside, outside))
+    if (!SplitBySides(*rest, side, inside, outside))
     {
       out.resize(first);
       out.push_back(piece);
@@ -233,12 +242,14 @@ double SlabSlack(const SourceFrame& frame, const Vec3& x, double height)
 }
 
 // The shadow of `blocker` on the source's plane seen from x (at `height`
-// above it, at `xLevel` along its normal), counter-clockwise in the source's
-// frame: the blocker clipped to the slab between the two planes (less
-// `slack`) and projected centrally from x. False when it casts none
-// (outside the slab, or seen edge-on).
-bool ShadowOf(const SourceFrame& frame, const Vec3& x, double height, double xLevel, double slack,
-  const BlockerLevels& blocker, Polygon2& shadow)
+// above it, at `xLevel` along its normal, at `flatX` in its frame),
+// counter-clockwise in the source's frame: the blocker clipped to the slab
+// between the two planes (less `slack`) and projected centrally from x. A
+// corner c projects to x + t (c - x), t = height / (xLevel - level of c),
+// found in the frame (an affine map) from the corner's 2D coordinates. False
+// when it casts none (outside the slab, or seen edge-on).
+bool ShadowOf(const SourceFrame& frame, const Point2& flatX, double height, double xLevel,
+  double slack, const BlockerLevels& blocker, Polygon2& shadow)
 {
   const Vec3& m = frame.M;
   const double lo = frame.PlaneOffset + slack, hi = xLevel - slack;
@@ -246,16 +257,25 @@ bool ShadowOf(const SourceFrame& frame, const Vec3& x, double height, double xLe
   {
     return false; // wholly behind the source or behind the point
   }
+  const double* level = blocker.Level;
+  const Point2* flat = blocker.Flat;
+  int n3 = blocker.Size;
   // Up to four corners, two more after each of the two clips; a blocker
   // wholly between the planes is its own clip.
-  Vec3 clipped[8], poly[8];
-  const Vec3* shadowCorners = blocker.Corner;
-  int n3 = blocker.Size;
+  double clippedLevel[8];
+  Point2 clippedFlat[8];
   if (!(blocker.Lowest > lo && blocker.Highest < hi))
   {
+    Vec3 clipped[8], poly[8];
     n3 = ClipPlane(blocker.Corner, blocker.Size, m, lo, clipped);
     n3 = ClipPlane(clipped, n3, -m, -hi, poly);
-    shadowCorners = poly;
+    for (int i = 0; i < n3; ++i)
+    {
+      clippedLevel[i] = glm::dot(poly[i], m);
+      clippedFlat[i] = frame.To2(poly[i]);
+    }
+    level = clippedLevel;
+    flat = clippedFlat;
   }
   if (n3 < 3)
   {
@@ -264,8 +284,8 @@ bool ShadowOf(const SourceFrame& frame, const Vec3& x, double height, double xLe
   shadow.N = 0;
   for (int i = 0; i < n3; ++i)
   {
-    const double t = height / (xLevel - glm::dot(shadowCorners[i], m));
-    shadow.Push(frame.To2(x + t * (shadowCorners[i] - x)));
+    const double t = height / (xLevel - level[i]);
+    shadow.Push(Point2{ flatX.X + t * (flat[i].X - flatX.X), flatX.Y + t * (flat[i].Y - flatX.Y) });
   }
   const double area = SignedArea(shadow);
   if (std::abs(area) <= frame.MinArea)
@@ -391,6 +411,7 @@ bool SourceLessShadows(const SourceFrame& frame, const Vec3& x, const Vec3& n,
   const double height = glm::dot(x, frame.M) - frame.PlaneOffset;
   const double slack = SlabSlack(frame, x, height);
   const double xLevel = glm::dot(x, frame.M);
+  const Point2 flatX = frame.To2(x);
   thread_local std::vector<Polygon2> shadows, pieces, next;
   shadows.clear();
   const Box2 sourceBox(frame.Whole);
@@ -398,7 +419,7 @@ bool SourceLessShadows(const SourceFrame& frame, const Vec3& x, const Vec3& n,
   for (const BlockerLevels& blocker : blockers)
   {
     Polygon2 shadow, part;
-    if (!ShadowOf(frame, x, height, xLevel, slack, blocker, shadow) || !Box2(shadow).Overlaps(sourceBox))
+    if (!ShadowOf(frame, flatX, height, xLevel, slack, blocker, shadow) || !Box2(shadow).Overlaps(sourceBox))
     {
       continue;
     }
@@ -497,11 +518,12 @@ typename Factor::Value VisibleFromPoint(const SourceFrame& frame, const Vec3& x,
   visible.push_back(frame.Whole);
   const double slack = SlabSlack(frame, x, height);
   const double xLevel = glm::dot(x, m);
+  const Point2 flatX = frame.To2(x);
 
   for (std::size_t b = 0; b < blockerCount && !visible.empty(); ++b)
   {
     Polygon2 shadow;
-    if (!ShadowOf(frame, x, height, xLevel, slack, blockerAt(b), shadow))
+    if (!ShadowOf(frame, flatX, height, xLevel, slack, blockerAt(b), shadow))
     {
       continue;
     }
@@ -561,7 +583,7 @@ typename Factor::Value VisibleFormFactorOf(const Vec3& x, const Vec3& n, const S
   return VisibleFromPoint<Factor>(frame, x, n, blockerCount,
     [&](std::size_t b) -> const BlockerLevels& {
       current.Size = corners(b, current.Corner);
-      current.FindLevels(frame.M);
+      current.FindLevels(frame);
       return current;
     },
     exact, fragmentsLimit);
@@ -578,7 +600,7 @@ PreparedVisibleFormFactor::PreparedVisibleFormFactor(
     BlockerLevels& levels = this->Blockers[b];
     std::copy(blockers[b].Corners.begin(), blockers[b].Corners.begin() + blockers[b].Size, levels.Corner);
     levels.Size = blockers[b].Size;
-    levels.FindLevels(this->Frame.M);
+    levels.FindLevels(this->Frame);
   }
 }
 

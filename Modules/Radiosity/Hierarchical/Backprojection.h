@@ -134,14 +134,18 @@ struct SourceFrame
   Vec3 To3(const Point2& p) const { return this->Source[0] + p.X * this->U + p.Y * this->V; }
 };
 
-/// A blocker's corners with their lowest and highest level along a
-/// source's normal (which blockers lie between a point and the source).
+/// A blocker's corners with their levels along a source's normal (the
+/// lowest and highest: which blockers lie between a point and the source)
+/// and their coordinates in the source's frame (a shadow corner is then an
+/// affine combination in 2D of the point's and the corner's).
 struct BlockerLevels
 {
   Vec3 Corner[4];
   int Size = 0;
+  double Level[4];
+  Point2 Flat[4];
   double Lowest = 0.0, Highest = 0.0;
-  void FindLevels(const Vec3& m);
+  void FindLevels(const SourceFrame& frame);
 };
 } // namespace backprojection_detail
 
