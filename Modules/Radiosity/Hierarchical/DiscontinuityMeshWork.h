@@ -105,13 +105,15 @@ SharedSamples ReferenceSamples(
 /**
  * The sky quadrature's directions that no point of a leaf sees, for the
  * leaves `leaves[order[k]]`, k in [begin, end): those whose rays from the
- * leaf's three corners meet the same occluder first. Parallel rays from the
- * points of the triangle meet that occluder's plane at the same convex
- * combination of the corners' hits, inside it and no farther than the
- * farthest, so each point's ray meets it too (each ray starts at its point
- * moved by one offset along n, the same for all). A corner's rays are cast
- * once for the leaves of its input triangle that meet there
- * (DiscontinuityMeshSky.cxx). SkyMaskWords() words per leaf, in k order.
+ * leaf's three corners all cross one occluder, the one that the ray from its
+ * corner of lowest point index meets first. Parallel rays from the points of
+ * the triangle cross that occluder's plane at the same convex combination of
+ * the corners' crossings, inside it and no farther than the farthest, so
+ * each point's ray crosses it too (each ray starts at its point moved by one
+ * offset along n, the same for all). The traced corner's rays are cast once
+ * for the leaves that share it; the three crossings are tested against the
+ * one occluder in double precision with a margin (DiscontinuityMeshSky.cxx).
+ * SkyMaskWords() words per leaf, in k order.
  */
 std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, const DirectLighting& lights,
   const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
