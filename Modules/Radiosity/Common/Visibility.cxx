@@ -93,6 +93,12 @@ Visibility::Visibility(const Scene& scene, const std::vector<unsigned char>& can
   rtcCommitScene(this->Impl->Scene);
 }
 
+bool Visibility::Occludes(std::uint32_t t) const
+{
+  // In scene order: the occluders were listed as the scene's triangles were walked.
+  return std::binary_search(this->Impl->GeometryToTriangle.begin(), this->Impl->GeometryToTriangle.end(), t);
+}
+
 Visibility::~Visibility()
 {
   if (this->Impl->Scene)

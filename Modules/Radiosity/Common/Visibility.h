@@ -105,6 +105,8 @@ public:
   }
 
   std::size_t RaysCast() const;
+  /// Whether scene triangle t is one of the occluders (built into the BVH).
+  bool Occludes(std::uint32_t t) const;
 
 private:
   struct Internals;

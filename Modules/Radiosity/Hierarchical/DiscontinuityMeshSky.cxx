@@ -2,6 +2,7 @@
 // discontinuity mesher's samples (DiscontinuityMeshWork.h).
 #include "Radiosity/Common/Visibility.h"
 #include "Radiosity/Hierarchical/DiscontinuityMeshWork.h"
+#include "Radiosity/Hierarchical/EdgeTopology.h"
 
 #include <tbb/parallel_for.h>
 
@@ -41,17 +42,44 @@ bool CrossesInside(const Vec3& origin, const Vec3& d, double length, double near
   return u >= Margin * det && v >= Margin * det && u + v <= (1.0 - Margin) * det && t >= along * det &&
     t <= (1.0 - along) * det && det > 0.0;
 }
+
+/// Whether triangle t and its coplanar neighbour u across t's side k form
+/// a convex quad (then a segment between two points of their union stays in it).
+bool ConvexWithNeighbour(const Scene& scene, std::uint32_t t, int k, std::uint32_t u)
+{
+  const auto& tv = scene.Triangles[t].V;
+  const auto& uv = scene.Triangles[u].V;
+  const std::uint32_t p = tv[k], q = tv[(k + 1) % 3];
+  std::uint32_t far = uv[0];
+  for (std::uint32_t v : uv)
+  {
+    far = v != p && v != q ? v : far;
+  }
+  // t's winding with u's far corner between the shared edge's ends.
+  const Vec3 quad[4] = { scene.Points[p], scene.Points[far], scene.Points[q], scene.Points[tv[(k + 2) % 3]] };
+  const Vec3 n = glm::cross(quad[2] - quad[0], quad[3] - quad[0]);
+  for (int i = 0; i < 4; ++i)
+  {
+    const Vec3 turn = glm::cross(quad[(i + 1) % 4] - quad[i], quad[(i + 2) % 4] - quad[(i + 1) % 4]);
+    if (!(glm::dot(turn, n) > 0.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
 } // namespace
 
 std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, const DirectLighting& lights,
-  const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
+  const EdgeTopology& topology, const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
   std::size_t end)
 {
   const ElementMesh& mesh = s.Mesh();
   const Scene& scene = s.GetScene();
   const std::size_t words = lights.SkyMaskWords();
   const std::size_t stride = 64 * words;
-  const double offset = lights.ShadowRays()->Offset();
+  const Visibility& rays = *lights.ShadowRays();
+  const double offset = rays.Offset();
   // A direction is hidden from the whole leaf where the rays from its three
   // corners all cross one occluder: the parallel rays from its points cross
   // that occluder's plane at the same convex combination of the corners'
@@ -120,15 +148,40 @@ std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, c
       {
         continue;
       }
-      const Vec3 a = scene.Vertex(t, 0);
-      const Vec3 e1 = scene.Vertex(t, 1) - a, e2 = scene.Vertex(t, 2) - a;
-      bool all = true;
-      for (int k = 0; k < 3 && all; ++k)
+      std::array<Vec3, 3> d;
+      for (int k = 0; k < 3; ++k)
       {
-        const Vec3 d = lift[k] + far[k] * directions[i];
         // |d| is far[k] to a part in 1e7 (lift is a hundredth of the
         // offset, far at least twice the scene's size): ample for the bounds on t.
-        all = CrossesInside(origin[k], d, far[k], offset, a, e1, e2);
+        d[k] = lift[k] + far[k] * directions[i];
+      }
+      auto crosses = [&](std::uint32_t triangle, int k) {
+        const Vec3 a = scene.Vertex(triangle, 0);
+        return CrossesInside(origin[k], d[k], far[k], offset, a, scene.Vertex(triangle, 1) - a,
+          scene.Vertex(triangle, 2) - a);
+      };
+      bool inside[3] = { false, false, false };
+      bool all = true;
+      for (int k = 0; k < 3; ++k)
+      {
+        inside[k] = crosses(t, k);
+        all = all && inside[k];
+      }
+      // Else the crossings may still lie in the union of t and a coplanar
+      // neighbour across one of its sides (a wall's other triangle), where
+      // that union is convex: the convex combinations stay in it.
+      for (int side = 0; side < 3 && !all; ++side)
+      {
+        const std::uint32_t u = topology.CoplanarNeighbour(t, side);
+        if (u == EdgeTopology::None || !rays.Occludes(u) || !ConvexWithNeighbour(scene, t, side, u))
+        {
+          continue;
+        }
+        all = true;
+        for (int k = 0; k < 3 && all; ++k)
+        {
+          all = inside[k] || crosses(u, k);
+        }
       }
       if (all)
       {

@@ -115,8 +115,9 @@ SharedSamples ReferenceSamples(
  * one occluder in double precision with a margin (DiscontinuityMeshSky.cxx).
  * SkyMaskWords() words per leaf, in k order.
  */
+class EdgeTopology;
 std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, const DirectLighting& lights,
-  const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
+  const EdgeTopology& topology, const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
   std::size_t end);
 } // namespace discontinuity_mesh_detail
 } // namespace radiosity

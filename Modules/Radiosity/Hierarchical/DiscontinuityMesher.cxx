@@ -378,7 +378,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       }
       const std::size_t end = std::min(order.size(), begin + SampleBlock);
       const std::vector<std::uint64_t> hidden =
-        sky ? SkyHiddenOverLeaves(s, *lights, leaves, order, begin, end) : std::vector<std::uint64_t>();
+        sky ? SkyHiddenOverLeaves(s, *lights, topology, leaves, order, begin, end) : std::vector<std::uint64_t>();
       tbb::parallel_for(begin, end,
         [&](std::size_t k) { sampleLeaf(order[k], sky ? hidden.data() + (k - begin) * words : nullptr); });
     }

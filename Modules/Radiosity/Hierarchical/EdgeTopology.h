@@ -24,6 +24,15 @@ public:
   explicit EdgeTopology(const Scene& scene);
 
   bool Coplanar(std::uint32_t a, std::uint32_t b) const;
+  /// The one triangle across side k of triangle t (the side from corner k to
+  /// k + 1) when it is coplanar with t, else None (no such triangle, or more
+  /// than two triangles share that edge).
+  std::uint32_t CoplanarNeighbour(std::uint32_t t, int k) const
+  {
+    const std::uint32_t across = this->CoplanarAcross[3 * t + static_cast<std::uint32_t>(k)];
+    return across == SeveralTriangles ? None : across;
+  }
+  static constexpr std::uint32_t None = 0xffffffffu;
 
   /// Edge k of source triangle t lies inside a larger emitting polygon.
   bool InteriorEmitterEdge(std::uint32_t t, int k) const;
@@ -43,7 +52,7 @@ private:
   template <typename Visit>
   bool AnyCoplanarAcross(std::uint32_t t, int k, const Visit& visit) const;
 
-  static constexpr std::uint32_t NoTriangle = 0xffffffffu;
+  static constexpr std::uint32_t NoTriangle = None;
   static constexpr std::uint32_t SeveralTriangles = 0xfffffffeu;
 
   const Scene& SourceScene;

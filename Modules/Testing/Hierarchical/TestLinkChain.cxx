@@ -6,6 +6,7 @@
 // directions hidden over a whole leaf against rays from inside it.
 #include "Radiosity/Hierarchical/Backprojection.h"
 #include "Radiosity/Hierarchical/DiscontinuityMeshWork.h"
+#include "Radiosity/Hierarchical/EdgeTopology.h"
 #include "Radiosity/Hierarchical/HierarchicalRadiosity.h"
 #include "Radiosity/Hierarchical/LinkChain.h"
 #include "Radiosity/Scenes/OfficeScene.h"
@@ -197,7 +198,8 @@ TEST(DiscontinuityMesh, SkyDirectionsHiddenOverALeafAreHiddenInside)
     order[i] = i;
   }
   const std::vector<std::uint64_t> hidden =
-    discontinuity_mesh_detail::SkyHiddenOverLeaves(solver, lights, leaves, order, 0, order.size());
+    discontinuity_mesh_detail::SkyHiddenOverLeaves(
+      solver, lights, discontinuity_mesh_detail::EdgeTopology(scene), leaves, order, 0, order.size());
   const std::size_t words = lights.SkyMaskWords();
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
