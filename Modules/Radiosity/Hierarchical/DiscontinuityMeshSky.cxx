@@ -70,16 +70,34 @@ bool ConvexWithNeighbour(const Scene& scene, std::uint32_t t, int k, std::uint32
 }
 } // namespace
 
+std::vector<std::array<std::uint32_t, 3>> ConvexCoplanarNeighbours(
+  const Scene& scene, const EdgeTopology& topology, const Visibility& occluders)
+{
+  std::vector<std::array<std::uint32_t, 3>> quads(scene.Triangles.size());
+  tbb::parallel_for(std::size_t(0), scene.Triangles.size(), [&](std::size_t i) {
+    const auto t = static_cast<std::uint32_t>(i);
+    for (int side = 0; side < 3; ++side)
+    {
+      const std::uint32_t u = topology.CoplanarNeighbour(t, side);
+      quads[i][side] = u != EdgeTopology::None && occluders.Occludes(t) && occluders.Occludes(u) &&
+          ConvexWithNeighbour(scene, t, side, u)
+        ? u
+        : EdgeTopology::None;
+    }
+  });
+  return quads;
+}
+
 std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, const DirectLighting& lights,
-  const EdgeTopology& topology, const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
+  const std::vector<std::array<std::uint32_t, 3>>& quads, const std::vector<std::uint32_t>& leaves,
+  const std::vector<std::uint32_t>& order, std::size_t begin,
   std::size_t end)
 {
   const ElementMesh& mesh = s.Mesh();
   const Scene& scene = s.GetScene();
   const std::size_t words = lights.SkyMaskWords();
   const std::size_t stride = 64 * words;
-  const Visibility& rays = *lights.ShadowRays();
-  const double offset = rays.Offset();
+  const double offset = lights.ShadowRays()->Offset();
   // A direction is hidden from the whole leaf where the rays from its three
   // corners all cross one occluder: the parallel rays from its points cross
   // that occluder's plane at the same convex combination of the corners'
@@ -155,32 +173,36 @@ std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, c
         // offset, far at least twice the scene's size): ample for the bounds on t.
         d[k] = lift[k] + far[k] * directions[i];
       }
-      auto crosses = [&](std::uint32_t triangle, int k) {
+      // The crossings of occluder `triangle` by the corners' rays that
+      // `test` asks for, until one misses.
+      auto crosses = [&](std::uint32_t triangle, bool* inside, bool stopAtMiss) {
         const Vec3 a = scene.Vertex(triangle, 0);
-        return CrossesInside(origin[k], d[k], far[k], offset, a, scene.Vertex(triangle, 1) - a,
-          scene.Vertex(triangle, 2) - a);
+        const Vec3 e1 = scene.Vertex(triangle, 1) - a, e2 = scene.Vertex(triangle, 2) - a;
+        bool every = true;
+        for (int k = 0; k < 3 && (every || !stopAtMiss); ++k)
+        {
+          if (!inside[k])
+          {
+            inside[k] = CrossesInside(origin[k], d[k], far[k], offset, a, e1, e2);
+            every = every && inside[k];
+          }
+        }
+        return every;
       };
+      const std::array<std::uint32_t, 3>& quad = quads[t];
+      const bool neighbours = quad[0] != EdgeTopology::None || quad[1] != EdgeTopology::None ||
+        quad[2] != EdgeTopology::None;
       bool inside[3] = { false, false, false };
-      bool all = true;
-      for (int k = 0; k < 3; ++k)
-      {
-        inside[k] = crosses(t, k);
-        all = all && inside[k];
-      }
+      bool all = crosses(t, inside, !neighbours);
       // Else the crossings may still lie in the union of t and a coplanar
       // neighbour across one of its sides (a wall's other triangle), where
       // that union is convex: the convex combinations stay in it.
       for (int side = 0; side < 3 && !all; ++side)
       {
-        const std::uint32_t u = topology.CoplanarNeighbour(t, side);
-        if (u == EdgeTopology::None || !rays.Occludes(u) || !ConvexWithNeighbour(scene, t, side, u))
+        if (quad[side] != EdgeTopology::None)
         {
-          continue;
-        }
-        all = true;
-        for (int k = 0; k < 3 && all; ++k)
-        {
-          all = inside[k] || crosses(u, k);
+          bool either[3] = { inside[0], inside[1], inside[2] };
+          all = crosses(quad[side], either, true);
         }
       }
       if (all)

@@ -102,6 +102,12 @@ struct SharedSamples
 /// samples are numbered in the order of their first appearance in leaf order.
 SharedSamples ReferenceSamples(
   const HierarchicalRadiosity& s, const std::vector<std::uint32_t>& leaves, LeafWorks& work);
+class EdgeTopology;
+/// Per scene triangle and side, the coplanar occluder across that side whose
+/// union with the triangle is a convex quad, EdgeTopology::None where there
+/// is none or the triangle is no occluder: SkyHiddenOverLeaves' `quads`.
+std::vector<std::array<std::uint32_t, 3>> ConvexCoplanarNeighbours(
+  const Scene& scene, const EdgeTopology& topology, const Visibility& occluders);
 /**
  * The sky quadrature's directions that no point of a leaf sees, for the
  * leaves `leaves[order[k]]`, k in [begin, end): those whose rays from the
@@ -112,12 +118,13 @@ SharedSamples ReferenceSamples(
  * each point's ray crosses it too (each ray starts at its point moved by one
  * offset along n, the same for all). The traced corner's rays are cast once
  * for the leaves that share it; the three crossings are tested against the
- * one occluder in double precision with a margin (DiscontinuityMeshSky.cxx).
+ * one occluder in double precision with a margin, and where one misses it,
+ * against the union of it and a neighbour of `quads` (the same argument:
+ * that union is convex) (DiscontinuityMeshSky.cxx).
  * SkyMaskWords() words per leaf, in k order.
  */
-class EdgeTopology;
 std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, const DirectLighting& lights,
-  const EdgeTopology& topology, const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
+  const std::vector<std::array<std::uint32_t, 3>>& quads, const std::vector<std::uint32_t>& leaves, const std::vector<std::uint32_t>& order, std::size_t begin,
   std::size_t end);
 } // namespace discontinuity_mesh_detail
 } // namespace radiosity

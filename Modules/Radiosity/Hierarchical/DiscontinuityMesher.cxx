@@ -370,6 +370,9 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
     }
     constexpr std::size_t SampleBlock = 1024; // the office: about a third of a second each
     const std::size_t words = sky ? lights->SkyMaskWords() : 0;
+    const std::vector<std::array<std::uint32_t, 3>> quads = sky
+      ? ConvexCoplanarNeighbours(scene, topology, *lights->ShadowRays())
+      : std::vector<std::array<std::uint32_t, 3>>();
     for (std::size_t begin = 0; begin < order.size(); begin += SampleBlock)
     {
       if (!report("sampling", 0.3 + 0.6 * static_cast<double>(begin) / static_cast<double>(order.size())))
@@ -378,7 +381,7 @@ DiscontinuityMesh BuildDiscontinuityMesh(const HierarchicalRadiosity& s,
       }
       const std::size_t end = std::min(order.size(), begin + SampleBlock);
       const std::vector<std::uint64_t> hidden =
-        sky ? SkyHiddenOverLeaves(s, *lights, topology, leaves, order, begin, end) : std::vector<std::uint64_t>();
+        sky ? SkyHiddenOverLeaves(s, *lights, quads, leaves, order, begin, end) : std::vector<std::uint64_t>();
       tbb::parallel_for(begin, end,
         [&](std::size_t k) { sampleLeaf(order[k], sky ? hidden.data() + (k - begin) * words : nullptr); });
     }

@@ -198,8 +198,10 @@ TEST(DiscontinuityMesh, SkyDirectionsHiddenOverALeafAreHiddenInside)
     order[i] = i;
   }
   const std::vector<std::uint64_t> hidden =
-    discontinuity_mesh_detail::SkyHiddenOverLeaves(
-      solver, lights, discontinuity_mesh_detail::EdgeTopology(scene), leaves, order, 0, order.size());
+    discontinuity_mesh_detail::SkyHiddenOverLeaves(solver, lights,
+      discontinuity_mesh_detail::ConvexCoplanarNeighbours(
+        scene, discontinuity_mesh_detail::EdgeTopology(scene), *lights.ShadowRays()),
+      leaves, order, 0, order.size());
   const std::size_t words = lights.SkyMaskWords();
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
