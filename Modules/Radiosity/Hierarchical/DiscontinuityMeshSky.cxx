@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstring>
 
 namespace radiosity
@@ -104,7 +103,9 @@ std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, c
   // crossings, inside it and no farther than the farthest (each ray starts
   // at its point moved by the same offset along n). The occluder is the one
   // that the ray from one corner meets first (Embree); the three crossings
-  // are then tested in double precision against it alone, with a margin.
+  // are then tested in double precision against it alone, with a margin,
+  // and where one misses it, against its union with a coplanar neighbour
+  // when that union is convex (`quads`).
   // The rays are traced from the corner of lowest point index, so that the
   // leaves meeting there share them: a corner's rays are
   // those of a point of the element mesh's pool and a normal, to the bit
@@ -173,8 +174,10 @@ std::vector<std::uint64_t> SkyHiddenOverLeaves(const HierarchicalRadiosity& s, c
         // offset, far at least twice the scene's size): ample for the bounds on t.
         d[k] = lift[k] + far[k] * directions[i];
       }
-      // The crossings of occluder `triangle` by the corners' rays that
-      // `test` asks for, until one misses.
+      // Tests against `triangle` the corners whose rays are not yet known
+      // to cross an occluder (inside[k] false), marking those that cross
+      // it; with `stopAtMiss`, stops at the first miss. True when all of
+      // them cross it.
       auto crosses = [&](std::uint32_t triangle, bool* inside, bool stopAtMiss) {
         const Vec3 a = scene.Vertex(triangle, 0);
         const Vec3 e1 = scene.Vertex(triangle, 1) - a, e2 = scene.Vertex(triangle, 2) - a;
