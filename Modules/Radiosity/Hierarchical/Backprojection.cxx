@@ -693,6 +693,19 @@ bool HidesWholly(const TriangleCorners& receiver, const TriangleCorners& source,
   return true;
 }
 
+bool ConvexQuad(const Vec3 (&quad)[4], const Vec3& normal)
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    const Vec3 turn = glm::cross(quad[(k + 1) % 4] - quad[k], quad[(k + 2) % 4] - quad[(k + 1) % 4]);
+    if (!(glm::dot(turn, normal) > 0.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 std::vector<BlockerPolygon> MergeCoplanarPairs(
   const std::vector<TriangleCorners>& corners, const std::vector<std::array<std::uint32_t, 3>>& vertexIds)
 {
@@ -746,13 +759,7 @@ std::vector<BlockerPolygon> MergeCoplanarPairs(
     const Vec3& c = tp[(p.Side + 2) % 3];
     const Vec3& d = corners[q.Triangle][(q.Side + 2) % 3];
     const Vec3 quad[4] = { a, d, b, c };
-    bool convex = true;
-    for (int k = 0; k < 4 && convex; ++k)
-    {
-      const Vec3 turn = glm::cross(quad[(k + 1) % 4] - quad[k], quad[(k + 2) % 4] - quad[(k + 1) % 4]);
-      convex = glm::dot(turn, normal[p.Triangle]) > 0.0;
-    }
-    if (!convex)
+    if (!ConvexQuad(quad, normal[p.Triangle]))
     {
       continue;
     }

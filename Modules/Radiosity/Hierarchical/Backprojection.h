@@ -167,6 +167,12 @@ private:
   std::vector<backprojection_detail::BlockerLevels> Blockers;
 };
 
+/// Whether every turn of the closed quad quad[0] -> ... -> quad[3] is along
+/// `normal` (any length): a convex quad wound about it. MergeCoplanarPairs'
+/// test of a pair, and the mesher's sky test of an occluder and its
+/// neighbour (DiscontinuityMeshSky.cxx).
+bool ConvexQuad(const Vec3 (&quad)[4], const Vec3& normal);
+
 /**
  * Blocker triangles (`corners`, with `vertexIds` their shared point indices)
  * as convex polygons: each pair that shares an edge, lies in one plane

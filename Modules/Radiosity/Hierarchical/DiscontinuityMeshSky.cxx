@@ -1,6 +1,7 @@
 // The sky directions hidden from every point of a leaf, for the
 // discontinuity mesher's samples (DiscontinuityMeshWork.h).
 #include "Radiosity/Common/Visibility.h"
+#include "Radiosity/Hierarchical/Backprojection.h"
 #include "Radiosity/Hierarchical/DiscontinuityMeshWork.h"
 #include "Radiosity/Hierarchical/EdgeTopology.h"
 
@@ -56,16 +57,7 @@ bool ConvexWithNeighbour(const Scene& scene, std::uint32_t t, int k, std::uint32
   }
   // t's winding with u's far corner between the shared edge's ends.
   const Vec3 quad[4] = { scene.Points[p], scene.Points[far], scene.Points[q], scene.Points[tv[(k + 2) % 3]] };
-  const Vec3 n = glm::cross(quad[2] - quad[0], quad[3] - quad[0]);
-  for (int i = 0; i < 4; ++i)
-  {
-    const Vec3 turn = glm::cross(quad[(i + 1) % 4] - quad[i], quad[(i + 2) % 4] - quad[(i + 1) % 4]);
-    if (!(glm::dot(turn, n) > 0.0))
-    {
-      return false;
-    }
-  }
-  return true;
+  return ConvexQuad(quad, glm::cross(quad[2] - quad[0], quad[3] - quad[0]));
 }
 } // namespace
 
