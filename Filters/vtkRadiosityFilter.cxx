@@ -21,6 +21,7 @@
 #include "vtkVersion.h"
 
 #include "Radiosity/FaceCluster/FaceClusterMethod.h"
+#include "Radiosity/Common/FacingAway.h"
 #include "Radiosity/Common/MethodChoice.h"
 #include "Radiosity/Hierarchical/HierarchicalMethod.h"
 #include "Radiosity/Meshless/MeshlessMethod.h"
@@ -430,6 +431,11 @@ int vtkRadiosityFilter::ExecuteRequest(
   {
     this->Warn("the scene has no emitter: the solution is zero (no emitting triangle, no light)");
   }
+  const std::string facingAway = radiosity::FacingAwayWarning(scene);
+  if (!facingAway.empty())
+  {
+    this->Warn(facingAway);
+  }
   auto sharedScene = std::make_shared<const radiosity::Scene>(std::move(scene));
   this->LastScene = sharedScene;
   this->ResolveMethod(*sharedScene);
@@ -493,6 +499,12 @@ int vtkRadiosityFilter::ExecuteRequest(
     {
       this->PrecomputeRelighting(progress);
     }
+  }
+  if (this->Statistics.Stop == radiosity::StopReason::Diverged)
+  {
+    // Never a plausible wrong answer: no output, an error saying what grew.
+    return this->Fail(std::string(GetMethodName(this->ResolvedMethod)) + " radiosity diverged after " +
+      std::to_string(this->Statistics.Iterations) + " iterations: " + this->Statistics.StopDetail);
   }
   const auto solved = Clock::now();
   if (distributed)

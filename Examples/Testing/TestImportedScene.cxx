@@ -11,7 +11,9 @@
 #include "vtkActorCollection.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkInformation.h"
 #include "vtkProperty.h"
+#include "vtkRadiosityRendererNode.h"
 #include "vtkRadiositySceneConverter.h"
 
 #include <nlohmann/json.hpp>
@@ -197,6 +199,61 @@ TEST_F(ImportedSceneTest, FirstCamera)
   EXPECT_NEAR(scene.Camera.Position[2], 5.0, 1e-12);
   EXPECT_NEAR(scene.Camera.FocalPoint[2], 4.0, 1e-12);
   EXPECT_NEAR(scene.Camera.ViewAngle, 0.5 * 180.0 / 3.14159265358979323846, 1e-9);
+}
+
+// A file's degenerate lights are left out with a warning naming each, and the
+// rest of the scene is imported (issue 53: a .3ds sun whose position equals
+// its target refused the whole file). Here a directional light on a node
+// scaled to zero (its direction collapses to zero, as a .3ds light whose
+// position is its target) and a point light of zero intensity, beside a good
+// point light.
+TEST_F(ImportedSceneTest, DegenerateLightsAreLeftOutWithAWarning)
+{
+  json g = FloorGltf();
+  AddLights(g,
+    json::array({ { { "type", "point" }, { "intensity", 2 } }, { { "type", "directional" }, { "intensity", 3 }, { "name", "sun" } },
+      { { "type", "point" }, { "intensity", 0 }, { "name", "off" } } }),
+    { { 0, 0.5, 0 }, { 1, 1, 0 }, { -1, 1, 0 } });
+  g["nodes"][g["nodes"].size() - 2]["scale"] = { 0, 0, 0 };
+  ImportedScene scene;
+  ASSERT_TRUE(this->Import("degenerate.gltf", g.dump(), scene)) << this->Error;
+  EXPECT_EQ(scene.FileLights, 3u);
+  EXPECT_EQ(scene.LightsLeftOut, 2u);
+  ASSERT_EQ(scene.Renderer->GetLights()->GetNumberOfItems(), 1);
+  const Light kept = vtkRadiositySceneConverter::ToLight(
+    vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(0)), scene.LightScale);
+  EXPECT_EQ(kept.Type, LightType::Point);
+  EXPECT_DOUBLE_EQ(kept.Intensity.r, 2.0);
+  std::string all;
+  for (const std::string& w : this->Warnings)
+  {
+    all += w + "\n";
+  }
+  EXPECT_NE(all.find("degenerate.gltf: light 1 ('sun') (directional): field 'direction' is a zero vector"), std::string::npos)
+    << all;
+  EXPECT_NE(all.find("degenerate.gltf: light 2 ('off') (point): its intensity is zero: that light is left out"),
+    std::string::npos)
+    << all;
+}
+
+// glTF's doubleSided: the actor is solved on both sides (TWO_SIDED in its
+// PropertyKeys, which the pass's mapper node reads); a one-sided material's
+// actor is not marked.
+TEST_F(ImportedSceneTest, DoubleSidedMaterialsAreSolvedOnBothSides)
+{
+  json g = FloorGltf();
+  ImportedScene one;
+  ASSERT_TRUE(this->Import("one.gltf", g.dump(), one)) << this->Error;
+  EXPECT_EQ(one.TwoSidedActors, 0u);
+  vtkActor* actor = one.Renderer->GetActors()->GetLastActor();
+  EXPECT_FALSE(actor->GetPropertyKeys() && actor->GetPropertyKeys()->Has(vtkRadiosityRendererNode::TWO_SIDED()));
+  g["materials"][0]["doubleSided"] = true;
+  ImportedScene two;
+  ASSERT_TRUE(this->Import("two.gltf", g.dump(), two)) << this->Error;
+  EXPECT_EQ(two.TwoSidedActors, 1u);
+  actor = two.Renderer->GetActors()->GetLastActor();
+  ASSERT_NE(actor->GetPropertyKeys(), nullptr);
+  EXPECT_EQ(actor->GetPropertyKeys()->Get(vtkRadiosityRendererNode::TWO_SIDED()), 1);
 }
 
 TEST_F(ImportedSceneTest, BadFilesAreRefusedByName)

@@ -112,19 +112,6 @@ int FinishHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>
     WriteVtp(solved, args.Output);
     phases.End("write_s");
   }
-  SolutionMesh interpolants; // for --exr only
-  RenderOutputs(args, solved,
-    [&]() -> const SolutionMesh* {
-      if (!meshing)
-      {
-        return &leaves;
-      }
-      interpolants = cli::InterpolantSolution(mesh, scene);
-      return &interpolants;
-    },
-    scene, nullptr, target.Camera());
-  phases.End("render_s");
-
   // Probes: from the interpolants (meshing) or the constant leaves; a probe
   // on no surface is gathered from the leaves' radiosity; the punctual
   // lights exact at each sensor (HierarchicalMethod::EvaluateProbes).
@@ -146,8 +133,13 @@ int FinishHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>
     args, probes, probeValues, stats.History, ", hierarchical radiosity", scene);
   phases.End("write_s");
 
-  if (!args.Report.empty())
-  {
+  // The report is written before the picture is drawn (and again after it,
+  // with the render's time): a render that fails loses none of the rest.
+  const auto writeReport = [&]() {
+    if (args.Report.empty())
+    {
+      return;
+    }
     nlohmann::json report;
     report["method"] = "hierarchical";
     report["method_choice"] = MethodChoiceReport(args.Method, filter);
@@ -231,6 +223,23 @@ int FinishHierarchicalSolve(const SolveArguments& args, const std::vector<Probe>
     }
     ReportRunAndHistory(report, phases, stats);
     Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
+  };
+  writeReport();
+  if (!args.Image.empty() || !args.Exr.empty())
+  {
+    SolutionMesh interpolants; // for --exr only
+    RenderOutputs(args, solved,
+      [&]() -> const SolutionMesh* {
+        if (!meshing)
+        {
+          return &leaves;
+        }
+        interpolants = cli::InterpolantSolution(mesh, scene);
+        return &interpolants;
+      },
+      scene, nullptr, target.Camera());
+    phases.End("render_s");
+    writeReport();
   }
   std::cerr << "solved " << args.Scene << " (" << EmitterSummary(scene) << "): " << stats.Elements
             << " leaves, " << stats.Links

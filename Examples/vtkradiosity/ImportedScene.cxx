@@ -8,6 +8,7 @@
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkGLTFImporter.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLogger.h"
@@ -17,6 +18,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRadiosityRendererNode.h"
+#include "vtkRadiositySceneConverter.h"
 #include "vtkVRMLImporter.h"
 
 #include <algorithm>
@@ -254,6 +258,8 @@ void FixGltfLights(const std::string& file, const GltfSummary& summary, Imported
   {
     vtkLight* light = imported[k];
     const GltfLight& defined = summary.Lights[summary.ImportedLightOrder[k]];
+    scene.LightLabels[light] = "light " + std::to_string(summary.ImportedLightOrder[k]) +
+      (defined.Name.empty() ? std::string() : " ('" + defined.Name + "')");
     light->SetPosition(0.0, 0.0, 0.0);
     light->SetFocalPoint(0.0, 0.0, -1.0);
     if (defined.Type == "spot" && defined.InnerConeAngle > 0.0)
@@ -279,6 +285,75 @@ void FixGltfLights(const std::string& file, const GltfSummary& summary, Imported
   }
 }
 
+// A file's lights are data, not a contract the user wrote (SPEC "Lights and
+// sky"): one the solver cannot take (a zero direction, as a .3ds light whose
+// position equals its target; a NaN; a negative intensity) is left out with a
+// warning naming it, and the rest of the scene is solved.
+void DropDegenerateLights(const std::string& file, ImportedScene& scene, std::vector<std::string>& warnings)
+{
+  const auto check = [](Light& light, std::string& why) {
+    LightSet one;
+    one.Lights.push_back(light);
+    try
+    {
+      ValidateLights(one);
+    }
+    catch (const std::exception& e)
+    {
+      why = e.what();
+      const std::string prefix = "light 0 ";
+      if (why.compare(0, prefix.size(), prefix) == 0)
+      {
+        why = why.substr(prefix.size()); // "(type, 'name'): field ..."
+      }
+      return false;
+    }
+    light = one.Lights[0];
+    if (!(MaxComponent(light.Intensity) > 0.0))
+    {
+      why = std::string("(") + LightTypeName(light.Type) +
+        (light.Name.empty() ? std::string() : ", '" + light.Name + "'") + "): its intensity is zero";
+      return false;
+    }
+    return true;
+  };
+  std::vector<vtkLight*> lights;
+  scene.Renderer->GetLights()->InitTraversal();
+  while (vtkLight* light = scene.Renderer->GetLights()->GetNextItem())
+  {
+    lights.push_back(light);
+  }
+  for (std::size_t k = 0; k < lights.size(); ++k)
+  {
+    Light converted = vtkRadiositySceneConverter::ToLight(lights[k], scene.LightScale);
+    std::string why;
+    if (!check(converted, why))
+    {
+      const auto label = scene.LightLabels.find(lights[k]);
+      warnings.push_back(file + ": " +
+        (label != scene.LightLabels.end() ? label->second
+                                          : "imported light " + std::to_string(k) + " of " + std::to_string(lights.size())) +
+        " " + why + ": that light is left out");
+      scene.Renderer->RemoveLight(lights[k]);
+      ++scene.LightsLeftOut;
+    }
+  }
+  std::vector<Light> kept;
+  for (std::size_t k = 0; k < scene.ExtraLights.Lights.size(); ++k)
+  {
+    Light light = scene.ExtraLights.Lights[k];
+    std::string why;
+    if (check(light, why))
+    {
+      kept.push_back(scene.ExtraLights.Lights[k]);
+      continue;
+    }
+    warnings.push_back(file + ": light " + why + ": that light is left out");
+    ++scene.LightsLeftOut;
+  }
+  scene.ExtraLights.Lights = kept;
+}
+
 bool ImportGltf(const std::string& file, const std::string& bytes, ImportedScene& scene, std::string& error,
   std::vector<std::string>& warnings, std::vector<std::string>& notes)
 {
@@ -298,6 +373,31 @@ bool ImportGltf(const std::string& file, const std::string& bytes, ImportedScene
   {
     return false;
   }
+  // glTF's doubleSided (VTK's importer culls the back faces of the other
+  // materials): those actors are solved on both sides.
+  std::size_t doubleSided = 0;
+  vtkActorCollection* actors = scene.Renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    if (!actor->GetProperty()->GetBackfaceCulling())
+    {
+      vtkNew<vtkInformation> keys;
+      if (actor->GetPropertyKeys())
+      {
+        keys->Copy(actor->GetPropertyKeys());
+      }
+      keys->Set(vtkRadiosityRendererNode::TWO_SIDED(), 1);
+      actor->SetPropertyKeys(keys);
+      ++doubleSided;
+    }
+  }
+  if (doubleSided > 0)
+  {
+    notes.push_back(file + ": " + std::to_string(doubleSided) +
+      " actors have a doubleSided material: they are solved on both sides");
+  }
+  scene.TwoSidedActors = doubleSided;
   scene.LightScale = 1.0; // the file's intensity one to one (ImportedScene.h)
   scene.FileLights = summary.ImportedLightOrder.size();
   FixGltfLights(file, summary, scene, warnings, notes);
@@ -416,6 +516,7 @@ bool ImportScene(const std::string& file, ImportedScene& scene, std::string& err
       TakeCamera(scene.Renderer->GetActiveCamera(), scene.Camera);
     }
   }
+  DropDegenerateLights(file, scene, warnings);
   // What was imported: the surface actors and their polygons.
   vtkActorCollection* actors = scene.Renderer->GetActors();
   actors->InitTraversal();
@@ -442,7 +543,7 @@ bool ImportScene(const std::string& file, ImportedScene& scene, std::string& err
   }
   notes.push_back("imported " + file + " with " + scene.Importer + ": " + std::to_string(scene.Actors) +
     " surface actors, " + std::to_string(scene.Polygons) + " polygons, " + std::to_string(scene.FileLights) +
-    " lights, " + (scene.HasCamera ? "the file's camera" : "no camera"));
+    " lights" + (scene.LightsLeftOut ? " (" + std::to_string(scene.LightsLeftOut) + " left out)" : std::string()) + ", " + (scene.HasCamera ? "the file's camera" : "no camera"));
   return true;
 }
 }

@@ -35,12 +35,14 @@
 #ifndef vtkradiosity_ImportedScene_h
 #define vtkradiosity_ImportedScene_h
 
+#include "vtkLight.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
 #include "Radiosity/Common/Lights.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -72,6 +74,11 @@ struct ImportedScene
   std::size_t Actors = 0;      ///< surface actors imported
   std::size_t Polygons = 0;    ///< their polygons and strips
   std::size_t FileLights = 0;  ///< lights the file defines (glTF) or VTK imported
+  std::size_t TwoSidedActors = 0; ///< glTF doubleSided: solved on both sides
+  std::size_t LightsLeftOut = 0; ///< of those, left out as degenerate (a warning each)
+  /// How a warning names each imported vtkLight: the file's light index and
+  /// name (glTF), else its place among the lights VTK imported.
+  std::map<vtkLight*, std::string> LightLabels;
 };
 
 /// VTK's error and warning messages (vtkErrorMacro, vtkWarningMacro) while

@@ -13,7 +13,10 @@
 #include "vtkCornellBoxSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkFieldData.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkRadiosityConvergenceChart.h"
@@ -162,6 +165,35 @@ void Check(bool ok, const std::string& error)
 
 /// Sensors for the demo's error curve: the centre of every input triangle of
 /// the Cornell box but the light's, facing the way the triangle does.
+void MarkTwoSided(vtkDataObject* input)
+{
+  const auto mark = [](vtkDataObject* leaf) {
+    auto* pd = vtkPolyData::SafeDownCast(leaf);
+    if (!pd)
+    {
+      std::cerr << "warning: --two-sided: a " << (leaf ? leaf->GetClassName() : "null")
+                << " block is solved on one side (only polydata takes the TwoSided array)\n";
+      return;
+    }
+    vtkNew<vtkIntArray> sides;
+    sides->SetName("TwoSided");
+    sides->SetNumberOfTuples(pd->GetNumberOfCells());
+    sides->FillValue(1);
+    pd->GetCellData()->AddArray(sides);
+  };
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      mark(it->GetCurrentDataObject());
+    }
+    return;
+  }
+  mark(input);
+}
+
 std::vector<Probe> CornellDemoProbes()
 {
   const Scene box = MakeCornellBox();
@@ -419,6 +451,12 @@ void ComputeReference(const SolveArguments& args, const Scene& scene, const std:
       "path traced: %zu paths per probe, largest relative standard error %.2e",
       args.ReferenceSamples, worst);
     referenceKind = kind;
+  }
+  if (!args.ReferenceOutput.empty() && !reference.empty())
+  {
+    // Kept for later runs' --reference FILE: a converged path-traced
+    // reference costs more than the solves it measures.
+    Check(cli::WriteProbeValues(args.ReferenceOutput, probes, reference, error), error);
   }
 }
 

@@ -56,6 +56,8 @@ struct SolveArguments
   double MaxTime = 0.0;
   int Threads = 0;
   double MaxReflectance = 0.95; ///< .mtl Kd clamped to it (SPEC, Scenes), in (0, 1)
+  bool TwoSided = false; ///< --two-sided: every surface solved on both sides
+  std::string ReferenceOutput; ///< --reference-output: the computed reference at the probes (CSV)
   double MaxMemory = 0.0; ///< GB; 0: 75% of physical memory
   std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
   std::string Reference;
@@ -131,6 +133,10 @@ void Check(bool ok, const std::string& error);
 /// std::runtime_error (exit status 1); nothing when empty.
 void ThrowFilterError(const std::string& message);
 std::vector<Probe> CornellDemoProbes();
+/// --two-sided on a loaded scene: SPEC's TwoSided cell array, 1 on every
+/// cell of every polydata in `input` (a leaf of another type is converted
+/// to its outer surface by the filter and keeps its one side: a warning).
+void MarkTwoSided(vtkDataObject* input);
 void WriteVtp(vtkPolyData* data, const std::string& file);
 /// `camera`: the view of --image and --exr (an imported file's camera);
 /// null: the Cornell box's for `cornell`, else framing the scene.

@@ -41,6 +41,14 @@ void SolveTarget::SetMethod(int method)
   this->Filter()->SetMethod(method);
 }
 
+void SolveTarget::SetTwoSided()
+{
+  if (this->Pass)
+  {
+    this->Pass->SetTwoSided(true);
+  }
+}
+
 void SolveTarget::Update()
 {
   if (!this->Pass)
@@ -115,7 +123,7 @@ nlohmann::json SolveTarget::ImportReport() const
       { "view_up", { c.ViewUp[0], c.ViewUp[1], c.ViewUp[2] } }, { "view_angle_deg", c.ViewAngle } };
   }
   return { { "importer", s.Importer }, { "path", "vtkRadiosityPass::UpdateSolution" },
-    { "surface_actors", s.Actors }, { "polygons", s.Polygons }, { "file_lights", s.FileLights },
+    { "surface_actors", s.Actors }, { "polygons", s.Polygons }, { "file_lights", s.FileLights }, { "file_lights_left_out", s.LightsLeftOut },
     { "lights_solved_from_file_values", s.ExtraLights.Lights.size() },
     { "light_scale", s.LightScale }, { "camera", camera } };
 }

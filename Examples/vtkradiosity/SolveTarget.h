@@ -35,6 +35,8 @@ public:
   vtkRadiosityFilter* Filter() const;
   /// The method, on the filter (and the pass).
   void SetMethod(int method);
+  /// An imported scene's surfaces solved on both sides (vtkRadiosityPass::TwoSided).
+  void SetTwoSided();
   /// Solves: filter->Update(), or pass->UpdateSolution(renderer). A failure
   /// leaves the message in the filter's LastError; a failure of the pass
   /// before the filter ran (a NaN point, a bad colour or light of an actor)

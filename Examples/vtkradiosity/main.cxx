@@ -155,7 +155,15 @@ int RunSolve(const SolveArguments& args)
     std::cerr << "warning: " << w << "\n";
   }
   phases.End("load_s");
+  if (args.TwoSided && input)
+  {
+    MarkTwoSided(input); // SPEC's TwoSided cell array on every surface
+  }
   SolveTarget target = input ? SolveTarget(input) : SolveTarget(imported, args.MaxReflectance);
+  if (args.TwoSided && !input)
+  {
+    target.SetTwoSided(); // vtkRadiosityPass::TwoSided
+  }
 
   // The reference: a file of values at the probes, or a closed form the scene
   // has (an imported scene's once the pass has gathered it, RunRadiosityFilter).
@@ -254,11 +262,6 @@ int RunSolve(const SolveArguments& args)
     WriteVtp(solved, args.Output);
     phases.End("write_s");
   }
-  // The meshless field is drawn per pixel by splatting its basis functions.
-  RenderOutputs(args, solved, [filter] { return filter->GetSolution(); }, filter->GetScene(),
-    meshless && !args.Image.empty() ? filter->GetOutput(1) : nullptr, target.Camera());
-  phases.End("render_s");
-
   std::size_t gathered = 0;
   std::vector<RGB> probeValues;
   if ((!args.ProbeOutput.empty() || !reference.empty()) && filter->GetSolver())
@@ -276,8 +279,13 @@ int RunSolve(const SolveArguments& args)
     filter->GetScene());
   phases.End("write_s");
 
-  if (!args.Report.empty())
-  {
+  // The report is written before the picture is drawn (and again after it,
+  // with the render's time): a render that fails loses none of the rest.
+  const auto writeReport = [&]() {
+    if (args.Report.empty())
+    {
+      return;
+    }
     const Scene& scene = filter->GetScene();
     nlohmann::json report;
     report["method"] = vtkRadiosityFilter::GetMethodName(filter->GetResolvedMethod());
@@ -370,6 +378,15 @@ int RunSolve(const SolveArguments& args)
     }
     ReportRunAndHistory(report, phases, stats);
     Check(cli::WriteFileAtomically(args.Report, report.dump(2) + "\n", error), error);
+  };
+  writeReport();
+  if (!args.Image.empty() || !args.Exr.empty())
+  {
+    // The meshless field is drawn per pixel by splatting its basis functions.
+    RenderOutputs(args, solved, [filter] { return filter->GetSolution(); }, filter->GetScene(),
+      meshless && !args.Image.empty() ? filter->GetOutput(1) : nullptr, target.Camera());
+    phases.End("render_s");
+    writeReport();
   }
   std::cerr << "solved " << args.Scene << " (" << EmitterSummary(filter->GetScene()) << "): "
             << stats.Elements << " elements, " << stats.Iterations << " iterations, "
@@ -391,6 +408,9 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--max-iterations", solve.MaxIterations)->check(CLI::NonNegativeNumber);
   solveCommand->add_option("--max-time", solve.MaxTime, "seconds")->check(CLI::NonNegativeNumber);
   solveCommand->add_option("--threads", solve.Threads)->check(CLI::Range(0, 4096));
+  solveCommand->add_flag("--two-sided", solve.TwoSided,
+    "solve every surface on both sides (SPEC TwoSided; default: the side its normal points to, and a glTF "
+    "material's doubleSided)");
   solveCommand->add_option("--max-reflectance", solve.MaxReflectance,
     "display colours (.mtl Kd) at or above it are clamped to it (default 0.95)")
     ->check([](const std::string& v) {
@@ -475,6 +495,8 @@ int main(int argc, char* argv[])
     ->check(CLI::Range(1e-4, 1.0));
   solveCommand->add_option("--reference", solve.Reference,
     "analytic (scenes with a closed form), pathtraced, or a CSV x,y,z,E_r,E_g,E_b at the probes");
+  solveCommand->add_option("--reference-output", solve.ReferenceOutput,
+    "write the analytic or path-traced reference at the probes (CSV x,y,z,E_r,E_g,E_b, for --reference FILE)");
   solveCommand->add_option("--lights", solve.Lights,
     "LIGHTS.json: point, spot and directional lights and a sky (KHR_lights_punctual's fields, "
     "SPEC 'Lights and sky')");

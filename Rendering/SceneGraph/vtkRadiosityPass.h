@@ -50,7 +50,9 @@
  *   right-hand normal points to is solved, or only the back side when the
  *   property culls front faces (FrontfaceCulling). TwoSided on solves every
  *   surface on both sides (SPEC `TwoSided`: twice the triangles), as VTK's
- *   two-sided lighting shows them. The solution is drawn with back faces
+ *   two-sided lighting shows them; vtkRadiosityRendererNode::TWO_SIDED() set
+ *   to 1 in an actor's PropertyKeys does so for that actor alone (the
+ *   command line sets it on a glTF doubleSided material's actors). The solution is drawn with back faces
  *   culled, so a one-sided surface seen from behind is not drawn.
  * - composite input (vtkCompositePolyDataMapper2): each visible leaf one
  *   object with its block colour; blocks with an opacity below 1 are left

@@ -5,6 +5,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -32,6 +33,15 @@ vtkStandardNewMacro(vtkRadiosityPolyDataMapperNode);
 
 namespace
 {
+// Both sides solved: every surface (the pass's TwoSided), or this actor's
+// (TWO_SIDED set to 1 in its PropertyKeys: a glTF material's doubleSided).
+bool IsTwoSided(vtkRadiosityRendererNode* renderer, vtkActor* actor)
+{
+  vtkInformation* keys = actor->GetPropertyKeys();
+  return renderer->GetTwoSided() ||
+    (keys && keys->Has(vtkRadiosityRendererNode::TWO_SIDED()) && keys->Get(vtkRadiosityRendererNode::TWO_SIDED()) != 0);
+}
+
 // Whether two arrays hold the same values bit for bit (name, type, shape).
 bool SameArray(vtkDataArray* a, vtkDataArray* b)
 {
@@ -173,7 +183,7 @@ void vtkRadiosityPolyDataMapperNode::Synchronize(bool prepass)
     return;
   }
   const bool solvable = actorNode->GetSolvable();
-  const int twoSided = rendererNode->GetTwoSided() ? 1 : 0;
+  const int twoSided = IsTwoSided(rendererNode, actor) ? 1 : 0;
   if (solvable)
   {
     // The input as the mapper would draw it (a pipeline runs here, not at
@@ -392,7 +402,7 @@ bool vtkRadiosityPolyDataMapperNode::ConvertPolyData(vtkPolyData* input, vtkActo
   }
 
   // Only the back side is seen: solve that one (the triangles reversed).
-  const bool twoSided = rendererNode->GetTwoSided();
+  const bool twoSided = IsTwoSided(rendererNode, actor);
   const bool backOnly =
     !twoSided && property->GetFrontfaceCulling() && !property->GetBackfaceCulling();
   const bool reverse = mirrored != backOnly;

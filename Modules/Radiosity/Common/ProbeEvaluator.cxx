@@ -51,6 +51,32 @@ Scene AsScene(const SolutionMesh& solution)
   return s;
 }
 
+std::int64_t OnTriangle(const Scene& scene, const Visibility& rays, const Probe& probe, double tolerance)
+{
+  const Vec3 n = glm::normalize(probe.Normal);
+  const double edgeTolerance = 1e-6;
+  // A triangle the probe lies on is within `tolerance` (1e-6 of the
+  // diagonal) of its plane and at most 1e-6 of an edge (so of the diagonal)
+  // outside its edges: well within three tolerances of the probe.
+  return rays.NearestTriangle(probe.Position, 3.0 * tolerance,
+    [&](std::uint32_t e) {
+      const Vec3 nt = scene.Normal(e);
+      if (glm::dot(nt, n) < 0.9)
+      {
+        return std::numeric_limits<double>::infinity();
+      }
+      const Vec3 a = scene.Vertex(e, 0);
+      const double dist = std::fabs(glm::dot(probe.Position - a, nt));
+      double pu, pv, pw;
+      if (dist > tolerance || !ProjectOnTriangle(probe.Position, a, scene.Vertex(e, 1), scene.Vertex(e, 2), pu, pv, pw) ||
+        pu < -edgeTolerance || pv < -edgeTolerance || pw < -edgeTolerance)
+      {
+        return std::numeric_limits<double>::infinity();
+      }
+      return dist;
+    },
+    false);
+}
 }
 
 ProbeEvaluator::ProbeEvaluator(const SolutionMesh& solution, const Scene& scene)
@@ -77,11 +103,7 @@ std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes, cons
 {
   std::vector<RGB> values(probes.size(), RGB(0.0));
   std::atomic<std::size_t> gathered{ 0 };
-  const double edgeTolerance = 1e-6;
-  // A triangle the probe lies on is within Tolerance (1e-6 of the diagonal)
-  // of its plane and at most 1e-6 of an edge (so of the diagonal) outside
-  // its edges: well within three Tolerances of the probe.
-  const double radius = 3.0 * this->Tolerance;
+  const Scene geometry = AsScene(this->Solution);
   tbb::parallel_for(std::size_t(0), probes.size(),
     [&](std::size_t i)
     {
@@ -90,27 +112,7 @@ std::vector<RGB> ProbeEvaluator::Evaluate(const std::vector<Probe>& probes, cons
       double u = 0, v = 0, w = 0;
       // The element whose plane is nearest among those the probe lies on and
       // that face its normal (the Embree point query over the elements).
-      const std::int64_t t = this->Rays->NearestTriangle(probe.Position, radius,
-        [&](std::uint32_t e) {
-          const Vec3& nt = this->Solution.Normals[e];
-          if (glm::dot(nt, n) < 0.9)
-          {
-            return std::numeric_limits<double>::infinity();
-          }
-          const auto& tri = this->Solution.Triangles[e];
-          const Vec3& a = this->Solution.Points[tri.V[0]];
-          const double dist = std::fabs(glm::dot(probe.Position - a, nt));
-          double pu, pv, pw;
-          if (dist > this->Tolerance ||
-            !ProjectOnTriangle(probe.Position, a, this->Solution.Points[tri.V[1]],
-              this->Solution.Points[tri.V[2]], pu, pv, pw) ||
-            pu < -edgeTolerance || pv < -edgeTolerance || pw < -edgeTolerance)
-          {
-            return std::numeric_limits<double>::infinity();
-          }
-          return dist;
-        },
-        false);
+      const std::int64_t t = OnTriangle(geometry, *this->Rays, Probe{ probe.Position, n }, this->Tolerance);
       if (t < 0)
       {
         values[i] = this->Gather(Probe{ probe.Position, n });
@@ -221,33 +223,59 @@ std::vector<RGB> EvaluateOnNearestTriangles(const Scene& scene, const std::vecto
   return values;
 }
 
-std::vector<RGB> EvaluateSensorsOnInputTriangles(const SolutionMesh& surface, const Scene& scene,
+std::vector<RGB> EvaluateSensorsOnInputTriangles(const std::function<SolutionMesh()>& surface, const Scene& scene,
   const std::vector<Probe>& probes,
   const std::function<std::vector<RGB>(const std::vector<Probe>&)>& onTriangles, std::size_t* gathered)
 {
-  // The sensors on a surface are marked (NaN) by the evaluator, then
-  // evaluated together by the method.
-  const ProbeEvaluator evaluator(surface, scene);
-  std::vector<RGB> values = evaluator.Evaluate(probes,
-    [](std::uint32_t, const Vec3&, const Vec3&) { return RGB(std::numeric_limits<double>::quiet_NaN()); });
-  std::vector<Probe> onSurface;
-  std::vector<std::size_t> index;
+  // Which sensors lie on an input triangle, by ProbeEvaluator's rule, found
+  // over the input triangles themselves: the surface (a whole evaluation of
+  // the solution, the lights exact at its samples: minutes on a large
+  // scene) is made only for the sensors in the air that gather it.
+  const Visibility rays(scene, Visibility::AllTriangles(scene));
+  const double tolerance = 1e-6 * std::max(scene.Diagonal(), 1e-300);
+  std::vector<char> onSurface(probes.size(), 0);
+  tbb::parallel_for(std::size_t(0), probes.size(), [&](std::size_t i) {
+    onSurface[i] = OnTriangle(scene, rays, probes[i], tolerance) >= 0;
+  });
+  std::vector<Probe> on, off;
+  std::vector<std::size_t> onIndex, offIndex;
   for (std::size_t i = 0; i < probes.size(); ++i)
   {
-    if (std::isnan(values[i].x))
+    (onSurface[i] ? on : off).push_back(probes[i]);
+    (onSurface[i] ? onIndex : offIndex).push_back(i);
+  }
+  std::vector<RGB> values(probes.size(), RGB(0.0));
+  std::size_t count = 0;
+  if (!off.empty())
+  {
+    // The sensors in the air are gathered from the surface; any the
+    // evaluator still finds on it (NaN) join the method's own.
+    const SolutionMesh mesh = surface();
+    const ProbeEvaluator evaluator(mesh, scene);
+    const std::vector<RGB> fromSurface = evaluator.Evaluate(off,
+      [](std::uint32_t, const Vec3&, const Vec3&) { return RGB(std::numeric_limits<double>::quiet_NaN()); });
+    count = evaluator.GatheredCount();
+    for (std::size_t k = 0; k < off.size(); ++k)
     {
-      onSurface.push_back(probes[i]);
-      index.push_back(i);
+      if (std::isnan(fromSurface[k].x))
+      {
+        on.push_back(off[k]);
+        onIndex.push_back(offIndex[k]);
+      }
+      else
+      {
+        values[offIndex[k]] = fromSurface[k];
+      }
     }
   }
-  const std::vector<RGB> fromMethod = onTriangles(onSurface);
-  for (std::size_t k = 0; k < index.size(); ++k)
+  const std::vector<RGB> fromMethod = onTriangles(on);
+  for (std::size_t k = 0; k < onIndex.size(); ++k)
   {
-    values[index[k]] = fromMethod[k];
+    values[onIndex[k]] = fromMethod[k];
   }
   if (gathered)
   {
-    *gathered = evaluator.GatheredCount();
+    *gathered = count;
   }
   return values;
 }

@@ -38,11 +38,13 @@ class ProbeEvaluator;
 
 /**
  * Sensors of a method whose solution lives on the input triangles (meshless,
- * face cluster): a sensor on a surface takes `onTriangles` (the method's own
- * nearest-triangle evaluation), a sensor in the air (a working plane) is
- * gathered from `surface` (ProbeEvaluator). `gathered`: how many were.
+ * face cluster): a sensor on a surface (ProbeEvaluator's rule, over the
+ * input triangles) takes `onTriangles` (the method's own nearest-triangle
+ * evaluation), a sensor in the air (a working plane) is gathered from the
+ * solution's surface (ProbeEvaluator), which `surface` makes only when some
+ * sensor needs it. `gathered`: how many were.
  */
-std::vector<RGB> EvaluateSensorsOnInputTriangles(const SolutionMesh& surface, const Scene& scene,
+std::vector<RGB> EvaluateSensorsOnInputTriangles(const std::function<SolutionMesh()>& surface, const Scene& scene,
   const std::vector<Probe>& probes,
   const std::function<std::vector<RGB>(const std::vector<Probe>&)>& onTriangles, std::size_t* gathered);
 

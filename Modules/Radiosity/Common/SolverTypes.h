@@ -51,7 +51,12 @@ enum class StopReason
   IterationLimit,
   TimeLimit,
   Aborted,
-  NoEmitters
+  NoEmitters,
+  /// The iteration's residual grew where the physics makes it shrink (a
+  /// reflectance below 1 makes every bounce carry less power than the one
+  /// before): the answer would be a plausible wrong one, so the solve stops
+  /// and says so (SolverStatistics::StopDetail) instead of "converged".
+  Diverged
 };
 
 inline const char* ToString(StopReason r)
@@ -68,6 +73,8 @@ inline const char* ToString(StopReason r)
       return "aborted";
     case StopReason::NoEmitters:
       return "no emitters";
+    case StopReason::Diverged:
+      return "diverged";
   }
   return "unknown";
 }
@@ -93,6 +100,7 @@ inline bool ReachedLimit(
 struct SolverStatistics
 {
   StopReason Stop = StopReason::Converged;
+  std::string StopDetail; ///< for Diverged: what grew, from what to what, at which iteration
   long long Iterations = 0;
   std::size_t Elements = 0;      ///< leaf elements at the end
   std::size_t Subdivisions = 0;

@@ -28,7 +28,7 @@ std::vector<ProductArray> FaceClusterMethod::SurfacePointArrays() const
 
 std::vector<RGB> FaceClusterMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const
 {
-  return EvaluateSensorsOnInputTriangles(this->Surface(), *this->SceneRef, probes,
+  return EvaluateSensorsOnInputTriangles([this]() { return this->Surface(); }, *this->SceneRef, probes,
     [this](const std::vector<Probe>& onSurface) { return this->Solver.Evaluate(onSurface); }, gathered);
 }
 

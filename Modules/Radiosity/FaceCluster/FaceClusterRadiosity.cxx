@@ -1,5 +1,6 @@
 #include "Radiosity/FaceCluster/FaceClusterRadiosity.h"
 #include "Radiosity/FaceCluster/FaceClusterLightBounds.h"
+#include "Radiosity/Common/Divergence.h"
 #include "Radiosity/Common/Enclosure.h"
 #include "Radiosity/Common/MemoryBudget.h"
 
@@ -571,6 +572,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       ++this->Iteration;
       const double relative = residual / brightest;
       powers.push_back(this->NextPower);
+      stats.UnshotPowerW = relative * emitted;
       ConvergenceRow row;
       row.Iteration = this->Iteration;
       row.TimeSeconds = clock.Seconds();
@@ -585,6 +587,10 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
       if (relative < this->Settings.Tolerance)
       {
         stats.Stop = StopReason::Converged;
+        break;
+      }
+      if (SeriesDiverges(powers, "face cluster radiosity's bounce power", stats))
+      {
         break;
       }
       // A steady geometric decay: the tail of the series is added at once.
@@ -610,7 +616,7 @@ SolverStatistics FaceClusterRadiosity::Solve(const ProgressCallback& progress)
     }
     // Aitken: the increments still to come, r / (1 - r) times the last one.
     const std::size_t k = powers.size();
-    if (stats.Stop != StopReason::Aborted && k >= 2 && powers[k - 2] > 0.0)
+    if (stats.Stop != StopReason::Aborted && stats.Stop != StopReason::Diverged && k >= 2 && powers[k - 2] > 0.0)
     {
       const double r = powers[k - 1] / powers[k - 2];
       if (r > 0.0 && r < 1.0)

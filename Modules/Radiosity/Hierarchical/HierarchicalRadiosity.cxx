@@ -468,8 +468,10 @@ SolverStatistics HierarchicalRadiosity::Solve(const ProgressCallback& progress)
       row.TimeSeconds = elapsed;
       row.UnshotPowerW = remaining;
       // Power that leaves the surfaces and is received nowhere: what escapes
-      // an open scene, and the form factor error of a closed one.
-      double received = 0.0;
+      // an open scene, and the form factor error of a closed one. The
+      // lights' and the sky's direct light is received without having left
+      // a surface: only the rest of the irradiance was sent by the surfaces.
+      double received = -stats.LightPowerW;
       for (std::uint32_t e = 0; e < mesh.Elements().size(); ++e)
       {
         if (mesh[e].IsLeaf())

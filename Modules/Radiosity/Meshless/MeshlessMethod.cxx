@@ -25,7 +25,7 @@ SolutionMesh MeshlessMethod::SurfaceOf(
 std::vector<RGB> MeshlessMethod::EvaluateProbes(const std::vector<Probe>& probes, std::size_t* gathered) const
 {
   // The sensors in the air gather the surface with the lights exact at its samples.
-  return EvaluateSensorsOnInputTriangles(this->Solver.GatherSurface(), *this->SceneRef, probes,
+  return EvaluateSensorsOnInputTriangles([this]() { return this->Solver.GatherSurface(); }, *this->SceneRef, probes,
     [this](const std::vector<Probe>& onSurface) { return this->Solver.Evaluate(onSurface); }, gathered);
 }
 

@@ -1,6 +1,7 @@
 #include "Radiosity/Progressive/ProgressiveRadiosity.h"
 
 #include "Radiosity/Common/DirectLighting.h"
+#include "Radiosity/Common/Divergence.h"
 #include "Radiosity/Common/ErrorMetrics.h"
 #include "Radiosity/Common/Stopwatch.h"
 #include "Radiosity/Common/ThreadLimit.h"
@@ -664,6 +665,7 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       this->Settings.ErrorProbes, this->Settings.ErrorReference, this->SceneInfo.Diagonal);
     stats.ErrorProbesTracked = tracker ? tracker->Tracked() : 0;
     std::vector<RGB> nodePower(mesh.Elements().size(), RGB(0.0));
+    double lowestUnshot = std::numeric_limits<double>::infinity();
     stats.Stop = StopReason::IterationLimit;
     for (long long iteration = 0;; ++iteration)
     {
@@ -728,6 +730,11 @@ SolverStatistics ProgressiveRadiosity::Solve(const ProgressCallback& progress)
       if (relative <= this->Settings.Tolerance)
       {
         stats.Stop = StopReason::Converged;
+        break;
+      }
+      if (ResidualRoseAboveItsLowest(signedUnshot, lowestUnshot, emitted, iteration,
+            "progressive refinement's signed unshot power", stats))
+      {
         break;
       }
       if (ReachedLimitOnAnyRank(ShareOrAlone(this->Settings.Share), iteration, this->Settings.MaxIterations, elapsed,

@@ -12,6 +12,8 @@
 // - a composite mapper's blocks: a hidden block left out, a block colour
 //   replacing the property's;
 // - a wireframe actor and a headlight are not gathered;
+// - an actor whose PropertyKeys set vtkRadiosityRendererNode::TWO_SIDED is
+//   solved on both sides (the TwoSided array), the others on one;
 // - Method Auto (the default) solves this glossy scene by face cluster
 //   radiosity and draws it with the vector irradiance mapper;
 // - textures: a classic texture (as vtkOBJImporter sets map_Kd), two texels
@@ -234,6 +236,11 @@ int TestRadiosityPassMaterials(int, char*[])
   pbrTextured->GetProperty()->SetBaseColorTexture(Texture(1, baseTexel, true));
   pbrTextured->GetProperty()->SetEmissiveFactor(1.0, 1.0, 1.0);
   pbrTextured->GetProperty()->SetEmissiveTexture(Texture(1, emissiveTexel, true));
+  // actor 10: two-sided by its own PropertyKeys (a glTF doubleSided material).
+  vtkActor* twoSided = Add(renderer, Quad(18, 0));
+  vtkNew<vtkInformation> keys;
+  keys->Set(vtkRadiosityRendererNode::TWO_SIDED(), 1);
+  twoSided->SetPropertyKeys(keys);
 
   vtkNew<vtkRadiosityPass> pass;
   pass->SetMethod(vtkRadiosityFilter::Progressive);
@@ -247,7 +254,20 @@ int TestRadiosityPassMaterials(int, char*[])
   std::cout << graph->GetSceneInput()->GetNumberOfBlocks() << " objects, "
             << graph->GetNumberOfTriangles() << " triangles, "
             << graph->GetSceneLights()->GetNumberOfItems() << " scene lights\n";
-  ok &= Check(graph->GetSceneInput()->GetNumberOfBlocks() == 9, "9 objects expected");
+  ok &= Check(graph->GetSceneInput()->GetNumberOfBlocks() == 10, "10 objects expected");
+  // The two-sided actor: its quad's two triangles and their reversed twins
+  // (TwoSided 1), the one-sided ones without the array.
+  if (vtkPolyData* b = Block(pass, "actor 10 (vtkOpenGLActor)"))
+  {
+    vtkDataArray* sides = b->GetCellData()->GetArray("TwoSided");
+    ok &= Check(sides && sides->GetTuple1(0) == 1.0, "actor 10 is not marked TwoSided");
+  }
+  else
+  {
+    ok &= Check(false, "no object 'actor 10 (vtkOpenGLActor)'");
+  }
+  ok &= Check(!Block(pass, "actor 0 (vtkOpenGLActor)")->GetCellData()->GetArray("TwoSided"),
+    "actor 0 was made two-sided");
   ok &= Check(graph->GetSceneLights()->GetNumberOfItems() == 0, "the headlight was gathered");
 
   const auto reflectance = [&](const std::string& name, vtkIdType cell) -> const double*
