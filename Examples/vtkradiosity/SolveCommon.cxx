@@ -43,6 +43,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -223,6 +226,30 @@ void WriteVtp(vtkPolyData* data, const std::string& file)
     error);
 }
 
+namespace
+{
+// VTK's X window aborts the process when it cannot open its display ("bad X
+// server connection": no DISPLAY, or an Xvfb resetting as its last client
+// left). Everything else is written by then (the picture is drawn last):
+// the abort becomes an error that says so, exit status 1.
+extern "C" void RenderAborted(int)
+{
+  static const char message[] =
+    "error: the picture could not be drawn (VTK aborted: no display?); the solution, the sensors' values "
+    "and the report asked for are written\n";
+  const ssize_t ignored = write(2, message, sizeof message - 1);
+  (void)ignored;
+  _exit(1);
+}
+
+struct AbortIsARenderError
+{
+  AbortIsARenderError() { this->Previous = std::signal(SIGABRT, RenderAborted); }
+  ~AbortIsARenderError() { std::signal(SIGABRT, this->Previous); }
+  void (*Previous)(int) = nullptr;
+};
+}
+
 /// --image through vtkRadiosityView (which draws the quadratic interpolants
 /// per pixel when the polydata has them, and splats `shepardField` per pixel
 /// when given) and --exr by ray casting `radiance` from the same camera;
@@ -236,6 +263,7 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved,
     return;
   }
   std::string error;
+  const AbortIsARenderError guard;
   vtkNew<vtkRadiosityView> view;
   view->SetInputData(solved);
   view->SetShepardField(shepardField);

@@ -287,6 +287,15 @@ int RunSolve(const SolveArguments& args)
       return;
     }
     const Scene& scene = filter->GetScene();
+    // The power balance: the method's own, else from its surface solution
+    // (face clusters and meshless keep none while they solve), where
+    // escaped = emitted - absorbed (SPEC).
+    std::pair<double, double> balance(stats.AbsorbedPowerW, stats.EscapedPowerW);
+    if (!(stats.AbsorbedPowerW > 0.0) && stats.EmittedPowerW > 0.0 && filter->GetSolution())
+    {
+      balance.first = AbsorbedPower(*filter->GetSolution(), scene);
+      balance.second = stats.EmittedPowerW - balance.first;
+    }
     nlohmann::json report;
     report["method"] = vtkRadiosityFilter::GetMethodName(filter->GetResolvedMethod());
     report["method_choice"] = MethodChoiceReport(args.Method, filter);
@@ -318,7 +327,7 @@ int RunSolve(const SolveArguments& args)
       { "form_factors", { { "analytic", stats.AnalyticFormFactors }, { "disc", stats.DiscFormFactors } } },
       { "relative_unshot_power",
         stats.EmittedPowerW > 0 ? stats.UnshotPowerW / stats.EmittedPowerW : 0.0 },
-      { "absorbed_power_W", stats.AbsorbedPowerW }, { "escaped_power_W", stats.EscapedPowerW },
+      { "absorbed_power_W", balance.first }, { "escaped_power_W", balance.second },
       { "probes", probes.size() }, { "probes_gathered_off_surface", gathered } };
     report["parameters"]["memory_budget_bytes"] = ResolveMemoryBudget(args.MaxMemory * 1e9);
     if (meshless)

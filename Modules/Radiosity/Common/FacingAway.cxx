@@ -6,11 +6,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
 #include <mutex>
+#include <set>
 #include <vector>
 
 namespace radiosity
@@ -103,6 +105,27 @@ FacingAway FindFacingAway(const Scene& scene)
       emitterBox.emplace_back(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
     }
   }
+  // A two-sided surface is two triangles on the same points, one reversed
+  // (SPEC TwoSided): neither faces away from anything the pair does not.
+  std::set<std::array<std::uint32_t, 3>> seen, twins;
+  for (const Triangle& t : scene.Triangles)
+  {
+    std::array<std::uint32_t, 3> key{ t.V[0], t.V[1], t.V[2] };
+    std::sort(key.begin(), key.end());
+    if (!seen.insert(key).second)
+    {
+      twins.insert(key);
+    }
+  }
+  const auto twoSided = [&](std::size_t t) {
+    if (twins.empty())
+    {
+      return false;
+    }
+    std::array<std::uint32_t, 3> key{ scene.Triangles[t].V[0], scene.Triangles[t].V[1], scene.Triangles[t].V[2] };
+    std::sort(key.begin(), key.end());
+    return twins.count(key) > 0;
+  };
   const Visibility rays(scene, Visibility::AllTriangles(scene));
   std::mutex merge;
   std::map<int, double> byObject;
@@ -111,7 +134,7 @@ FacingAway FindFacingAway(const Scene& scene)
     std::vector<std::size_t> owner;
     for (std::size_t t = range.begin(); t != range.end(); ++t)
     {
-      if (FacesASource(scene, t, emitterBox))
+      if (FacesASource(scene, t, emitterBox) || twoSided(t))
       {
         continue;
       }

@@ -64,4 +64,22 @@ SolutionMesh ExtractSolution(const ElementMesh& mesh)
   }
   return out;
 }
+double AbsorbedPower(const SolutionMesh& solution, const Scene& scene)
+{
+  double absorbed = 0.0;
+  for (std::size_t t = 0; t < solution.Triangles.size() && t < solution.CellIrradiance.size(); ++t)
+  {
+    const std::uint32_t source = t < solution.SourceTriangle.size() ? solution.SourceTriangle[t] : 0;
+    if (source >= scene.Materials.size())
+    {
+      continue;
+    }
+    const Triangle& tri = solution.Triangles[t];
+    const double area = 0.5 *
+      glm::length(glm::cross(solution.Points[tri.V[1]] - solution.Points[tri.V[0]],
+        solution.Points[tri.V[2]] - solution.Points[tri.V[0]]));
+    absorbed += Mean((RGB(1.0) - scene.Materials[source].Reflectance) * solution.CellIrradiance[t]) * area;
+  }
+  return absorbed;
+}
 } // namespace radiosity

@@ -25,6 +25,10 @@ struct SolutionMesh
 };
 
 SolutionMesh ExtractSolution(const ElementMesh& mesh);
+/// The power the surfaces of `solution` absorb, sum (1 - rho) E A over its
+/// triangles (rho of each one's SourceTriangle in `scene`, mean over RGB):
+/// the power balance of a method that does not keep it while it solves.
+double AbsorbedPower(const SolutionMesh& solution, const Scene& scene);
 
 /// Irradiance inside element `t` at barycentric (u, v, w): linear through the
 /// corner samples plus the cubic bubble 27uvw that also matches the centre sample.

@@ -275,9 +275,16 @@ TransferCoupling ComputeCoupling(const TransferEnd& receiver, const TransferEnd&
       shadowed[p] |= v < 1.0 ? 1 : 0;
       visibleSum += er.Weights[q] * v;
       weightSum += er.Weights[q];
-      // The point kernel m(x, y) dA_y of eq. 3 with the node's own normal.
+      // The point kernel m(x, y) dA_y of eq. 3 with the node's own normal,
+      // as the form factor of a disc of the node's area w facing x, w cos /
+      // (pi d^2 + w) (Wallace et al. 1989), not w cos / (pi d^2): the two
+      // agree to w / (pi d^2) where the node is small for its distance, and
+      // the disc's never exceeds 1 where it is not. Between parts that touch
+      // or interpenetrate (a chair's legs through the classroom's floor) a
+      // node a micrometre from the point gave a form factor of 1e6, and the
+      // solve diverged (bounce power 2.8 kW to 67 kW in one iteration).
       const double cosine = std::max(-glm::dot(er.Normals[q], dir), 0.0);
-      const double g = er.Weights[q] * v * cosine / (Pi * d2);
+      const double g = er.Weights[q] * v * cosine / (Pi * d2 + er.Weights[q]);
       for (int b = exactConstant ? 1 : 0; b < nb; ++b)
       {
         atNode[p * nb + b] += (er.Phi[q * er.Functions + b] * g) * dir;
@@ -289,6 +296,22 @@ TransferCoupling ComputeCoupling(const TransferEnd& receiver, const TransferEnd&
         const double scale = v / (Pi * d2);
         upper[p] = std::max(upper[p], scale * ri.MaxProjectedArea(dir) * ej.MaxProjectedArea(-dir));
         lower[p] = std::min(lower[p], scale * ri.MinProjectedArea(dir) * ej.MinProjectedArea(-dir));
+      }
+    }
+    // A unit radiosity brings at most the whole hemisphere, |F| <= 1: where
+    // the nodes' discs overlap (a point next to a large curved cluster, or
+    // inside one that interpenetrates its surface) their sum exceeded that
+    // by 2.3 times on the classroom, and each bounce created light. The
+    // kernel is scaled back to the hemisphere's worth.
+    if (!exactConstant)
+    {
+      const double magnitude = glm::length(atNode[p * nb]);
+      if (magnitude > 1.0)
+      {
+        for (int b = 0; b < nb; ++b)
+        {
+          atNode[p * nb + b] /= magnitude;
+        }
       }
     }
     if (exactConstant)

@@ -106,11 +106,24 @@ private:
 };
 } // namespace
 
+// One level's points for the support searches, a k-d tree per group and
+// radius class. A search must reach the largest support it can meet, so one
+// tree per level, searched to the level's largest radius, returned every
+// point within that radius of any group: a few isolated points with wide
+// supports (a lamp's) made each query of the office's walls return
+// thousands of matches to keep a dozen, and the searches were 84% of the
+// meshless solve (perf, one thread). Here a query searches only its group's
+// trees, each to its own largest radius, and the radii of one class are
+// within a factor 2 of each other.
 struct PointHierarchy::Index
 {
-  Cloud Points;
-  std::unique_ptr<Tree> KdTree;
-  double MaxRadius = 0.0;
+  struct Bucket
+  {
+    Cloud Points;
+    std::unique_ptr<Tree> KdTree;
+    double MaxRadius = 0.0;
+  };
+  std::unordered_map<std::uint32_t, std::vector<Bucket>> Groups;
 };
 
 double MaxPoissonDiskPoints(const Scene& scene, const PointPlacementOptions& options)
@@ -283,17 +296,49 @@ PointHierarchy::PointHierarchy(const Scene& scene, const PointPlacementOptions& 
   for (int level = 0; level < levels; ++level)
   {
     auto index = std::make_unique<Index>();
-    index->Points.Points = &this->All;
-    index->Points.Begin = this->LevelStart[level];
-    index->Points.End = this->LevelStart[level + 1];
-    for (std::size_t i = index->Points.Begin; i < index->Points.End; ++i)
+    // Each group's points by radius class: floor(log2(r / smallest r)).
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> members;
+    std::unordered_map<std::uint32_t, double> smallest;
+    for (std::size_t i = this->LevelStart[level]; i < this->LevelStart[level + 1]; ++i)
     {
-      index->MaxRadius = std::max(index->MaxRadius, this->All[i].Radius);
+      const MeshlessPoint& p = this->All[i];
+      members[p.Group].push_back(static_cast<std::uint32_t>(i));
+      const auto it = smallest.find(p.Group);
+      smallest[p.Group] = it == smallest.end() ? p.Radius : std::min(it->second, p.Radius);
     }
-    index->KdTree = std::make_unique<Tree>(3, index->Points, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    if (index->Points.End > index->Points.Begin)
+    for (auto& [group, ids] : members)
     {
-      index->KdTree->buildIndex();
+      std::vector<std::vector<std::uint32_t>> classes;
+      const double base = std::max(smallest[group], 1e-300);
+      for (std::uint32_t i : ids)
+      {
+        const double ratio = std::max(this->All[i].Radius / base, 1.0);
+        const std::size_t c = std::min<std::size_t>(static_cast<std::size_t>(std::log2(ratio)), 64);
+        if (classes.size() <= c)
+        {
+          classes.resize(c + 1);
+        }
+        classes[c].push_back(i);
+      }
+      std::vector<Index::Bucket>& buckets = index->Groups[group];
+      buckets.reserve(classes.size()); // a tree keeps a reference to its bucket's cloud
+      for (std::vector<std::uint32_t>& subset : classes)
+      {
+        if (subset.empty())
+        {
+          continue;
+        }
+        buckets.emplace_back();
+        Index::Bucket& b = buckets.back();
+        for (std::uint32_t i : subset)
+        {
+          b.MaxRadius = std::max(b.MaxRadius, this->All[i].Radius);
+        }
+        b.Points.Points = &this->All;
+        b.Points.Subset = std::move(subset);
+        b.KdTree = std::make_unique<Tree>(3, b.Points, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+        b.KdTree->buildIndex();
+      }
     }
     this->Indices.push_back(std::move(index));
   }
@@ -321,39 +366,36 @@ void PointHierarchy::Search(int level, std::uint32_t group, const Vec3& c, doubl
     return;
   }
   const Index& index = *this->Indices[static_cast<std::size_t>(level)];
-  if (index.Points.End == index.Points.Begin)
+  const auto found = index.Groups.find(group);
+  if (found == index.Groups.end())
   {
     return;
   }
   thread_local std::vector<std::pair<std::size_t, double>> matches;
-  matches.clear();
-  const double q[3] = { c.x, c.y, c.z };
-  const double far = index.MaxRadius + reach;
-  // Unsorted: the search radius is the level's largest support, so a scene
-  // of many objects (one group each) or one wide point returns many times
-  // the matches kept, and sorting them all was 45% of a gather on a
-  // 115-object engine. Only the kept ones are sorted, nearest first (ties by
-  // index, so that the order does not depend on the sort).
-  nanoflann::SearchParams params;
-  params.sorted = false;
-  index.KdTree->radiusSearch(q, far * far, matches, params);
-  const std::size_t first = out.size();
   thread_local std::vector<std::pair<double, std::uint32_t>> kept;
   kept.clear();
-  for (const auto& m : matches)
+  const std::size_t first = out.size();
+  const double q[3] = { c.x, c.y, c.z };
+  nanoflann::SearchParams params;
+  params.sorted = false;
+  for (const Index::Bucket& bucket : found->second)
   {
-    const std::size_t j = index.Points.Global(m.first);
-    const MeshlessPoint& p = this->All[j];
-    const double r = p.Radius + reach;
-    if (p.Group == group && m.second < r * r)
+    const double far = bucket.MaxRadius + reach;
+    matches.clear();
+    bucket.KdTree->radiusSearch(q, far * far, matches, params);
+    for (const auto& m : matches)
     {
-      kept.emplace_back(m.second, static_cast<std::uint32_t>(j));
+      const std::size_t j = bucket.Points.Global(m.first);
+      const double r = this->All[j].Radius + reach;
+      if (m.second < r * r)
+      {
+        kept.emplace_back(sorted ? m.second : 0.0, static_cast<std::uint32_t>(j));
+      }
     }
   }
-  if (sorted)
-  {
-    std::sort(kept.begin(), kept.end());
-  }
+  // Sorted: nearest first, ties by index (the solve's summation order).
+  // Unsorted: by index, so that the order does not depend on the trees.
+  std::sort(kept.begin(), kept.end());
   out.resize(first + kept.size());
   for (std::size_t k = 0; k < kept.size(); ++k)
   {

@@ -52,6 +52,13 @@ TEST(Divergence, GrowthIsDivergence)
       << stats.StopDetail;
   }
   {
+    // Near convergence, far below the largest bounce: a wobble, not divergence.
+    SolverStatistics stats;
+    EXPECT_FALSE(SeriesDiverges({ 2800.0, 100.0, 0.023, 0.059 }, "p", stats));
+    EXPECT_FALSE(SeriesDiverges({ 2800.0, 1.0, 2.0, 3.0, 4.0 }, "p", stats));
+    EXPECT_TRUE(SeriesDiverges({ 2800.0, 1.0, 2.0, 3.0, 29.0 }, "p", stats));
+  }
+  {
     SolverStatistics stats;
     EXPECT_TRUE(SeriesDiverges({ 1.0, std::numeric_limits<double>::quiet_NaN() }, "p", stats));
     EXPECT_NE(stats.StopDetail.find("not finite at iteration 2"), std::string::npos) << stats.StopDetail;

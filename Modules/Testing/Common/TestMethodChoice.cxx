@@ -3,6 +3,7 @@
 // is measured by the error-against-run-time bench (vtkradiosity.bench-quick
 // checks auto within 1.5x of the best at equal time).
 #include "Radiosity/Common/MethodChoice.h"
+#include "Radiosity/Scenes/OfficeScene.h"
 #include "Radiosity/Scenes/SceneGenerators.h"
 
 #include <gtest/gtest.h>
@@ -52,6 +53,25 @@ TEST(MethodChoice, LargeScenesAreSolvedByMeshlessRadiosity)
     EXPECT_NE(choice.Why.find(std::to_string(n) + " triangles, more than 2048"), std::string::npos)
       << choice.Why;
   }
+}
+
+TEST(MethodChoice, DaylitScenesAreSolvedByMeshlessRadiosity)
+{
+  // The office: 738 triangles, a lamp and a CIE overcast sky, no emitter.
+  const Scene office = MakeOfficeScene();
+  const MethodChoice choice = ChooseMethod(office);
+  EXPECT_EQ(choice.Method, SolutionMethod::Meshless);
+  EXPECT_EQ(choice.Rule, "sky");
+  EXPECT_NE(choice.Why.find(std::to_string(office.Triangles.size()) + " triangles lit by a sky"), std::string::npos)
+    << choice.Why;
+  // Its lamp alone (no sky): the small-scene rule.
+  Scene lamp = office;
+  lamp.Lighting.SkyLight = Sky();
+  EXPECT_EQ(ChooseMethod(lamp).Rule, "small");
+  // A sky over a scene with an emitting triangle: the emitters' rules.
+  Scene both = MakeCornellBox();
+  both.Lighting.SkyLight = office.Lighting.SkyLight;
+  EXPECT_EQ(ChooseMethod(both).Rule, "small");
 }
 
 TEST(MethodChoice, AGlossyPartIsDrawnFromFaceClusterRadiosity)

@@ -33,8 +33,14 @@ TEST(OfficeScene, UnobstructedIrradianceOfTheOvercastSky)
 
 namespace
 {
-constexpr double EscapedShare = 0.01; // measured: TODO
-constexpr double BalanceBound = 0.05; // measured: TODO
+// What leaves through the window, of what the sky brings: measured 0.0613
+// (progressive) and 0.0622 (hierarchical); 0 in both while hierarchical
+// counted the sky's direct light as sent by the surfaces (it reported minus
+// the absorbed power).
+constexpr double EscapedShare = 0.04;
+// |emitted - absorbed - escaped| / emitted: measured 2.7e-4 (progressive)
+// and 0 (hierarchical, whose escaped power is the balance's rest).
+constexpr double BalanceBound = 2e-3;
 /// Daylight only (the lamp off): the daylight factor E / E_unobstructed on
 /// every third sensor of the working-plane grid (0.75 m above the floor, in
 /// the air: every method gathers them from its surface solution), against
@@ -79,7 +85,8 @@ void CheckDaylightFactor(const char* name,
   // The power balance (SPEC report): what the lights and the sky bring is
   // absorbed or leaves through the window; none of it is created.
   std::cout << name << ": emitted " << stats.EmittedPowerW << " W, absorbed " << stats.AbsorbedPowerW
-            << " W, escaped " << stats.EscapedPowerW << " W\n";
+            << " W, escaped " << stats.EscapedPowerW << " W; absorbed by its surface "
+            << AbsorbedPower(solver->Surface(), *scene) << " W\n";
   if (stats.AbsorbedPowerW > 0.0)
   {
     EXPECT_GT(stats.EscapedPowerW, EscapedShare * stats.EmittedPowerW) << name;
