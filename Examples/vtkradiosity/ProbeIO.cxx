@@ -106,7 +106,10 @@ bool ReadSixColumns(const std::string& csv, const char* const names[6], const st
     const std::vector<std::string> fields = SplitFields(line);
     if (!header)
     {
-      bool ok = fields.size() == 6 || (seventh && fields.size() == 7 && fields[6] == seventh);
+      // `seventh`: the names a seventh column may have, '|' between them.
+      bool ok = fields.size() == 6 ||
+        (seventh && fields.size() == 7 &&
+          ("|" + std::string(seventh) + "|").find("|" + fields[6] + "|") != std::string::npos);
       for (std::size_t i = 0; ok && i < 6; ++i)
       {
         ok = fields[i] == names[i];
@@ -185,8 +188,9 @@ bool ReadProbeValues(const std::string& csv, const std::vector<Probe>& probes,
   values.clear();
   static const char* const names[6] = { "x", "y", "z", "E_r", "E_g", "E_b" };
   std::vector<CsvRow> rows;
-  // A probe output with a sky has the daylight factor too (WriteProbeValues).
-  if (!ReadSixColumns(csv, names, "reference", rows, error, "DF"))
+  // A probe output with a sky has the daylight factor too, a computed
+  // reference its standard errors (WriteProbeValues).
+  if (!ReadSixColumns(csv, names, "reference", rows, error, "DF|SE"))
   {
     return false;
   }
@@ -220,7 +224,8 @@ double DaylightFactor(const RGB& irradiance, const RGB& unobstructed)
 }
 
 bool WriteProbeValues(const std::string& csv, const std::vector<Probe>& probes,
-  const std::vector<RGB>& values, std::string& error, const RGB* skyUnobstructed)
+  const std::vector<RGB>& values, std::string& error, const RGB* skyUnobstructed,
+  const std::vector<double>* standardErrors)
 {
   const std::string prefix = "cannot write probe values '" + csv + "': ";
   if (probes.size() != values.size())
@@ -253,7 +258,10 @@ bool WriteProbeValues(const std::string& csv, const std::vector<Probe>& probes,
     return false;
   }
   // %.17g: every double prints so that it reads back to the same bits.
-  bool ok = std::fputs(skyUnobstructed ? "x,y,z,E_r,E_g,E_b,DF\n" : "x,y,z,E_r,E_g,E_b\n", out) >= 0;
+  bool ok = std::fputs(skyUnobstructed ? "x,y,z,E_r,E_g,E_b,DF\n"
+                        : standardErrors ? "x,y,z,E_r,E_g,E_b,SE\n"
+                                         : "x,y,z,E_r,E_g,E_b\n",
+              out) >= 0;
   for (std::size_t i = 0; ok && i < probes.size(); ++i)
   {
     const Vec3& p = probes[i].Position;
@@ -262,6 +270,10 @@ bool WriteProbeValues(const std::string& csv, const std::vector<Probe>& probes,
     if (ok && skyUnobstructed)
     {
       ok = std::fprintf(out, ",%.17g", DaylightFactor(e, *skyUnobstructed)) > 0;
+    }
+    else if (ok && standardErrors)
+    {
+      ok = std::fprintf(out, ",%.17g", i < standardErrors->size() ? (*standardErrors)[i] : 0.0) > 0;
     }
     ok = ok && std::fputs("\n", out) >= 0;
   }

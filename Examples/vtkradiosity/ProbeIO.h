@@ -39,8 +39,11 @@ bool ReadProbeValues(const std::string& csv, const std::vector<Probe>& probes,
  * sky") a seventh column `DF`, the daylight factor
  * luminance(E) / luminance(E_unobstructed) (DaylightFactor).
  */
+/// `standardErrors` (instead of a sky): a seventh column SE, each value's
+/// relative standard error (a path-traced reference, --reference-output).
 bool WriteProbeValues(const std::string& csv, const std::vector<Probe>& probes,
-  const std::vector<RGB>& values, std::string& error, const RGB* skyUnobstructed = nullptr);
+  const std::vector<RGB>& values, std::string& error, const RGB* skyUnobstructed = nullptr,
+  const std::vector<double>* standardErrors = nullptr);
 
 /// The daylight factor (CIE/Radiance convention): the ratio of the
 /// luminance-weighted channels 0.2126 R + 0.7152 G + 0.0722 B of E and of

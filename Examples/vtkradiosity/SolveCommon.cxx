@@ -450,6 +450,7 @@ void ComputeReference(const SolveArguments& args, const Scene& scene, const std:
 {
   std::string error;
   reference.clear();
+  std::vector<double> standardErrors; // path traced: each value's, relative
   if (args.Reference == "analytic")
   {
     AnalyticReference analytic;
@@ -469,10 +470,9 @@ void ComputeReference(const SolveArguments& args, const Scene& scene, const std:
     for (const ReferenceValue& v : tracer.Irradiance(probes))
     {
       reference.push_back(v.Value);
-      if (Luminance(v.Value) > 0)
-      {
-        worst = std::max(worst, Luminance(v.StandardError) / Luminance(v.Value));
-      }
+      const double relative = Luminance(v.Value) > 0 ? Luminance(v.StandardError) / Luminance(v.Value) : 0.0;
+      standardErrors.push_back(relative);
+      worst = std::max(worst, relative);
     }
     char kind[160];
     std::snprintf(kind, sizeof kind,
@@ -484,7 +484,9 @@ void ComputeReference(const SolveArguments& args, const Scene& scene, const std:
   {
     // Kept for later runs' --reference FILE: a converged path-traced
     // reference costs more than the solves it measures.
-    Check(cli::WriteProbeValues(args.ReferenceOutput, probes, reference, error), error);
+    Check(cli::WriteProbeValues(args.ReferenceOutput, probes, reference, error, nullptr,
+            standardErrors.empty() ? nullptr : &standardErrors),
+      error);
   }
 }
 

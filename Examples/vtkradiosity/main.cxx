@@ -505,7 +505,8 @@ int main(int argc, char* argv[])
   solveCommand->add_option("--reference", solve.Reference,
     "analytic (scenes with a closed form), pathtraced, or a CSV x,y,z,E_r,E_g,E_b at the probes");
   solveCommand->add_option("--reference-output", solve.ReferenceOutput,
-    "write the analytic or path-traced reference at the probes (CSV x,y,z,E_r,E_g,E_b, for --reference FILE)");
+    "write the analytic or path-traced reference at the probes (CSV x,y,z,E_r,E_g,E_b, path traced with its "
+    "relative standard error SE, for --reference FILE)");
   solveCommand->add_option("--lights", solve.Lights,
     "LIGHTS.json: point, spot and directional lights and a sky (KHR_lights_punctual's fields, "
     "SPEC 'Lights and sky')");
