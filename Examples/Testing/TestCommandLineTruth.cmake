@@ -4,6 +4,7 @@
 #   solved with the warning naming that light, which is left out and counted
 #   in the report (scene.import.file_lights_left_out); the good light lights
 #   the floor as before;
+# - --view: a bad camera refused before the solve, a good one draws;
 # - a floor modelled upside down under a lamp draws the facing-away warning
 #   and receives nothing; --two-sided solves its other side, which the lamp
 #   lights to the closed form I h / d^3;
@@ -59,3 +60,18 @@ float_eval(exact "3 / (1.25 ^ 1.5)")
 float_eval(lo "${exact} * 0.9999")
 float_eval(hi "${exact} * 1.0001")
 expect_within("two-sided floor under the lamp" "${lit}" "${lo}" "${hi}")
+
+# --- --view: a camera of the user's, checked before the solve.
+foreach (bad "1,2,3,4,5" "0,0,0,0,0,0" "0,0,0,1,0,0,1,0,0" "0,0,0,1,0,0,0,0,1,200" "0,0,x,1,0,0")
+  expect_exit(2 "${PROGRAM}" solve cornell --view "${bad}" --image "${WORK}/bad.png" --report "${WORK}/bad.json")
+  expect_one_error("error: bad input: --view '${bad}'")
+  if (EXISTS "${WORK}/bad.json")
+    message(FATAL_ERROR "--view '${bad}' was refused after the solve")
+  endif ()
+endforeach ()
+# Inside the Cornell box (0.556 m wide), from its open side towards the back wall.
+expect_exit(0 "${PROGRAM}" solve cornell --method progressive --max-iterations 100
+  --view "0.278,0.273,-0.5,0.278,0.273,0.5,0,1,0,40" --image "${WORK}/view.png" --size 64)
+if (NOT EXISTS "${WORK}/view.png")
+  message(FATAL_ERROR "--view: no picture")
+endif ()

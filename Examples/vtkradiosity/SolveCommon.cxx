@@ -264,6 +264,18 @@ void RenderOutputs(const SolveArguments& args, vtkPolyData* solved,
   }
   std::string error;
   const AbortIsARenderError guard;
+  cli::ViewCamera asked; // --view, before a file's own camera
+  if (!args.View.empty())
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      asked.Position[k] = args.View[k];
+      asked.FocalPoint[k] = args.View[3 + k];
+      asked.ViewUp[k] = args.View.size() >= 9 ? args.View[6 + k] : (k == 2 ? 1.0 : 0.0);
+    }
+    asked.ViewAngle = args.View.size() == 10 ? args.View[9] : 30.0;
+    camera = &asked;
+  }
   vtkNew<vtkRadiosityView> view;
   view->SetInputData(solved);
   view->SetShepardField(shepardField);

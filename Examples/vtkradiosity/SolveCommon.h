@@ -58,6 +58,11 @@ struct SolveArguments
   double MaxReflectance = 0.95; ///< .mtl Kd clamped to it (SPEC, Scenes), in (0, 1)
   bool TwoSided = false; ///< --two-sided: every surface solved on both sides
   std::string ReferenceOutput; ///< --reference-output: the computed reference at the probes (CSV)
+  /// --view px,py,pz,fx,fy,fz[,ux,uy,uz[,angle]]: the camera of --image and
+  /// --exr (position, focal point, view up, vertical angle in degrees),
+  /// before a file's own; read into View (empty: none).
+  std::string ViewText;
+  std::vector<double> View;
   double MaxMemory = 0.0; ///< GB; 0: 75% of physical memory
   std::string Output, Image, Exr, Probes, ProbeOutput, Report, HistoryCsv, HistoryPng;
   std::string Reference;

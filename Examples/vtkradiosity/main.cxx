@@ -49,6 +49,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 #include <new>
 #include <stdexcept>
 #include <sys/stat.h>
@@ -62,7 +63,7 @@ std::string StripPrefix(const std::string& text, const std::string& prefix)
   return text.compare(0, prefix.size(), prefix) == 0 ? text.substr(prefix.size()) : text;
 }
 
-int RunSolve(const SolveArguments& args)
+int RunSolve(SolveArguments args) // a copy: --view is read into args.View
 {
   RunPhases phases(Clock::now());
   if (args.Method != "auto" && args.Method != "progressive" && args.Method != "hierarchical" &&
@@ -98,6 +99,41 @@ int RunSolve(const SolveArguments& args)
   if (!args.ProbeOutput.empty() && args.Probes.empty())
   {
     throw BadInput("--probe-output needs --probes");
+  }
+  if (!args.ViewText.empty())
+  {
+    // px,py,pz,fx,fy,fz[,ux,uy,uz[,angle]]: finite, the focal point away
+    // from the position, an up not along the view, an angle in (0, 180).
+    std::stringstream text(args.ViewText);
+    std::string field;
+    while (std::getline(text, field, ','))
+    {
+      char* end = nullptr;
+      const double v = std::strtod(field.c_str(), &end);
+      if (field.empty() || end == field.c_str() || *end != '\0' || !std::isfinite(v))
+      {
+        throw BadInput("--view '" + args.ViewText + "': '" + field + "' is not a finite number");
+      }
+      args.View.push_back(v);
+    }
+    const std::size_t n = args.View.size();
+    if (n != 6 && n != 9 && n != 10)
+    {
+      throw BadInput("--view '" + args.ViewText + "': " + std::to_string(n) +
+        " numbers; expected px,py,pz,fx,fy,fz[,ux,uy,uz[,angle]]");
+    }
+    const Vec3 position(args.View[0], args.View[1], args.View[2]), focal(args.View[3], args.View[4], args.View[5]);
+    const Vec3 up = n >= 9 ? Vec3(args.View[6], args.View[7], args.View[8]) : Vec3(0.0, 0.0, 1.0);
+    const Vec3 look = focal - position;
+    if (!(glm::length(look) > 0.0) || !(glm::length(glm::cross(look, up)) > 1e-9 * glm::length(look) * glm::length(up)))
+    {
+      throw BadInput("--view '" + args.ViewText + "': the focal point must differ from the position and the view up "
+                     "must not lie along the view");
+    }
+    if (n == 10 && !(args.View[9] > 0.0 && args.View[9] < 180.0))
+    {
+      throw BadInput("--view '" + args.ViewText + "': the view angle must be in (0, 180) degrees");
+    }
   }
   std::string noWindow;
   if ((!args.Image.empty() || !args.Exr.empty() || !args.HistoryPng.empty()) &&
@@ -504,6 +540,9 @@ int main(int argc, char* argv[])
     ->check(CLI::Range(1e-4, 1.0));
   solveCommand->add_option("--reference", solve.Reference,
     "analytic (scenes with a closed form), pathtraced, or a CSV x,y,z,E_r,E_g,E_b at the probes");
+  solveCommand->add_option("--view", solve.ViewText,
+    "the camera of --image and --exr: px,py,pz,fx,fy,fz[,ux,uy,uz[,angle]] (position, focal point, view up "
+    "(default 0,0,1), vertical angle in degrees (default 30)); before a file's own");
   solveCommand->add_option("--reference-output", solve.ReferenceOutput,
     "write the analytic or path-traced reference at the probes (CSV x,y,z,E_r,E_g,E_b, path traced with its "
     "relative standard error SE, for --reference FILE)");
