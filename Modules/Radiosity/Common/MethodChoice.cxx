@@ -41,7 +41,7 @@ MethodChoice ChooseMethod(const Scene& scene)
     choice.Why = std::to_string(triangles) +
       " triangles lit by a sky and no emitting triangle: meshless radiosity gathers the sky where it shows; "
       "on the built-in office (738 triangles, CIE overcast sky through a window) it was within 0.19% RMS "
-      "and 0.40% worst of the peak of the path tracer in 3.3 s all in, hierarchical radiosity as close in "
+      "and 0.41% worst of the peak of the path tracer in 2.5 s all in, hierarchical radiosity as close in "
       "24 s (bench/results/real-interiors.md)";
   }
   else if (triangles <= AutoHierarchicalMaxTriangles)

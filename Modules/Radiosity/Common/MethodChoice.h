@@ -11,8 +11,8 @@
 //  2. Lit by a sky, no emitting triangle (a daylit interior): meshless
 //     radiosity. On the built-in office (daylight only, 20 working-plane
 //     sensors, bench/results/real-interiors.md) every method was within
-//     0.4% of the peak of the path tracer, meshless in 3.3 s all in,
-//     progressive 11 s, face clusters 14 s, hierarchical 24 s.
+//     0.41% of the peak of the path tracer, meshless in 2.5 s all in,
+//     progressive 9.4 s, face clusters 14 s, hierarchical 24 s.
 //  3. At most AutoHierarchicalMaxTriangles triangles: hierarchical radiosity
 //     with discontinuity meshing (Hanrahan et al. 1991, Hardt & Teller 1996),
 //     its links started from the face cluster roots at any size (Smits et
