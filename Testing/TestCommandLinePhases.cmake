@@ -16,10 +16,10 @@ set(UNACCOUNTED_BOUND 1e-3)
 # relative to total_s: measured at most 2.4e-3 (face cluster, a 0.19 s run).
 set(PIPELINE_BOUND 0.01)
 # Meshless with --output: output_evaluation_s / solve_s, measured 0.065
-# (0.158 s of a 2.45 s solve), 0.016 while the solve took 9.7 s: its
-# support searches got four times faster (one k-d tree per group and radius
-# class, MeshlessPoints.cxx), the evaluation's 0.16 s stayed (0.068 before
-# the output's tiled evaluation, ShepardField::EvaluateTile).
+# (0.158 s of a 2.45 s solve), 0.016 when the solve took 9.7 s (a loaded
+# machine): its support searches got faster (one k-d tree per group and
+# radius class, MeshlessPoints.cxx), the evaluation's 0.16 s stayed (0.068
+# before the output's tiled evaluation, ShepardField::EvaluateTile).
 set(MESHLESS_OUTPUT_BOUND 0.15)
 # Meshless with --report alone: nothing to evaluate, measured 3.6e-4 s
 # (0.31 s before) of a 9.7 s solve.
